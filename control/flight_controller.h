@@ -1,0 +1,43 @@
+#pragma once
+// What every flight controller sees and returns: the measured state and a flat-output reference
+// in, rotor thrusts out. Controllers know nothing of MuJoCo; sim/ calls them at their own rate.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
+
+namespace cosim {
+
+struct VehicleState {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();          // world, m
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // world, m/s
+  Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // body to world
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // body frame, rad/s
+};
+
+// The reference in the flat outputs (position and yaw) with derivatives for feed-forward.
+struct FlatReference {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();
+  Eigen::Vector3d jerk = Eigen::Vector3d::Zero();
+  double yaw = 0.0;  // rad
+  double yaw_rate = 0.0;
+};
+
+struct ControlOutput {
+  Eigen::Vector4d rotor_thrusts = Eigen::Vector4d::Zero();  // N, per rotor
+  double collective_thrust = 0.0;                           // N, requested
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();         // N m, requested, body frame
+  bool saturated = false;                                   // the mixer had to give something up
+};
+
+class FlightController {
+ public:
+  virtual ~FlightController() = default;
+  virtual std::string name() const = 0;
+  virtual void reset() = 0;
+  // dt: time since the previous call (the control period).
+  virtual ControlOutput update(const VehicleState& state, const FlatReference& ref, double dt) = 0;
+};
+
+}  // namespace cosim

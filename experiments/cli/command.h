@@ -1,0 +1,18 @@
+#pragma once
+// Each cosim subcommand lives in its own file (cmd_<name>.cpp) and registers itself on the
+// CLI11 app through one add*Command function declared here. A subcommand's callback stores its
+// exit status (CONTRACT.md: 0 ok, 1 task failed, 2 bad input, 3 internal error) in `status`.
+#include <CLI/CLI.hpp>
+
+namespace cosim::cli {
+
+struct CommandContext {
+  int status = 0;
+};
+
+void addRunCommand(CLI::App& app, CommandContext& ctx);
+void addPlanCommand(CLI::App& app, CommandContext& ctx);
+void addBenchCommand(CLI::App& app, CommandContext& ctx);
+void addRenderCommand(CLI::App& app, CommandContext& ctx);
+
+}  // namespace cosim::cli

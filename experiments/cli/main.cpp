@@ -1,0 +1,36 @@
+// cosim: plan, fly, evaluate and render. See README.md and CONTRACT.md for the commands.
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+#include "experiments/cli/command.h"
+#include "planning/input_error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "cosim: a physics-backed co-simulator for UAVs and ground robots.\n"
+      "Plans paths in 2D/3D obstacle worlds, turns them into trajectories, flies them in MuJoCo\n"
+      "under feedback control, evaluates tracking and clearance, and renders videos off-screen."};
+  app.set_version_flag("--version", std::string("cosim ") + COSIM_VERSION);
+  app.require_subcommand(1);
+  cosim::cli::CommandContext ctx;
+  cosim::cli::addRunCommand(app, ctx);
+  cosim::cli::addPlanCommand(app, ctx);
+  cosim::cli::addRenderCommand(app, ctx);
+  cosim::cli::addBenchCommand(app, ctx);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // --help and --version are "errors" with exit code 0 in CLI11.
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  } catch (const cosim::InputError& e) {
+    std::cerr << "cosim: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "cosim: internal error: " << e.what() << "\n";
+    return 3;
+  }
+  return ctx.status;
+}

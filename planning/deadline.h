@@ -1,0 +1,24 @@
+#pragma once
+// A wall-clock time limit that planners poll: every planner honours one, so nothing hangs.
+#include <chrono>
+
+namespace cosim {
+
+class Deadline {
+ public:
+  using Clock = std::chrono::steady_clock;
+  explicit Deadline(double seconds)
+      : start_(Clock::now()),
+        end_(start_ + std::chrono::duration_cast<Clock::duration>(
+                          std::chrono::duration<double>(seconds))) {}
+
+  bool expired() const { return Clock::now() >= end_; }
+  double elapsedMs() const {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start_).count();
+  }
+
+ private:
+  Clock::time_point start_, end_;
+};
+
+}  // namespace cosim

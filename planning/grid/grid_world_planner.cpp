@@ -1,0 +1,47 @@
+#include "planning/grid/grid_world_planner.h"
+
+#include "planning/deadline.h"
+#include "planning/input_error.h"
+
+namespace cosim {
+
+PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
+  const Deadline clock(problem.time_limit_s);
+  const OccupancyGrid grid = OccupancyGrid::fromWorld(*problem.world, resolution_,
+                                                      problem.inflation, problem.planar,
+                                                      problem.start.z());
+  GridQuery query;
+  query.grid = &grid;
+  query.start = grid.cellOf(problem.start);
+  query.goal = grid.cellOf(problem.goal);
+  query.time_limit_s = problem.time_limit_s;
+  query.seed = problem.seed;
+
+  PlanResult result;
+  result.counters["grid_cells"] = static_cast<double>(grid.cellCount());
+  if (grid.blocked(query.start) || grid.blocked(query.goal)) {
+    result.message = std::string(grid.blocked(query.start) ? "start" : "goal") +
+                     " cell is blocked at resolution " + std::to_string(resolution_) +
+                     " m with the vehicle's inflation";
+    result.time_ms = clock.elapsedMs();
+    return result;
+  }
+  GridPlanResult g = planner_->solveGrid(query);
+  for (const auto& [k, v] : g.counters) result.counters[k] = v;
+  result.success = g.success;
+  result.message = g.message;
+  if (g.success) {
+    // Exact endpoints replace the centres of their cells: both lie in free cells, and the segment
+    // from a point to its own cell's centre stays inside that cell.
+    result.path.waypoints.push_back(problem.start);
+    for (std::size_t i = 1; i + 1 < g.cells.size(); ++i)
+      result.path.waypoints.push_back(grid.cellCenter(g.cells[i]));
+    result.path.waypoints.push_back(problem.goal);
+    if (problem.planar)
+      for (auto& p : result.path.waypoints) p.z() = problem.start.z();
+  }
+  result.time_ms = clock.elapsedMs();
+  return result;
+}
+
+}  // namespace cosim

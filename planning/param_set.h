@@ -1,0 +1,49 @@
+#pragma once
+// Named planner (and controller) parameters, as OMPL declares them: a planner asks for each
+// parameter by name with its default and valid range; whatever the user set but no one asked for
+// is an error (a misspelt parameter must not be silently ignored).
+#include <map>
+#include <string>
+#include <vector>
+
+namespace cosim {
+
+class ParamSet {
+ public:
+  ParamSet() = default;
+  // file: where the values came from, for error messages (scenario path or "command line").
+  explicit ParamSet(std::string file) : file_(std::move(file)) {}
+
+  // Sets a raw value; place is e.g. "line 12, key planner.resolution".
+  void set(const std::string& name, const std::string& value, const std::string& place = "");
+  bool has(const std::string& name) const { return values_.count(name) != 0; }
+
+  double getDouble(const std::string& name, double fallback, double lo = -1e300, double hi = 1e300);
+  int getInt(const std::string& name, int fallback, int lo = -2147483647, int hi = 2147483647);
+  bool getBool(const std::string& name, bool fallback);
+  std::string getString(const std::string& name, const std::string& fallback,
+                        const std::vector<std::string>& allowed = {});
+
+  // Throws InputError naming the first parameter that was set but never asked for.
+  // `owner` names the consumer in the message, e.g. "planner 'astar'".
+  void requireAllUsed(const std::string& owner) const;
+
+  // Every parameter asked for, with the value in force (set or default), for plan.json.
+  const std::map<std::string, std::string>& effective() const { return effective_; }
+  const std::string& file() const { return file_; }
+
+ private:
+  struct Entry {
+    std::string value;
+    std::string place;
+  };
+  [[noreturn]] void fail(const std::string& name, const std::string& problem) const;
+  const Entry* find(const std::string& name);
+
+  std::string file_;
+  std::map<std::string, Entry> values_;
+  std::map<std::string, bool> used_;
+  std::map<std::string, std::string> effective_;
+};
+
+}  // namespace cosim

@@ -1,0 +1,70 @@
+#include "planning/planner_registry.h"
+
+#include "planning/grid/grid_world_planner.h"
+#include "planning/input_error.h"
+
+namespace cosim {
+
+// Each family's registration lives beside its planners: the family's header declares
+// `void register<Family>Planners(PlannerRegistry&)`; include it above and call it below.
+
+const PlannerRegistry& PlannerRegistry::instance() {
+  static const PlannerRegistry registry = [] {
+    PlannerRegistry r;
+    // register<Family>Planners(r) calls go here, one per family.
+    return r;
+  }();
+  return registry;
+}
+
+void PlannerRegistry::addGridPlanner(const std::string& name, const std::string& family,
+                                     const std::string& summary, GridPlannerFactory make_grid) {
+  PlannerEntry e;
+  e.name = name;
+  e.family = family;
+  e.summary = summary;
+  e.make_grid = make_grid;
+  e.make = [make_grid](ParamSet& params) -> std::unique_ptr<Planner> {
+    const double resolution = params.getDouble("resolution", 0.5, 0.01, 100.0);
+    return std::make_unique<GridWorldPlanner>(make_grid(params), resolution);
+  };
+  add(std::move(e));
+}
+
+const PlannerEntry* PlannerRegistry::find(const std::string& name) const {
+  for (const auto& e : entries_)
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+namespace {
+const PlannerEntry& findOrThrow(const std::string& name, const ParamSet& params,
+                                const std::string& place, bool grid_only) {
+  const PlannerEntry* entry = PlannerRegistry::instance().find(name);
+  if (!entry || (grid_only && !entry->make_grid)) {
+    std::string known;
+    for (const auto& e : PlannerRegistry::instance().entries())
+      if (!grid_only || e.make_grid) known += (known.empty() ? "" : ", ") + e.name;
+    throw InputError(params.file(), place,
+                     "unknown " + std::string(grid_only ? "grid " : "") + "planner '" + name +
+                         "' (known: " + (known.empty() ? "none" : known) + ")");
+  }
+  return *entry;
+}
+}  // namespace
+
+std::unique_ptr<GridPlanner> makeGridPlanner(const std::string& name, ParamSet& params,
+                                             const std::string& place) {
+  auto planner = findOrThrow(name, params, place, true).make_grid(params);
+  params.requireAllUsed("planner '" + name + "'");
+  return planner;
+}
+
+std::unique_ptr<Planner> makePlanner(const std::string& name, ParamSet& params,
+                                     const std::string& place) {
+  auto planner = findOrThrow(name, params, place, false).make(params);
+  params.requireAllUsed("planner '" + name + "'");
+  return planner;
+}
+
+}  // namespace cosim
