@@ -14,5 +14,8 @@ void addRunCommand(CLI::App& app, CommandContext& ctx);
 void addPlanCommand(CLI::App& app, CommandContext& ctx);
 void addBenchCommand(CLI::App& app, CommandContext& ctx);
 void addRenderCommand(CLI::App& app, CommandContext& ctx);
+void addReproduceCommand(CLI::App& app, CommandContext& ctx);
+void addGridBenchCommand(CLI::App& app, CommandContext& ctx);
+void addMapfCommand(CLI::App& app, CommandContext& ctx);
 
 }  // namespace cosim::cli

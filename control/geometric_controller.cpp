@@ -1,0 +1,83 @@
+#include "control/geometric_controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cosim {
+namespace {
+
+// The vee map: the vector of a skew-symmetric matrix.
+Eigen::Vector3d vee(const Eigen::Matrix3d& S) {
+  return {S(2, 1), S(0, 2), S(1, 0)};
+}
+
+}  // namespace
+
+GeometricController::GeometricController(const QuadrotorParams& params, const GeometricGains& gains)
+    : params_(params), gains_(gains), mixer_(params) {}
+
+void GeometricController::reset() {
+  integral_.setZero();
+  saturated_ = false;
+  R_d_.setIdentity();
+  omega_d_.setZero();
+}
+
+ControlOutput GeometricController::update(const VehicleState& s, const FlatReference& ref,
+                                          double dt) {
+  const Eigen::Vector3d e3 = Eigen::Vector3d::UnitZ();
+  const double g = params_.gravity;
+  const Eigen::Vector3d J = params_.inertia;
+
+  // Translational errors (Lee et al. eq. 6) and the integral, which runs only near a steady
+  // state and while the mixer delivers what is asked (conditional integration against windup).
+  const Eigen::Vector3d e_x = s.position - ref.position;
+  const Eigen::Vector3d e_v = s.velocity - ref.velocity;
+  if (!saturated_ && gains_.k_i > 0.0 && e_v.norm() < gains_.i_velocity_zone) {
+    integral_ += e_x * dt;
+    const double bound = gains_.i_limit / gains_.k_i;
+    integral_ = integral_.cwiseMax(-bound).cwiseMin(bound);
+  }
+
+  // Desired thrust per unit mass, eq. 15 with z up: A = -k_x e_x - k_v e_v - k_i int e_x + g e3
+  // + a_d. Its tilt is limited by shrinking the horizontal part (height is kept first).
+  Eigen::Vector3d A = -gains_.k_x.cwiseProduct(e_x) - gains_.k_v.cwiseProduct(e_v) -
+                      gains_.k_i * integral_ + g * e3 + ref.acceleration;
+  A.z() = std::max(A.z(), 0.1 * g);
+  const double max_h = A.z() * std::tan(gains_.max_tilt_deg * M_PI / 180.0);
+  const double h = A.head<2>().norm();
+  if (h > max_h) A.head<2>() *= max_h / h;
+
+  // Desired attitude: b3 along A, b1 as close to the reference heading as b3 allows.
+  const Eigen::Vector3d b3d = A.normalized();
+  const Eigen::Vector3d b1c(std::cos(ref.yaw), std::sin(ref.yaw), 0.0);
+  const Eigen::Vector3d b2d = b3d.cross(b1c).normalized();
+  const Eigen::Vector3d b1d = b2d.cross(b3d);
+  R_d_ << b1d, b2d, b3d;
+
+  // Desired body rates from the jerk (Mellinger and Kumar eq. 7): the change of the thrust
+  // direction is the jerk's part normal to b3, divided by the thrust per unit mass.
+  const Eigen::Vector3d h_w = (ref.jerk - b3d.dot(ref.jerk) * b3d) / A.norm();
+  omega_d_ = {-h_w.dot(b2d), h_w.dot(b1d), ref.yaw_rate * b3d.z()};
+
+  // Attitude errors on SO(3) (eqs. 10-11) and the moment (eq. 16); the desired angular
+  // acceleration is taken as zero (it would need the reference snap).
+  const Eigen::Matrix3d R = s.attitude.toRotationMatrix();
+  const Eigen::Vector3d e_R = 0.5 * vee(R_d_.transpose() * R - R.transpose() * R_d_);
+  const Eigen::Vector3d omega_d_body = R.transpose() * R_d_ * omega_d_;
+  const Eigen::Vector3d& w = s.angular_velocity;
+  const Eigen::Vector3d e_w = w - omega_d_body;
+  const Eigen::Vector3d alpha =
+      -gains_.k_R.cwiseProduct(e_R) - gains_.k_omega.cwiseProduct(e_w) - w.cross(omega_d_body);
+  const Eigen::Vector3d torque = J.cwiseProduct(alpha) + w.cross(J.cwiseProduct(w));
+
+  // Collective thrust: the desired force's component along the current body z axis.
+  ControlOutput out;
+  out.collective_thrust = std::max(0.0, params_.mass * A.dot(R.col(2)));
+  out.torque = torque;
+  out.rotor_thrusts = mixer_.allocateLimited(out.collective_thrust, torque, &out.saturated);
+  saturated_ = out.saturated;
+  return out;
+}
+
+}  // namespace cosim

@@ -1,0 +1,261 @@
+#include "experiments/cli/run_pipeline.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+#include "control/waypoint_reference.h"
+#include "experiments/cli/output_files.h"
+#include "experiments/cli/scenario_planning.h"
+#include "planning/input_error.h"
+#include "planning/trajectory/minimum_snap_trajectory.h"
+#include "render/run_renderer.h"
+#include "render/video_encoder.h"
+#include "sim/controller_factory.h"
+#include "sim/flight_simulation.h"
+#include "sim/json_writer.h"
+#include "sim/run_log_io.h"
+#include "sim/trajectory_reference.h"
+#include "sim/world_model.h"
+
+namespace cosim {
+
+namespace {
+
+// A minimum-snap trajectory through the planned path, within the airframe's limits: speed and
+// acceleration from the scenario's trajectory section, thrust from the model (keeping 20 % of
+// the rotors' thrust for control). The trajectory must stay `inflation` clear of obstacles; the
+// planner kept radius + margin clear, so the curve has the margin to swing in.
+MinimumSnapResult fitMinimumSnap(const Scenario& s, const VehicleSpec& spec,
+                                 const QuadrotorParams& q, const Path& path, ParamSet& p) {
+  MinimumSnapOptions o;
+  o.limits.max_speed = p.getDouble("max_speed", 3.0, 0.01, 100.0);
+  o.limits.max_acceleration = p.getDouble("max_acceleration", 3.0, 0.01, 100.0);
+  o.limits.gravity = q.gravity;
+  if (!spec.ground) o.limits.max_thrust_accel = 0.8 * 4.0 * q.max_thrust / q.mass;
+  o.time_penalty = p.getDouble("k_t", o.time_penalty, 0.0, 1e9);
+  o.optimize_times = p.getBool("optimize_times", o.optimize_times);
+  o.shortcut = p.getBool("shortcut", o.shortcut);
+  o.max_repair_rounds = p.getInt("max_repair_rounds", o.max_repair_rounds, 0, 100);
+  p.requireAllUsed("trajectory mode 'minimum_snap'");
+  o.validate();
+  return MinimumSnapTrajectory(o).fit(path, s.world, q.radius);
+}
+
+JsonObject metricsJson(const FlightMetrics& m) {
+  JsonObject j;
+  j.add("reached_goal", m.reached_goal)
+      .add("collisions", m.collisions)
+      .add("planned_length_m", m.planned_length_m)
+      .add("flown_length_m", m.flown_length_m)
+      .add("flight_time_s", m.flight_time_s)
+      .add("rmse_m", m.rmse_m)
+      .add("max_error_m", m.max_error_m)
+      .add("error_reference", m.error_reference)
+      .add("min_clearance_m", m.min_clearance_m)
+      .add("peak_thrust_fraction", m.peak_thrust_fraction)
+      .add("saturated_fraction", m.saturated_fraction)
+      .add("energy_proxy", m.energy_proxy)
+      .add("max_speed_mps", m.max_speed_mps);
+  return j;
+}
+
+void progressLine(bool enabled, const std::string& text) {
+  if (enabled) std::cerr << "cosim: " << text << std::endl;
+}
+
+// Renders the video frame by frame at the scenario's frame rate: a 20 s flight is a 20 s video.
+void renderVideo(RunRenderer& renderer, const Scenario& s, const std::filesystem::path& file,
+                 bool progress) {
+  const double duration = renderer.endTime();
+  const int frames = std::max(1, static_cast<int>(std::floor(duration * s.render.fps)) + 1);
+  VideoEncoder video(file, s.render.width, s.render.height, s.render.fps);
+  std::vector<std::uint8_t> rgb;
+  const bool tty = progress && isatty(STDERR_FILENO);
+  for (int k = 0; k < frames; ++k) {
+    renderer.render(k / static_cast<double>(s.render.fps), s.render.camera, rgb);
+    video.addFrame(rgb);
+    if (tty && (k % 10 == 0 || k + 1 == frames)) {
+      const int width = 40, done = width * (k + 1) / frames;
+      std::fprintf(stderr, "\rcosim: rendering [%s%s] %d/%d frames", std::string(done, '#').c_str(),
+                   std::string(width - done, '.').c_str(), k + 1, frames);
+      if (k + 1 == frames) std::fprintf(stderr, "\n");
+    }
+  }
+  video.finish();
+}
+
+}  // namespace
+
+RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
+  RunSummary summary;
+  const WorldModel world = WorldModel::build(scenario);
+  const auto& dir = request.out_dir;
+
+  // 1. Plan a path for every vehicle.
+  std::vector<VehiclePlan> plans;
+  for (std::size_t v = 0; v < scenario.vehicles.size(); ++v) {
+    progressLine(request.progress, "planning " + scenario.vehicles[v].name + " with " +
+                                       (scenario.planner_name.empty() ? std::string("given waypoints") : scenario.planner_name));
+    plans.push_back(planVehicle(scenario, scenario.vehicles[v], world.vehicles()[v].params.radius,
+                                scenario.planner_params));
+  }
+
+  // 2. Reference and controller per vehicle.
+  std::vector<std::unique_ptr<ReferenceSource>> references;
+  std::vector<std::unique_ptr<FlightController>> controllers;
+  std::vector<VehiclePilot> pilots;
+  std::string trajectory_failure;
+  bool all_planned = std::all_of(plans.begin(), plans.end(), [](const VehiclePlan& p) { return p.success; });
+  if (all_planned) {
+    for (std::size_t v = 0; v < scenario.vehicles.size(); ++v) {
+      const VehicleSpec& spec = scenario.vehicles[v];
+      ParamSet traj = scenario.trajectory_params;
+      if (scenario.trajectory_mode == "waypoints") {
+        const double radius = traj.getDouble("switch_radius", 0.2, 0.01, 100.0);
+        traj.requireAllUsed("trajectory mode 'waypoints'");
+        references.push_back(std::make_unique<WaypointReference>(
+            plans[v].path.waypoints, spec.yaw_deg * M_PI / 180.0, radius));
+      } else {
+        MinimumSnapResult fit = fitMinimumSnap(scenario, spec, world.vehicles()[v].params, plans[v].path, traj);
+        if (!fit.success) {
+          trajectory_failure = "no feasible trajectory: " + fit.message;
+          break;
+        }
+        plans[v].trajectory_counters = fit.counters;
+        references.push_back(std::make_unique<TrajectoryReference>(std::move(fit.trajectory),
+                                                                   spec.yaw_deg * M_PI / 180.0));
+      }
+      ParamSet gains = scenario.controller_gains;
+      controllers.push_back(makeFlightController(scenario.controller_name, gains, world.vehicles()[v].params));
+      VehiclePilot pilot;
+      pilot.controller = controllers.back().get();
+      pilot.reference = references.back().get();
+      pilot.goal = spec.goal();
+      pilot.planned_path = plans[v].path.waypoints;
+      pilots.push_back(pilot);
+    }
+  }
+
+  if (!trajectory_failure.empty()) all_planned = false;
+
+  // 3. Fly.
+  RunLog log;
+  if (all_planned) {
+    progressLine(request.progress, "flying (physics step " + std::to_string(scenario.sim.timestep) + " s)");
+    FlightOptions options;
+    options.settings = scenario.sim;
+    options.interrupt = request.interrupt;
+    log = simulateFlight(world, scenario, pilots, options);
+  } else {
+    for (std::size_t v = 0; v < scenario.vehicles.size(); ++v) {
+      VehicleLog& vl = log.vehicles.emplace_back();
+      vl.name = scenario.vehicles[v].name;
+      vl.goal = scenario.vehicles[v].goal();
+    }
+    log.end_reason = "no_path";
+  }
+  if (log.end_reason == "interrupted") {
+    summary.status = 1;
+    summary.message = "interrupted";
+    return summary;  // nothing written that would look like a finished run
+  }
+
+  // 4. Evaluate, from the log.
+  summary.sim_speed_x = log.wall_time > 0 ? log.sim_time / log.wall_time : 0.0;
+  bool ok = all_planned && log.end_reason == "goal";
+  for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
+    FlightMetrics m = computeFlightMetrics(log.vehicles[v], scenario.world, scenario.trajectory_mode != "waypoints");
+    ok = ok && m.reached_goal && m.collisions == 0;
+    summary.metrics.push_back(m);
+  }
+  if (!all_planned) {
+    for (const auto& p : plans)
+      if (!p.success) summary.message = "no path found: " + p.message;
+    if (!trajectory_failure.empty()) summary.message = trajectory_failure;
+  }
+  if (all_planned && !ok)
+    summary.message = log.end_reason == "diverged" ? "the simulation diverged (NaN or runaway state)"
+                      : log.end_reason != "goal"   ? "goal not reached within sim.max_time"
+                                                   : "collision";
+  summary.status = ok ? 0 : 1;
+
+  // 5. Write the run's files (each atomically).
+  JsonObject metrics;
+  const FlightMetrics& m0 = summary.metrics.front();
+  int collisions = 0;
+  bool reached = true;
+  for (const auto& m : summary.metrics) {
+    collisions += m.collisions;
+    reached = reached && m.reached_goal;
+  }
+  double planning_ms = 0.0;
+  for (const auto& p : plans) planning_ms += p.time_ms;
+  metrics.add("reached_goal", reached)
+      .add("collisions", collisions)
+      .add("planner", scenario.planner_name.empty() ? std::string("waypoints") : scenario.planner_name)
+      .add("planning_time_ms", planning_ms)
+      .add("planned_length_m", m0.planned_length_m)
+      .add("flown_length_m", m0.flown_length_m)
+      .add("flight_time_s", m0.flight_time_s)
+      .add("rmse_m", m0.rmse_m)
+      .add("max_error_m", m0.max_error_m)
+      .add("min_clearance_m", m0.min_clearance_m)
+      .add("sim_speed_x", summary.sim_speed_x)
+      .add("error_reference", m0.error_reference)
+      .add("peak_thrust_fraction", m0.peak_thrust_fraction)
+      .add("saturated_fraction", m0.saturated_fraction)
+      .add("energy_proxy", m0.energy_proxy)
+      .add("max_speed_mps", m0.max_speed_mps)
+      .add("controller", scenario.controller_name)
+      .add("trajectory_mode", scenario.trajectory_mode)
+      .add("vehicle_radius_m", world.vehicles().front().params.radius)
+      .add("inflation_m", plans.front().inflation)
+      .add("seed", static_cast<long>(scenario.sim.seed))
+      .add("sim_time_s", log.sim_time)
+      .add("wall_time_s", log.wall_time)
+      .add("end_reason", log.end_reason)
+      .add("mujoco_warnings", log.mujoco_warnings)
+      .add("status", summary.status)
+      .add("message", summary.message)
+      .add("planner_counters", plans.front().counters)
+      .add("planner_params", plans.front().params)
+      .add("trajectory_counters", plans.front().trajectory_counters);
+  std::vector<JsonObject> per_vehicle;
+  for (std::size_t v = 0; v < summary.metrics.size(); ++v) {
+    JsonObject j = metricsJson(summary.metrics[v]);
+    j.add("name", log.vehicles[v].name).add("model", scenario.vehicles[v].model);
+    per_vehicle.push_back(j);
+  }
+  metrics.addArray("vehicles", per_vehicle);
+
+  writeFileAtomically(dir / "scenario.yaml", scenario.effective_yaml);
+  writeFileAtomically(dir / "run.json", JsonObject()
+                                            .add("scenario_file", std::filesystem::absolute(scenario.file).string())
+                                            .str() + "\n");
+  writeFileAtomically(dir / "path.csv", pathCsv(log));
+  writeFileAtomically(dir / "timeseries.csv", timeseriesCsv(log));
+
+  // 6. Render from the log.
+  if (all_planned && (request.images || request.video)) {
+    RunRenderer renderer(world, scenario, log, scenario.render.width, scenario.render.height);
+    std::vector<std::uint8_t> rgb;
+    if (request.images) {
+      progressLine(request.progress, "rendering final.png");
+      renderer.render(renderer.endTime(), "overview", rgb);
+      writePng(dir / "final.png", rgb, renderer.width(), renderer.height());
+    }
+    if (request.video) {
+      progressLine(request.progress, "rendering video.mp4");
+      renderVideo(renderer, scenario, dir / "video.mp4", request.progress);
+    }
+  }
+  // metrics.json last: its presence means the run's files are complete.
+  writeFileAtomically(dir / "metrics.json", metrics.str() + "\n");
+  return summary;
+}
+
+}  // namespace cosim

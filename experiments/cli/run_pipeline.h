@@ -1,0 +1,32 @@
+#pragma once
+// `cosim run` as a function: plan -> reference -> fly in MuJoCo -> evaluate -> write the run's
+// files -> render. Used by the run command and by sweeps.
+#include <atomic>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "sim/flight_metrics.h"
+#include "sim/scenario.h"
+
+namespace cosim {
+
+struct RunRequest {
+  std::filesystem::path out_dir;  // created beforehand
+  bool video = true;
+  bool images = true;             // final.png
+  bool progress = false;          // progress lines on stderr
+  const std::atomic<bool>* interrupt = nullptr;
+};
+
+struct RunSummary {
+  int status = 0;                 // CONTRACT.md exit status: 0 ok, 1 task failed
+  std::string message;            // why the task failed
+  std::vector<FlightMetrics> metrics;
+  double sim_speed_x = 0.0;
+};
+
+// Throws InputError for bad input discovered late (unknown planner, bad gains).
+RunSummary executeRun(Scenario& scenario, const RunRequest& request);
+
+}  // namespace cosim

@@ -1,0 +1,28 @@
+#pragma once
+// Turns a scenario's vehicle into a path: through the planner the scenario names (segment by
+// segment: start -> waypoint 1 -> ... -> goal), or the given waypoints when there is none.
+#include <map>
+#include <string>
+
+#include "planning/path.h"
+#include "sim/scenario.h"
+
+namespace cosim {
+
+struct VehiclePlan {
+  bool success = false;
+  Path path;
+  double time_ms = 0.0;
+  std::map<std::string, double> counters;  // summed over segments
+  std::map<std::string, std::string> params;  // the planner's parameters in force
+  std::string message;
+  double inflation = 0.0;  // vehicle radius + margin the planner kept clear
+  std::map<std::string, double> trajectory_counters;  // from the minimum-snap fit, if any
+};
+
+// planner_params is consumed (parameters are marked used); `vehicle_radius` comes from the model.
+// Throws InputError for an unknown planner or bad parameters.
+VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle,
+                        double vehicle_radius, ParamSet planner_params);
+
+}  // namespace cosim

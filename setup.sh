@@ -1,0 +1,42 @@
+#!/bin/bash
+# Installs what cosim needs from Debian 12's packages (only what is missing) and builds it in
+# build/. Usage: ./setup.sh [run|test|build]  (default: build)
+#   ./setup.sh run   also runs the bundled default scenario (writes out/default/)
+#   ./setup.sh test  also runs the whole test suite (CTest)
+set -euo pipefail
+cd "$(dirname "$0")"
+
+PACKAGES=(
+  build-essential cmake pkg-config ccache
+  libmujoco-dev libqhull-dev          # physics (libqhull-dev: mujoco's CMake config needs its headers)
+  libeigen3-dev liburdfdom-dev libtinyxml2-dev
+  libosmesa6-dev                      # off-screen OpenGL, no display or GPU needed
+  libnlopt-cxx-dev libyaml-cpp-dev libcli11-dev
+  ffmpeg                              # H.264 video and PNG output
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libompl-dev libboost-graph-dev libnanoflann-dev   # peers for the benchmarks, k-d tree
+  gnuplot-nox                         # figures
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  SUDO=""
+  if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+  echo "setup: installing ${missing[*]}"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
+
+JOBS=$(nproc 2>/dev/null || echo 2)
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j"$JOBS"
+
+case "${1:-build}" in
+  run)  build/cosim run --out out/default ;;
+  test) ctest --test-dir build --output-on-failure -j"$JOBS" ;;
+  build) ;;
+  *) echo "usage: $0 [run|test|build]" >&2; exit 2 ;;
+esac

@@ -1,0 +1,62 @@
+#include "sim/flight_metrics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cosim {
+
+double distanceToPolyline(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& line) {
+  if (line.empty()) return std::numeric_limits<double>::infinity();
+  double best = (p - line[0]).norm();
+  for (std::size_t i = 1; i < line.size(); ++i) {
+    const Eigen::Vector3d a = line[i - 1], ab = line[i] - a;
+    const double len2 = ab.squaredNorm();
+    const double s = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (p - (a + s * ab)).norm());
+  }
+  return best;
+}
+
+FlightMetrics computeFlightMetrics(const VehicleLog& log, const World& world,
+                                   bool error_against_trajectory) {
+  FlightMetrics m;
+  m.reached_goal = log.reached_goal;
+  m.collisions = static_cast<int>(log.collisions.size());
+  for (std::size_t i = 1; i < log.planned_path.size(); ++i)
+    m.planned_length_m += (log.planned_path[i] - log.planned_path[i - 1]).norm();
+  m.error_reference = error_against_trajectory ? "trajectory" : "path";
+  if (log.samples.empty()) return m;
+
+  const double t_end = log.reached_goal ? log.arrival_time : log.samples.back().t;
+  m.flight_time_s = t_end - log.samples.front().t;
+  double sum_sq = 0.0;
+  std::size_t n = 0, saturated = 0;
+  m.min_clearance_m = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < log.samples.size(); ++i) {
+    const LogSample& s = log.samples[i];
+    if (i > 0) {
+      const LogSample& prev = log.samples[i - 1];
+      const double dt = s.t - prev.t;
+      m.flown_length_m += (s.pos - prev.pos).norm();
+      m.energy_proxy += dt * prev.rotor_thrust.cwiseMax(0.0).array().pow(1.5).sum();
+    }
+    m.max_speed_mps = std::max(m.max_speed_mps, s.vel.norm());
+    if (log.max_thrust > 0)
+      m.peak_thrust_fraction = std::max(m.peak_thrust_fraction, s.rotor_thrust.maxCoeff() / log.max_thrust);
+    saturated += s.saturated ? 1 : 0;
+    // Clearance over the whole run (hovering at the goal can be close to something too).
+    m.min_clearance_m = std::min(m.min_clearance_m, world.distanceToObstacles(s.pos) - log.radius);
+    if (s.t > t_end) continue;  // tracking error only up to arrival
+    const double e = error_against_trajectory ? (s.pos - s.ref_pos).norm()
+                                              : distanceToPolyline(s.pos, log.planned_path);
+    sum_sq += e * e;
+    m.max_error_m = std::max(m.max_error_m, e);
+    ++n;
+  }
+  m.rmse_m = n ? std::sqrt(sum_sq / static_cast<double>(n)) : 0.0;
+  m.saturated_fraction = static_cast<double>(saturated) / static_cast<double>(log.samples.size());
+  return m;
+}
+
+}  // namespace cosim

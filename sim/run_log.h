@@ -1,0 +1,52 @@
+#pragma once
+// What a simulation run records, sample by sample at the control rate. Metrics and rendering
+// are both computed from this log, never from the live simulation, so a run can be re-rendered
+// or re-evaluated without simulating it again.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+namespace cosim {
+
+struct LogSample {
+  double t = 0.0;
+  Eigen::Vector3d ref_pos = Eigen::Vector3d::Zero();
+  Eigen::Vector3d ref_vel = Eigen::Vector3d::Zero();
+  Eigen::Vector3d pos = Eigen::Vector3d::Zero();
+  Eigen::Vector3d vel = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond att = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d omega = Eigen::Vector3d::Zero();         // body rates, rad/s
+  Eigen::Vector4d rotor_cmd = Eigen::Vector4d::Zero();     // commanded thrusts, N
+  Eigen::Vector4d rotor_thrust = Eigen::Vector4d::Zero();  // actual (after the motor lag), N
+  bool saturated = false;
+};
+
+struct ContactEvent {
+  double t = 0.0;
+  std::string other;  // name of the geom hit
+  Eigen::Vector3d pos = Eigen::Vector3d::Zero();
+};
+
+struct VehicleLog {
+  std::string name;
+  double radius = 0.0;     // bounding radius used for clearance
+  double max_thrust = 0.0; // per rotor, N
+  std::vector<Eigen::Vector3d> planned_path;  // what the planner produced
+  Eigen::Vector3d goal = Eigen::Vector3d::Zero();
+  std::vector<LogSample> samples;
+  std::vector<ContactEvent> collisions;  // onsets of contact with anything but the landing spot
+  bool reached_goal = false;
+  double arrival_time = -1.0;  // s, when the goal was reached
+};
+
+struct RunLog {
+  std::vector<VehicleLog> vehicles;
+  double sim_time = 0.0;    // simulated seconds
+  double wall_time = 0.0;   // wall-clock seconds of the simulation loop
+  long physics_steps = 0;
+  std::string end_reason;   // "goal", "max_time", "interrupted", "diverged"
+  int mujoco_warnings = 0;
+};
+
+}  // namespace cosim

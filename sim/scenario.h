@@ -1,0 +1,72 @@
+#pragma once
+// A validated scenario: what a scenario YAML file says, checked. Everything downstream (the
+// MuJoCo model, the planners' worlds, the controller, rendering) is built from this value.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "planning/param_set.h"
+#include "planning/world/world.h"
+
+namespace cosim {
+
+struct VehicleSpec {
+  std::string name;        // unique; prefixes every MuJoCo name of the vehicle ("uav1/base")
+  std::string model;       // a model name from models/ (cf2, quad_1500g, ...) or a URDF path
+  std::filesystem::path model_file;  // resolved
+  bool ground = false;     // a ground robot (URDF): plans in the plane, z = 0
+  Eigen::Vector3d start = Eigen::Vector3d::Zero();
+  // Points to visit after the start; the last one is the goal.
+  std::vector<Eigen::Vector3d> waypoints;
+  double yaw_deg = 0.0;    // initial and reference heading
+  const Eigen::Vector3d& goal() const { return waypoints.back(); }
+};
+
+struct SimSettings {
+  double timestep = 0.001;     // s, physics step
+  double control_rate = 500;   // Hz, controller rate; the physics rate must be a multiple
+  double max_time = 120.0;     // s of simulated time before giving up
+  std::uint64_t seed = 1;
+  double goal_tolerance = 0.2;  // m: the goal is reached within this distance (seed 003: 0.2 m)
+};
+
+struct RenderSettings {
+  std::string camera = "chase";
+  int width = 1280, height = 720, fps = 30;
+};
+
+struct Scenario {
+  std::string file;                 // as given, for messages
+  std::string effective_yaml;       // the document after --set overrides (saved with each run)
+  World world;
+  std::filesystem::path include_file;  // optional MJCF fragment with more geometry
+  std::vector<VehicleSpec> vehicles;
+
+  // Planner: empty name = fly the vehicle's waypoints as given.
+  std::string planner_name;
+  ParamSet planner_params;          // everything under planner: except name and margin
+  double planner_margin = 0.3;      // m, safety margin added to the vehicle radius
+
+  std::string trajectory_mode = "waypoints";  // waypoints | minimum_snap
+  ParamSet trajectory_params;       // max_speed, switch_radius, ...
+
+  std::string controller_name = "cascade";    // cascade | geometric
+  ParamSet controller_gains;
+
+  SimSettings sim;
+  RenderSettings render;
+};
+
+// Reads and validates a scenario file. `overrides` are "key=value" strings (from --set) applied
+// before validation. Throws InputError (file, line/key, problem) on any defect.
+Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
+// Same, from text (for tests and fuzzing); `file` is used in messages and to resolve relative
+// paths.
+Scenario parseScenario(const std::string& text, const std::string& file,
+                       const std::vector<std::string>& overrides = {});
+
+// Where the bundled models live (COSIM_MODELS_DIR env var, else the source tree's models/).
+std::filesystem::path modelsDirectory();
+
+}  // namespace cosim

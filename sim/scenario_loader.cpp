@@ -1,0 +1,268 @@
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "planning/input_error.h"
+#include "sim/scenario.h"
+#include "sim/yaml_reader.h"
+
+namespace cosim {
+
+namespace {
+
+constexpr double kMaxWorldExtent = 10000.0;  // m; larger worlds are surely a units mistake
+constexpr std::size_t kMaxObstacles = 100000;
+constexpr std::size_t kMaxWaypoints = 100000;
+
+void readObstacle(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                  Obstacle& o) {
+  r.requireMap(n, key);
+  if (!n["type"]) r.fail(n, key, "obstacle needs a 'type' (box, cylinder or sphere)");
+  const std::string type = r.text(n["type"], key + ".type");
+  if (type == "box") {
+    r.checkKeys(n, key, {"type", "pos", "size", "yaw"});
+    o.type = ObstacleType::Box;
+    if (!n["size"]) r.fail(n, key, "box needs 'size: [x, y, z]' (full edge lengths)");
+    o.size = r.vec3(n["size"], key + ".size");
+    if ((o.size.array() <= 0).any()) r.fail(n["size"], key + ".size", "sizes must be positive");
+  } else if (type == "cylinder") {
+    r.checkKeys(n, key, {"type", "pos", "radius", "height", "yaw"});
+    o.type = ObstacleType::Cylinder;
+    if (!n["radius"] || !n["height"]) r.fail(n, key, "cylinder needs 'radius' and 'height'");
+    o.radius = r.number(n["radius"], key + ".radius", 1e-6, kMaxWorldExtent);
+    o.height = r.number(n["height"], key + ".height", 1e-6, kMaxWorldExtent);
+  } else if (type == "sphere") {
+    r.checkKeys(n, key, {"type", "pos", "radius"});
+    o.type = ObstacleType::Sphere;
+    if (!n["radius"]) r.fail(n, key, "sphere needs 'radius'");
+    o.radius = r.number(n["radius"], key + ".radius", 1e-6, kMaxWorldExtent);
+  } else {
+    r.fail(n["type"], key + ".type", "unknown obstacle type '" + type + "' (box, cylinder, sphere)");
+  }
+  if (!n["pos"]) r.fail(n, key, "obstacle needs 'pos: [x, y, z]' (its centre)");
+  o.pos = r.vec3(n["pos"], key + ".pos");
+  if (n["yaw"]) o.yaw_deg = r.number(n["yaw"], key + ".yaw", -3600, 3600);
+}
+
+// Fills a ParamSet with the scalar entries of a mapping, skipping `skip` keys.
+void readParams(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                const std::vector<std::string>& skip, ParamSet& out) {
+  r.requireMap(n, key);
+  for (const auto& kv : n) {
+    const std::string name = kv.first.Scalar();
+    bool skipped = false;
+    for (const auto& s : skip) skipped = skipped || s == name;
+    if (skipped) continue;
+    out.set(name, r.scalar(kv.second, key + "." + name), r.place(kv.second, key + "." + name));
+  }
+}
+
+void checkPointPlacement(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                         const Scenario& s, const Eigen::Vector3d& p) {
+  if (!s.world.insideBounds(p))
+    r.fail(n, key, "point is outside the world bounds");
+  for (std::size_t i = 0; i < s.world.obstacles.size(); ++i)
+    if (s.world.obstacles[i].signedDistance(p) <= 0.0)
+      r.fail(n, key, "point is inside obstacle " + std::to_string(i + 1) + " (world.obstacles[" +
+                         std::to_string(i) + "])");
+}
+
+void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                 const std::filesystem::path& scenario_dir, Scenario& s) {
+  r.checkKeys(n, key, {"name", "model", "start", "goal", "waypoints", "yaw"});
+  VehicleSpec v;
+  v.name = n["name"] ? r.text(n["name"], key + ".name") : "uav" + std::to_string(s.vehicles.size() + 1);
+  if (v.name.find_first_of("/ \t") != std::string::npos)
+    r.fail(n["name"], key + ".name", "vehicle names may not contain '/' or spaces");
+  for (const auto& other : s.vehicles)
+    if (other.name == v.name) r.fail(n["name"], key + ".name", "duplicate vehicle name '" + v.name + "'");
+  if (!n["model"]) r.fail(n, key, "vehicle needs a 'model' (cf2, quad_1500g, or a URDF path)");
+  v.model = r.text(n["model"], key + ".model");
+  const bool is_urdf = v.model.size() > 5 && v.model.substr(v.model.size() - 5) == ".urdf";
+  if (is_urdf) {
+    v.model_file = std::filesystem::path(v.model).is_absolute() ? std::filesystem::path(v.model)
+                                                                : scenario_dir / v.model;
+    v.ground = true;
+  } else {
+    v.model_file = modelsDirectory() / (v.model + ".xml");
+    if (!std::filesystem::exists(v.model_file)) {
+      const auto urdf = modelsDirectory() / (v.model + ".urdf");
+      if (std::filesystem::exists(urdf)) {
+        v.model_file = urdf;
+        v.ground = true;
+      }
+    }
+  }
+  if (!std::filesystem::exists(v.model_file))
+    r.fail(n["model"], key + ".model",
+           "no model '" + v.model + "' (looked for " + v.model_file.string() + ")");
+  if (!n["start"]) r.fail(n, key, "vehicle needs 'start: [x, y, z]'");
+  v.start = r.vec3(n["start"], key + ".start");
+  checkPointPlacement(r, n["start"], key + ".start", s, v.start);
+  if (n["waypoints"]) {
+    const YAML::Node w = n["waypoints"];
+    if (!w.IsSequence() || w.size() == 0)
+      r.fail(w, key + ".waypoints", "must be a non-empty list of [x, y, z] points");
+    if (w.size() > kMaxWaypoints) r.fail(w, key + ".waypoints", "too many waypoints");
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      const std::string k = key + ".waypoints[" + std::to_string(i) + "]";
+      v.waypoints.push_back(r.vec3(w[i], k));
+      checkPointPlacement(r, w[i], k, s, v.waypoints.back());
+    }
+  }
+  if (n["goal"]) {
+    v.waypoints.push_back(r.vec3(n["goal"], key + ".goal"));
+    checkPointPlacement(r, n["goal"], key + ".goal", s, v.waypoints.back());
+  }
+  if (v.waypoints.empty()) r.fail(n, key, "vehicle needs a 'goal' or 'waypoints'");
+  if (n["yaw"]) v.yaw_deg = r.number(n["yaw"], key + ".yaw", -3600, 3600);
+  s.vehicles.push_back(std::move(v));
+}
+
+}  // namespace
+
+std::filesystem::path modelsDirectory() {
+  if (const char* env = std::getenv("COSIM_MODELS_DIR"); env && *env) return env;
+  return COSIM_MODELS_DIR;
+}
+
+Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "", "cannot open scenario file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseScenario(text.str(), path, overrides);
+}
+
+Scenario parseScenario(const std::string& text, const std::string& file,
+                       const std::vector<std::string>& overrides) {
+  const YamlReader r(file);
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& e) {
+    throw InputError(file, "line " + std::to_string(e.mark.line + 1), "malformed YAML: " + e.msg);
+  }
+  if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
+  for (const auto& o : overrides) applyYamlOverride(root, o);
+  r.checkKeys(root, "", {"world", "vehicles", "planner", "trajectory", "controller", "sim", "render"});
+
+  Scenario s;
+  s.file = file;
+  s.effective_yaml = YAML::Dump(root) + "\n";
+  const std::filesystem::path dir = std::filesystem::path(file).parent_path();
+  s.planner_params = ParamSet(file);
+  s.trajectory_params = ParamSet(file);
+  s.controller_gains = ParamSet(file);
+
+  // world
+  if (!root["world"]) r.fail(root, "world", "missing 'world' section");
+  const YAML::Node world = root["world"];
+  r.checkKeys(world, "world", {"bounds", "obstacles", "include"});
+  if (!world["bounds"]) r.fail(world, "world", "missing 'bounds: {min: [..], max: [..]}'");
+  r.checkKeys(world["bounds"], "world.bounds", {"min", "max"});
+  if (!world["bounds"]["min"] || !world["bounds"]["max"])
+    r.fail(world["bounds"], "world.bounds", "needs both 'min' and 'max'");
+  s.world.bounds_min = r.vec3(world["bounds"]["min"], "world.bounds.min");
+  s.world.bounds_max = r.vec3(world["bounds"]["max"], "world.bounds.max");
+  const Eigen::Vector3d extent = s.world.bounds_max - s.world.bounds_min;
+  if ((extent.array() <= 0).any())
+    r.fail(world["bounds"], "world.bounds", "max must exceed min on every axis");
+  if ((extent.array() > kMaxWorldExtent).any())
+    r.fail(world["bounds"], "world.bounds", "the world is larger than 10 km on an axis");
+  if (world["obstacles"]) {
+    const YAML::Node obs = world["obstacles"];
+    if (!obs.IsSequence()) r.fail(obs, "world.obstacles", "must be a list");
+    if (obs.size() > kMaxObstacles)
+      r.fail(obs, "world.obstacles", "more than " + std::to_string(kMaxObstacles) + " obstacles");
+    for (std::size_t i = 0; i < obs.size(); ++i) {
+      Obstacle o;
+      readObstacle(r, obs[i], "world.obstacles[" + std::to_string(i) + "]", o);
+      s.world.obstacles.push_back(o);
+    }
+  }
+  if (world["include"]) {
+    const std::string inc = r.text(world["include"], "world.include");
+    s.include_file = std::filesystem::path(inc).is_absolute() ? std::filesystem::path(inc) : dir / inc;
+    if (!std::filesystem::exists(s.include_file))
+      r.fail(world["include"], "world.include", "file not found: " + s.include_file.string());
+  }
+
+  // vehicles
+  if (!root["vehicles"]) r.fail(root, "vehicles", "missing 'vehicles' list");
+  const YAML::Node vehicles = root["vehicles"];
+  if (!vehicles.IsSequence() || vehicles.size() == 0)
+    r.fail(vehicles, "vehicles", "must be a non-empty list");
+  if (vehicles.size() > 1000) r.fail(vehicles, "vehicles", "more than 1000 vehicles");
+  for (std::size_t i = 0; i < vehicles.size(); ++i)
+    readVehicle(r, vehicles[i], "vehicles[" + std::to_string(i) + "]", dir, s);
+
+  // planner
+  if (root["planner"] && !root["planner"].IsNull()) {
+    const YAML::Node p = root["planner"];
+    r.requireMap(p, "planner");
+    if (!p["name"]) r.fail(p, "planner", "missing 'name' (e.g. theta_star)");
+    s.planner_name = r.text(p["name"], "planner.name");
+    if (p["margin"]) s.planner_margin = r.number(p["margin"], "planner.margin", 0.0, 100.0);
+    readParams(r, p, "planner", {"name", "margin"}, s.planner_params);
+  }
+
+  // trajectory
+  if (root["trajectory"]) {
+    const YAML::Node t = root["trajectory"];
+    r.requireMap(t, "trajectory");
+    if (t["mode"]) {
+      s.trajectory_mode = r.text(t["mode"], "trajectory.mode");
+      if (s.trajectory_mode != "waypoints" && s.trajectory_mode != "minimum_snap")
+        r.fail(t["mode"], "trajectory.mode", "must be 'waypoints' or 'minimum_snap'");
+    }
+    readParams(r, t, "trajectory", {"mode"}, s.trajectory_params);
+  }
+
+  // controller
+  if (root["controller"]) {
+    const YAML::Node c = root["controller"];
+    r.checkKeys(c, "controller", {"name", "gains"});
+    if (c["name"]) s.controller_name = r.text(c["name"], "controller.name");
+    if (s.controller_name != "cascade" && s.controller_name != "geometric")
+      r.fail(c["name"], "controller.name", "must be 'cascade' or 'geometric'");
+    if (c["gains"]) readParams(r, c["gains"], "controller.gains", {}, s.controller_gains);
+  }
+
+  // sim
+  if (root["sim"]) {
+    const YAML::Node n = root["sim"];
+    r.checkKeys(n, "sim", {"timestep", "control_rate", "max_time", "seed", "goal_tolerance"});
+    if (n["timestep"]) s.sim.timestep = r.number(n["timestep"], "sim.timestep", 1e-5, 0.02);
+    if (n["control_rate"])
+      s.sim.control_rate = r.number(n["control_rate"], "sim.control_rate", 1.0, 10000.0);
+    if (n["max_time"]) s.sim.max_time = r.number(n["max_time"], "sim.max_time", 0.01, 86400.0);
+    if (n["seed"]) s.sim.seed = static_cast<std::uint64_t>(r.integer(n["seed"], "sim.seed", 0, 2147483647L));
+    if (n["goal_tolerance"])
+      s.sim.goal_tolerance = r.number(n["goal_tolerance"], "sim.goal_tolerance", 0.01, 100.0);
+    const double ratio = 1.0 / (s.sim.timestep * s.sim.control_rate);
+    if (ratio < 1.0 - 1e-9 || std::abs(ratio - std::round(ratio)) > 1e-6)
+      r.fail(n["control_rate"] ? n["control_rate"] : n, "sim.control_rate",
+             "the physics rate (1/timestep) must be a whole multiple of the control rate");
+  }
+
+  // render
+  if (root["render"]) {
+    const YAML::Node n = root["render"];
+    r.checkKeys(n, "render", {"camera", "width", "height", "fps"});
+    if (n["camera"]) {
+      s.render.camera = r.text(n["camera"], "render.camera");
+      if (s.render.camera != "chase" && s.render.camera != "overview" && s.render.camera != "top")
+        r.fail(n["camera"], "render.camera", "must be chase, overview or top");
+    }
+    if (n["width"]) s.render.width = static_cast<int>(r.integer(n["width"], "render.width", 64, 3840));
+    if (n["height"]) s.render.height = static_cast<int>(r.integer(n["height"], "render.height", 64, 2160));
+    if (n["fps"]) s.render.fps = static_cast<int>(r.integer(n["fps"], "render.fps", 1, 240));
+    // H.264 with yuv420p needs even frame sizes.
+    if (s.render.width % 2 || s.render.height % 2)
+      r.fail(n, "render", "width and height must be even (H.264, yuv420p)");
+  }
+  return s;
+}
+
+}  // namespace cosim

@@ -1,0 +1,260 @@
+#include "sim/world_model.h"
+
+#include <tinyxml2.h>
+
+#include <cmath>
+#include <cstring>
+#include <sstream>
+
+#include "planning/input_error.h"
+
+namespace cosim {
+
+namespace {
+
+using tinyxml2::XMLDocument;
+using tinyxml2::XMLElement;
+using tinyxml2::XMLNode;
+
+std::string fmt(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
+}
+std::string fmt(const Eigen::Vector3d& v) { return fmt(v.x()) + " " + fmt(v.y()) + " " + fmt(v.z()); }
+
+// Attributes that name something (prefixed) or refer to a named thing (prefixed the same way).
+const char* const kNameAttributes[] = {"name",   "class",  "childclass", "site",   "joint",
+                                       "body",   "body1",  "body2",      "geom1",  "geom2",
+                                       "tendon", "objname", "refsite",   "material", "mesh",
+                                       "texture", "hfield", "target"};
+
+void prefixNames(XMLElement* e, const std::string& prefix) {
+  for (const char* attr : kNameAttributes)
+    if (const char* v = e->Attribute(attr)) e->SetAttribute(attr, (prefix + v).c_str());
+  for (XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) prefixNames(c, prefix);
+}
+
+XMLElement* add(XMLDocument& doc, XMLNode* parent, const char* tag) {
+  XMLElement* e = doc.NewElement(tag);
+  parent->InsertEndChild(e);
+  return e;
+}
+
+void addObstacleGeom(XMLDocument& doc, XMLElement* worldbody, const Obstacle& o, std::size_t i) {
+  XMLElement* g = add(doc, worldbody, "geom");
+  g->SetAttribute("name", ("obstacle" + std::to_string(i)).c_str());
+  g->SetAttribute("pos", fmt(o.pos).c_str());
+  g->SetAttribute("material", "obstacle");
+  switch (o.type) {
+    case ObstacleType::Box:
+      g->SetAttribute("type", "box");
+      g->SetAttribute("size", fmt(0.5 * o.size).c_str());
+      g->SetAttribute("euler", ("0 0 " + fmt(o.yaw_deg)).c_str());
+      break;
+    case ObstacleType::Cylinder:
+      g->SetAttribute("type", "cylinder");
+      g->SetAttribute("size", (fmt(o.radius) + " " + fmt(0.5 * o.height)).c_str());
+      break;
+    case ObstacleType::Sphere:
+      g->SetAttribute("type", "sphere");
+      g->SetAttribute("size", fmt(o.radius).c_str());
+      break;
+  }
+}
+
+void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* actuator,
+                const VehicleSpec& v) {
+  XMLDocument src;
+  if (src.LoadFile(v.model_file.c_str()) != tinyxml2::XML_SUCCESS)
+    throw InputError(v.model_file.string(), "", std::string("cannot parse model XML: ") + src.ErrorStr());
+  XMLElement* root = src.FirstChildElement("mujoco");
+  if (!root) throw InputError(v.model_file.string(), "", "no <mujoco> root element");
+  XMLElement* wb = root->FirstChildElement("worldbody");
+  XMLElement* body = wb ? wb->FirstChildElement("body") : nullptr;
+  if (!body || !body->Attribute("name", "base"))
+    throw InputError(v.model_file.string(), "<worldbody>", "expected one <body name=\"base\">");
+  const std::string prefix = v.name + "/";
+
+  XMLElement* copy = body->DeepClone(&doc)->ToElement();
+  prefixNames(copy, prefix);
+  // The start pose is the body's own pose, so qpos0 (and a reset) puts the vehicle at its start.
+  copy->SetAttribute("pos", fmt(v.start).c_str());
+  copy->SetAttribute("euler", ("0 0 " + fmt(v.yaw_deg)).c_str());
+  worldbody->InsertEndChild(copy);
+
+  if (XMLElement* acts = root->FirstChildElement("actuator")) {
+    for (XMLElement* a = acts->FirstChildElement(); a; a = a->NextSiblingElement()) {
+      XMLElement* ac = a->DeepClone(&doc)->ToElement();
+      prefixNames(ac, prefix);
+      actuator->InsertEndChild(ac);
+    }
+  }
+}
+
+}  // namespace
+
+std::string composeWorldXml(const Scenario& s) {
+  XMLDocument doc;
+  XMLElement* mujoco = add(doc, &doc, "mujoco");
+  mujoco->SetAttribute("model", "cosim");
+  XMLElement* compiler = add(doc, mujoco, "compiler");
+  compiler->SetAttribute("autolimits", "true");  // MuJoCo 2.2.2 needs it for ctrlrange
+  compiler->SetAttribute("angle", "degree");
+  XMLElement* option = add(doc, mujoco, "option");
+  option->SetAttribute("timestep", fmt(s.sim.timestep).c_str());
+  option->SetAttribute("gravity", "0 0 -9.81");
+
+  const Eigen::Vector3d lo = s.world.bounds_min, hi = s.world.bounds_max;
+  const Eigen::Vector3d centre = 0.5 * (lo + hi);
+  const double extent = (hi - lo).norm();
+
+  XMLElement* visual = add(doc, mujoco, "visual");
+  XMLElement* global = add(doc, visual, "global");
+  // The off-screen buffer size comes from the model; without this, frames are cut to 640x480.
+  global->SetAttribute("offwidth", s.render.width);
+  global->SetAttribute("offheight", s.render.height);
+  global->SetAttribute("fovy", 45);
+  XMLElement* quality = add(doc, visual, "quality");
+  // Software rendering (OSMesa) pays for every pixel of a shadow map and every multisample:
+  // a 4096 shadow map and 4x MSAA made a 1280x720 frame cost about 0.8 s of CPU here. Shadows
+  // stay (they show height above the floor) with a smaller map; no multisampling.
+  quality->SetAttribute("shadowsize", 1024);
+  quality->SetAttribute("offsamples", 0);
+  XMLElement* map = add(doc, visual, "map");
+  map->SetAttribute("znear", fmt(0.05 / std::max(extent, 1.0)).c_str());
+  map->SetAttribute("zfar", "10");
+  XMLElement* headlight = add(doc, visual, "headlight");
+  headlight->SetAttribute("ambient", "0.35 0.35 0.35");
+  headlight->SetAttribute("diffuse", "0.5 0.5 0.5");
+
+  XMLElement* asset = add(doc, mujoco, "asset");
+  XMLElement* sky = add(doc, asset, "texture");
+  sky->SetAttribute("name", "sky");
+  sky->SetAttribute("type", "skybox");
+  sky->SetAttribute("builtin", "gradient");
+  sky->SetAttribute("rgb1", "0.55 0.7 0.9");
+  sky->SetAttribute("rgb2", "0.95 0.97 1.0");
+  sky->SetAttribute("width", 256);
+  sky->SetAttribute("height", 256);
+  XMLElement* grid = add(doc, asset, "texture");
+  grid->SetAttribute("name", "grid");
+  grid->SetAttribute("type", "2d");
+  grid->SetAttribute("builtin", "checker");
+  grid->SetAttribute("rgb1", "0.82 0.84 0.86");
+  grid->SetAttribute("rgb2", "0.74 0.76 0.78");
+  grid->SetAttribute("width", 512);
+  grid->SetAttribute("height", 512);
+  XMLElement* floor_mat = add(doc, asset, "material");
+  floor_mat->SetAttribute("name", "floor");
+  floor_mat->SetAttribute("texture", "grid");
+  // One checker square per 2 m of world.
+  floor_mat->SetAttribute("texrepeat", (fmt((hi.x() - lo.x()) / 4.0) + " " + fmt((hi.y() - lo.y()) / 4.0)).c_str());
+  XMLElement* obstacle_mat = add(doc, asset, "material");
+  obstacle_mat->SetAttribute("name", "obstacle");
+  obstacle_mat->SetAttribute("rgba", "0.55 0.6 0.68 1");
+  obstacle_mat->SetAttribute("specular", "0.2");
+
+  XMLElement* worldbody = add(doc, mujoco, "worldbody");
+  XMLElement* light = add(doc, worldbody, "light");
+  light->SetAttribute("directional", "true");
+  light->SetAttribute("pos", fmt(Eigen::Vector3d(centre.x(), centre.y(), hi.z() + extent)).c_str());
+  light->SetAttribute("dir", "-0.3 -0.4 -1");
+  light->SetAttribute("diffuse", "0.6 0.6 0.6");
+  light->SetAttribute("castshadow", "true");
+  XMLElement* floor = add(doc, worldbody, "geom");
+  floor->SetAttribute("name", "floor");
+  floor->SetAttribute("type", "plane");
+  floor->SetAttribute("pos", fmt(Eigen::Vector3d(centre.x(), centre.y(), lo.z())).c_str());
+  floor->SetAttribute("size", (fmt(0.5 * (hi.x() - lo.x())) + " " + fmt(0.5 * (hi.y() - lo.y())) + " 0.1").c_str());
+  floor->SetAttribute("material", "floor");
+  for (std::size_t i = 0; i < s.world.obstacles.size(); ++i)
+    addObstacleGeom(doc, worldbody, s.world.obstacles[i], i);
+  if (!s.include_file.empty()) {
+    XMLElement* inc = add(doc, mujoco, "include");
+    inc->SetAttribute("file", std::filesystem::absolute(s.include_file).c_str());
+  }
+
+  XMLElement* actuator = add(doc, mujoco, "actuator");
+  for (const VehicleSpec& v : s.vehicles) {
+    if (v.ground)
+      throw InputError(v.model_file.string(), "", "ground robots (URDF) are not supported by this build yet");
+    addVehicle(doc, worldbody, actuator, v);
+  }
+
+  tinyxml2::XMLPrinter printer;
+  doc.Print(&printer);
+  return printer.CStr();
+}
+
+WorldModel WorldModel::build(const Scenario& scenario) {
+  return fromXml(composeWorldXml(scenario), scenario);
+}
+
+WorldModel WorldModel::fromXml(const std::string& xml, const Scenario& scenario) {
+  WorldModel wm;
+  wm.xml_ = xml;
+  // Load from memory through MuJoCo's virtual file system.
+  mjVFS vfs;
+  mj_defaultVFS(&vfs);
+  const char* name = "cosim_world.xml";
+  if (mj_makeEmptyFileVFS(&vfs, name, static_cast<int>(xml.size())) != 0)
+    throw std::runtime_error("MuJoCo VFS is full");
+  const int index = mj_findFileVFS(&vfs, name);
+  std::memcpy(vfs.filedata[index], xml.data(), xml.size());
+  char error[1024] = "";
+  mjModel* m = mj_loadXML(name, &vfs, error, sizeof error);
+  mj_deleteVFS(&vfs);
+  if (!m) {
+    std::string file = scenario.vehicles.empty() ? scenario.file : scenario.vehicles[0].model_file.string();
+    throw InputError(file, "MuJoCo model", std::string("cannot compile the composed world: ") + error);
+  }
+  wm.model_.reset(m);
+  wm.floor_geom_ = mj_name2id(m, mjOBJ_GEOM, "floor");
+
+  for (const VehicleSpec& v : scenario.vehicles) {
+    VehicleHandles h;
+    h.name = v.name;
+    const std::string p = v.name + "/";
+    const std::string file = v.model_file.string();
+    h.body = mj_name2id(m, mjOBJ_BODY, (p + "base").c_str());
+    const int joint = mj_name2id(m, mjOBJ_JOINT, (p + "root").c_str());
+    if (h.body < 0 || joint < 0 || m->jnt_type[joint] != mjJNT_FREE)
+      throw InputError(file, "<body name=\"base\">", "needs a free joint named \"root\"");
+    h.qpos_adr = m->jnt_qposadr[joint];
+    h.qvel_adr = m->jnt_dofadr[joint];
+    QuadrotorParams& q = h.params;
+    q.mass = m->body_subtreemass[h.body];
+    q.inertia = Eigen::Vector3d(m->body_inertia[3 * h.body], m->body_inertia[3 * h.body + 1],
+                                m->body_inertia[3 * h.body + 2]);
+    q.gravity = -m->opt.gravity[2];
+    for (int i = 0; i < 4; ++i) {
+      const std::string an = p + "thrust" + std::to_string(i);
+      const int a = mj_name2id(m, mjOBJ_ACTUATOR, an.c_str());
+      const int site = mj_name2id(m, mjOBJ_SITE, (p + "rotor" + std::to_string(i)).c_str());
+      if (a < 0 || site < 0 || m->actuator_trntype[a] != mjTRN_SITE)
+        throw InputError(file, "<actuator>", "needs site actuators thrust0..3 on sites rotor0..3");
+      h.actuators[i] = a;
+      q.rotor_xy[i] = Eigen::Vector2d(m->site_pos[3 * site], m->site_pos[3 * site + 1]);
+      const double k = m->actuator_gear[6 * a + 5];
+      q.spin[i] = k >= 0 ? 1.0 : -1.0;
+      q.torque_per_thrust = std::abs(k);
+      q.min_thrust = m->actuator_ctrlrange[2 * a];
+      q.max_thrust = m->actuator_ctrlrange[2 * a + 1];
+      q.motor_time_constant = m->actuator_dynprm[mjNDYN * a];
+    }
+    // Bounding radius about the centre of mass, over every geom of the vehicle.
+    q.radius = 0.0;
+    for (int g = 0; g < m->ngeom; ++g) {
+      if (m->body_rootid[m->geom_bodyid[g]] != h.body) continue;
+      h.geoms.push_back(g);
+      const Eigen::Vector3d pos(m->geom_pos[3 * g], m->geom_pos[3 * g + 1], m->geom_pos[3 * g + 2]);
+      q.radius = std::max(q.radius, pos.norm() + m->geom_rbound[g]);
+    }
+    wm.vehicles_.push_back(std::move(h));
+  }
+  return wm;
+}
+
+}  // namespace cosim

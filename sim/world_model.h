@@ -1,0 +1,52 @@
+#pragma once
+// Composes one MuJoCo model from a scenario: world bounds (floor), the scenario's obstacles as
+// static geoms (the same Obstacle values the planners see), an optional MJCF include, and each
+// vehicle's model file with its names prefixed by the vehicle name. Owns the mjModel.
+#include <mujoco/mujoco.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "control/quadrotor_params.h"
+#include "sim/scenario.h"
+
+namespace cosim {
+
+// Where a vehicle lives inside the composed model.
+struct VehicleHandles {
+  std::string name;
+  int body = -1;        // the vehicle's root body ("<name>/base")
+  int qpos_adr = -1;    // its free joint's qpos (x y z qw qx qy qz)
+  int qvel_adr = -1;    // its free joint's qvel (world linear, body angular)
+  int actuators[4] = {-1, -1, -1, -1};
+  std::vector<int> geoms;  // every geom of the vehicle (for contacts)
+  QuadrotorParams params;  // read off the model: mass, inertia, rotors, limits, radius
+};
+
+class WorldModel {
+ public:
+  // Throws InputError naming the model file if a vehicle model is malformed or violates the
+  // conventions of models/ (see models/quad_1500g.xml).
+  static WorldModel build(const Scenario& scenario);
+  static WorldModel fromXml(const std::string& xml, const Scenario& scenario);
+
+  mjModel* model() const { return model_.get(); }
+  const std::string& xml() const { return xml_; }
+  const std::vector<VehicleHandles>& vehicles() const { return vehicles_; }
+  int floorGeom() const { return floor_geom_; }
+
+ private:
+  struct ModelDeleter {
+    void operator()(mjModel* m) const { mj_deleteModel(m); }
+  };
+  std::unique_ptr<mjModel, ModelDeleter> model_;
+  std::string xml_;
+  std::vector<VehicleHandles> vehicles_;
+  int floor_geom_ = -1;
+};
+
+// The composed MJCF text (exposed for tests and for logging next to a run).
+std::string composeWorldXml(const Scenario& scenario);
+
+}  // namespace cosim
