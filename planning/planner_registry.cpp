@@ -1,7 +1,11 @@
 #include "planning/planner_registry.h"
 
+#include "planning/grid/grid_planners.h"
 #include "planning/grid/grid_world_planner.h"
 #include "planning/input_error.h"
+#include "planning/sampling/sampling_planners.h"
+#include "planning/swarm/planners_000.h"
+#include "planning/swarm/planners_002.h"
 
 namespace cosim {
 
@@ -12,6 +16,10 @@ const PlannerRegistry& PlannerRegistry::instance() {
   static const PlannerRegistry registry = [] {
     PlannerRegistry r;
     // register<Family>Planners(r) calls go here, one per family.
+    registerSamplingPlanners(r);
+    registerGridPlanners(r);
+    registerAnt000Planners(r);
+    registerAnt002Planners(r);
     return r;
   }();
   return registry;

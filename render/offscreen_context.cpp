@@ -8,6 +8,13 @@
 
 namespace cosim {
 
+int fontScaleForHeight(int height) {
+  if (height >= 1000) return mjFONTSCALE_200;
+  if (height >= 600) return mjFONTSCALE_150;
+  if (height >= 350) return mjFONTSCALE_100;
+  return mjFONTSCALE_50;
+}
+
 OffscreenContext::OffscreenContext(const mjModel* m, int width, int height)
     : width_(width), height_(height) {
   if (width > m->vis.global.offwidth || height > m->vis.global.offheight)
@@ -23,7 +30,7 @@ OffscreenContext::OffscreenContext(const mjModel* m, int width, int height)
     throw std::runtime_error("OSMesa: cannot make the context current");
   }
   mjr_defaultContext(&con_);
-  mjr_makeContext(m, &con_, mjFONTSCALE_150);
+  mjr_makeContext(m, &con_, fontScaleForHeight(height));
   mjr_setBuffer(mjFB_OFFSCREEN, &con_);
   if (con_.currentBuffer != mjFB_OFFSCREEN)
     throw std::runtime_error("MuJoCo: the off-screen framebuffer is not available");

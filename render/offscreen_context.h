@@ -8,6 +8,9 @@
 
 namespace cosim {
 
+// mjFONTSCALE_* for a frame height: text stays about 2.5 % of the frame height.
+int fontScaleForHeight(int height);
+
 class OffscreenContext {
  public:
   // The frame size must not exceed the model's <visual><global offwidth/offheight>.

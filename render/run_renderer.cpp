@@ -3,40 +3,49 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
+
+#include "render/frame_annotations.h"
+#include "render/log_lookup.h"
 
 namespace cosim {
 
+namespace {
+// Geoms added per frame are capped: software rendering pays per triangle, and a capsule is a
+// few hundred. The trail and the reference are decimated to stay within these budgets.
+constexpr int kTrailSegmentBudget = 400;
+constexpr int kReferenceDashBudget = 150;
+// Lines are about this fraction of the visible height thick at the camera's focus
+// (about 4 px in a 720-line frame).
+constexpr double kLineWidthFraction = 0.0055;
+}  // namespace
+
 RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, const RunLog& log,
                          int width, int height)
-    : world_(world), scenario_(scenario), log_(log) {
+    : world_(world),
+      scenario_(scenario),
+      log_(log),
+      rig_(scenario, log, static_cast<double>(width) / height),
+      against_trajectory_(scenario.trajectory_mode != "waypoints"),
+      end_time_(logEndTime(log)) {
   const mjModel* m = world.model();
   ctx_ = std::make_unique<OffscreenContext>(m, width, height);
   data_ = mj_makeData(m);
   mjv_defaultScene(&scene_);
-  // Room for the model's geoms plus path and trail segments.
-  mjv_makeScene(m, &scene_, m->ngeom + 12000);
+  mjv_makeScene(m, &scene_, m->ngeom + 64 + static_cast<int>(log.vehicles.size()) *
+                                               (kTrailSegmentBudget + kReferenceDashBudget + 64));
   mjv_defaultCamera(&camera_);
   mjv_defaultOption(&option_);
+  double max_error = 0.0;
+  for (const VehicleLog& v : log.vehicles) {
+    errors_.push_back(trackingErrors(v, against_trajectory_));
+    for (double e : errors_.back()) max_error = std::max(max_error, e);
+  }
+  error_scale_ = errorScaleMax(max_error);
 }
 
 RunRenderer::~RunRenderer() {
   mjv_freeScene(&scene_);
   if (data_) mj_deleteData(data_);
-}
-
-double RunRenderer::endTime() const {
-  double t = 0.0;
-  for (const auto& v : log_.vehicles)
-    if (!v.samples.empty()) t = std::max(t, v.samples.back().t);
-  return t;
-}
-
-std::size_t RunRenderer::sampleIndex(const VehicleLog& v, double t) const {
-  // Samples are in time order: binary search for the last sample at or before t.
-  auto it = std::upper_bound(v.samples.begin(), v.samples.end(), t,
-                             [](double time, const LogSample& s) { return time < s.t; });
-  return it == v.samples.begin() ? 0 : static_cast<std::size_t>(it - v.samples.begin() - 1);
 }
 
 void RunRenderer::poseVehicles(double t) {
@@ -45,7 +54,7 @@ void RunRenderer::poseVehicles(double t) {
   for (std::size_t v = 0; v < world_.vehicles().size() && v < log_.vehicles.size(); ++v) {
     const VehicleLog& vl = log_.vehicles[v];
     if (vl.samples.empty()) continue;
-    const LogSample& s = vl.samples[sampleIndex(vl, t)];
+    const LogSample& s = vl.samples[sampleIndexAt(vl, t)];
     mjtNum* q = data_->qpos + world_.vehicles()[v].qpos_adr;
     q[0] = s.pos.x();
     q[1] = s.pos.y();
@@ -59,107 +68,183 @@ void RunRenderer::poseVehicles(double t) {
   mj_camlight(m, data_);
 }
 
-void RunRenderer::placeCamera(double t, const std::string& camera) {
-  const Eigen::Vector3d lo = scenario_.world.bounds_min, hi = scenario_.world.bounds_max;
-  const Eigen::Vector3d centre = 0.5 * (lo + hi);
-  const double extent = (hi - lo).head<2>().norm();
+void RunRenderer::applyCamera(const CameraPose& pose) {
   camera_.type = mjCAMERA_FREE;
-  if (camera == "chase" && !log_.vehicles.empty() && !log_.vehicles[0].samples.empty()) {
-    const VehicleLog& v = log_.vehicles[0];
-    const std::size_t i = sampleIndex(v, t);
-    // Heading from the displacement over the last 1.5 s: smooth, and defined from the log
-    // alone, so any frame can be rendered on its own.
-    const std::size_t j = sampleIndex(v, t - 1.5);
-    Eigen::Vector3d d = v.samples[i].pos - v.samples[j].pos;
-    if (d.head<2>().norm() < 0.2) d = v.goal - v.samples[i].pos;
-    const double heading = std::atan2(d.y(), d.x()) * 180.0 / M_PI;
-    for (int k = 0; k < 3; ++k) camera_.lookat[k] = v.samples[i].pos[k];
-    camera_.azimuth = heading;  // MuJoCo's azimuth: the camera looks along this heading
-    camera_.elevation = -22.0;
-    camera_.distance = std::max(1.0, 16.0 * v.radius);
-  } else if (camera == "top") {
-    for (int k = 0; k < 3; ++k) camera_.lookat[k] = centre[k];
-    camera_.lookat[2] = lo.z();
-    camera_.azimuth = 90.0;
-    camera_.elevation = -89.9;
-    camera_.distance = 1.25 * extent;
-  } else {  // overview
-    for (int k = 0; k < 3; ++k) camera_.lookat[k] = centre[k];
-    camera_.lookat[2] = lo.z();
-    camera_.azimuth = 225.0;
-    camera_.elevation = -42.0;
-    camera_.distance = 1.05 * extent;
+  for (int k = 0; k < 3; ++k) camera_.lookat[k] = pose.lookat[k];
+  camera_.azimuth = pose.azimuth;
+  camera_.elevation = pose.elevation;
+  camera_.distance = pose.distance;
+  const double visible_height = 2.0 * pose.distance * std::tan(0.5 * pose.fovy_deg * M_PI / 180.0);
+  line_radius_ = 0.5 * kLineWidthFraction * visible_height;
+}
+
+void RunRenderer::fadeObstacles() {
+  if (scenario_.render.obstacle_alpha >= 1.0) return;
+  const mjModel* m = world_.model();
+  for (int i = 0; i < scene_.ngeom; ++i) {
+    mjvGeom& g = scene_.geoms[i];
+    // Static world geometry (body 0) except the floor: the scenario's obstacles and includes.
+    if (g.objtype == mjOBJ_GEOM && g.objid >= 0 && g.objid != world_.floorGeom() &&
+        m->geom_bodyid[g.objid] == 0)
+      g.rgba[3] = static_cast<float>(scenario_.render.obstacle_alpha);
   }
-  // Path lines keep about the same on-screen width at any camera distance.
-  line_radius_ = 0.0022 * camera_.distance;
 }
 
 void RunRenderer::addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                             const Eigen::Vector3f& rgb, double radius) {
+                             const Eigen::Vector3f& rgb, double radius, float alpha) {
   if (scene_.ngeom >= scene_.maxgeom || (b - a).norm() < 1e-9) return;
   mjvGeom* g = scene_.geoms + scene_.ngeom;
-  const float rgba[4] = {rgb.x(), rgb.y(), rgb.z(), 1.0f};
+  const float rgba[4] = {rgb.x(), rgb.y(), rgb.z(), alpha};
   mjv_initGeom(g, mjGEOM_CAPSULE, nullptr, nullptr, nullptr, rgba);
   mjv_makeConnector(g, mjGEOM_CAPSULE, radius, a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
-  g->emission = 0.6f;  // nearly flat colour: paths stay recognisable in shade
+  g->emission = 0.7f;  // nearly flat colour: lines keep their colour in shade
+  g->specular = 0.0f;
   g->category = mjCAT_DECOR;
   ++scene_.ngeom;
 }
 
-void RunRenderer::addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector4f& rgba) {
+void RunRenderer::addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector3f& rgb,
+                            float alpha) {
   if (scene_.ngeom >= scene_.maxgeom) return;
   mjvGeom* g = scene_.geoms + scene_.ngeom;
   const mjtNum size[3] = {radius, radius, radius};
   const mjtNum pos[3] = {p.x(), p.y(), p.z()};
-  const float c[4] = {rgba[0], rgba[1], rgba[2], rgba[3]};
+  const float c[4] = {rgb.x(), rgb.y(), rgb.z(), alpha};
   mjv_initGeom(g, mjGEOM_SPHERE, size, pos, nullptr, c);
   g->emission = 0.4f;
   g->category = mjCAT_DECOR;
   ++scene_.ngeom;
 }
 
-void RunRenderer::addOverlays(double t) {
-  for (const VehicleLog& v : log_.vehicles) {
+Eigen::Vector3f RunRenderer::plannedColour(std::size_t vehicle) const {
+  return log_.vehicles.size() == 1 ? kPlannedPathColour : agentColour(vehicle);
+}
+
+void RunRenderer::addTrail(std::size_t vehicle, double t) {
+  const VehicleLog& v = log_.vehicles[vehicle];
+  const std::vector<double>& err = errors_[vehicle];
+  const std::size_t last = sampleIndexAt(v, t);
+  // Decimated by distance: a vertex every ~1.5 line widths, or coarser if the flight is long
+  // (a fixed segment budget keeps the frame cost bounded).
+  double length = 0.0;
+  for (std::size_t i = 1; i < v.samples.size(); ++i) length += (v.samples[i].pos - v.samples[i - 1].pos).norm();
+  const double spacing = std::max(3.0 * line_radius_, length / kTrailSegmentBudget);
+  std::size_t from = 0;
+  for (std::size_t i = 1; i <= last; ++i) {
+    const Eigen::Vector3d& p = v.samples[i].pos;
+    if ((p - v.samples[from].pos).norm() < spacing && i != last) continue;
+    const double e = 0.5 * (err[from] + err[i]);
+    addSegment(v.samples[from].pos, p, errorColour(e / error_scale_), line_radius_);
+    from = i;
+  }
+}
+
+void RunRenderer::addOverlays(double t, CameraKind camera) {
+  const bool several = log_.vehicles.size() > 1;
+  for (std::size_t a = 0; a < log_.vehicles.size(); ++a) {
+    const VehicleLog& v = log_.vehicles[a];
+    const Eigen::Vector3f planned = plannedColour(a);
     for (std::size_t i = 1; i < v.planned_path.size(); ++i)
-      addSegment(v.planned_path[i - 1], v.planned_path[i], kPlannedPathColour, line_radius_);
-    if (!v.planned_path.empty()) addSphere(v.planned_path.front(), 3 * line_radius_, {0.1f, 0.8f, 0.2f, 0.9f});
-    addSphere(v.goal, 3 * line_radius_, {0.9f, 0.1f, 0.1f, 0.9f});
+      addSegment(v.planned_path[i - 1], v.planned_path[i], planned, 0.75 * line_radius_);
+    // Start and goal; the goal stands on a thin pole to the floor so its height reads in
+    // perspective views.
+    const Eigen::Vector3d start = !v.planned_path.empty() ? v.planned_path.front()
+                                  : !v.samples.empty()    ? v.samples.front().pos
+                                                          : v.goal;
+    addSphere(start, 3.0 * line_radius_, several ? planned : kStartColour, 0.95f);
+    addSphere(v.goal, 3.5 * line_radius_, several ? planned : kGoalColour, 0.95f);
+    const Eigen::Vector3d floor(v.goal.x(), v.goal.y(), scenario_.world.bounds_min.z());
+    addSegment(floor, v.goal - Eigen::Vector3d(0, 0, 3.0 * line_radius_), several ? planned : kGoalColour,
+               0.4 * line_radius_, 0.8f);
     if (v.samples.empty()) continue;
-    // The trail, decimated by distance: a new vertex every ~1.5 line widths of travel keeps it
-    // smooth on screen while the geometry stays small (software rendering pays per triangle).
-    const std::size_t last = sampleIndex(v, t);
-    const double spacing = 1.5 * 2.0 * line_radius_;
-    Eigen::Vector3d prev = v.samples.front().pos;
-    for (std::size_t i = 1; i <= last; ++i) {
-      const Eigen::Vector3d& p = v.samples[i].pos;
-      if ((p - prev).norm() < spacing && i != last) continue;
-      addSegment(prev, p, kFlownPathColour, 0.8 * line_radius_);
-      prev = p;
+    // The reference trajectory (only when it is a trajectory; a waypoint reference is the
+    // planned path itself): dashes along the whole flight.
+    if (against_trajectory_) {
+      double length = 0.0;
+      for (std::size_t i = 1; i < v.samples.size(); ++i)
+        length += (v.samples[i].ref_pos - v.samples[i - 1].ref_pos).norm();
+      const double dash = std::max(4.0 * line_radius_, length / (2.0 * kReferenceDashBudget));
+      std::size_t from = 0;
+      bool draw = true;
+      for (std::size_t i = 1; i < v.samples.size(); ++i) {
+        if ((v.samples[i].ref_pos - v.samples[from].ref_pos).norm() < dash) continue;
+        if (draw) addSegment(v.samples[from].ref_pos, v.samples[i].ref_pos, kReferenceColour, 0.35 * line_radius_);
+        draw = !draw;
+        from = i;
+      }
+    }
+    addTrail(a, t);
+    // Where the vehicle is, for views where it is a few pixels small (and to tell agents apart).
+    if (camera != CameraKind::Chase || several) {
+      const LogSample& s = v.samples[sampleIndexAt(v, t)];
+      addSphere(s.pos, std::max(1.6 * v.radius, 5.0 * line_radius_), several ? planned : Eigen::Vector3f(1, 1, 1),
+                0.35f);
     }
   }
 }
 
-void RunRenderer::render(double t, const std::string& camera, std::vector<std::uint8_t>& rgb,
-                         bool overlay_text) {
+void RunRenderer::annotate(double t) {
+  FrameAnnotations ann(ctx_->context(), ctx_->viewport());
+  std::vector<std::pair<std::string, std::string>> lines;
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.2f s", t);
+  lines.emplace_back("time", buf);
+  const std::string error_name = against_trajectory_ ? "error to reference" : "error to path";
+  for (std::size_t a = 0; a < log_.vehicles.size(); ++a) {
+    const VehicleLog& v = log_.vehicles[a];
+    if (v.samples.empty()) continue;
+    const std::size_t i = sampleIndexAt(v, t);
+    const std::string who = log_.vehicles.size() > 1 ? v.name + " " : "";
+    std::snprintf(buf, sizeof buf, "%.2f m/s", v.samples[i].vel.norm());
+    lines.emplace_back(who + "speed", buf);
+    std::snprintf(buf, sizeof buf, "%.3f m", errors_[a][i]);
+    lines.emplace_back(who + error_name, buf);
+    if (lines.size() > 9) break;  // many agents: the first few; the figures have all
+  }
+  lines.emplace_back("planner", scenario_.planner_name.empty() ? "given waypoints" : scenario_.planner_name);
+  ann.stateBox(lines);
+
+  std::vector<LegendEntry> legend;
+  if (log_.vehicles.size() == 1) {
+    legend.push_back({"planned path", kPlannedPathColour});
+  } else {
+    for (std::size_t a = 0; a < log_.vehicles.size() && a < 6; ++a)
+      legend.push_back({log_.vehicles[a].name + " planned", agentColour(a)});
+  }
+  if (against_trajectory_) legend.push_back({"reference trajectory (dashed)", kReferenceColour});
+  legend.push_back({"flown path (colour = error)", errorColour(0.6)});
+  if (log_.vehicles.size() == 1) {
+    legend.push_back({"start", kStartColour});
+    legend.push_back({"goal", kGoalColour});
+  }
+  ann.legend(legend);
+  ann.errorScale(error_scale_, "tracking error [m]");
+}
+
+void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>& rgb, bool annotate_frame) {
   const mjModel* m = world_.model();
   poseVehicles(t);
-  placeCamera(t, camera);
+  const CameraPose pose = rig_.pose(camera, t);
+  applyCamera(pose);
   mjv_updateScene(m, data_, &option_, nullptr, &camera_, mjCAT_ALL, &scene_);
-  addOverlays(t);
-  mjr_render(ctx_->viewport(), &scene_, ctx_->context());
-  if (overlay_text && !log_.vehicles.empty() && !log_.vehicles[0].samples.empty()) {
-    const VehicleLog& v = log_.vehicles[0];
-    const LogSample& s = v.samples[sampleIndex(v, t)];
-    char values[256];
-    std::snprintf(values, sizeof values, "%.2f s\n%.2f m/s\n%.3f m", s.t, s.vel.norm(),
-                  (s.pos - s.ref_pos).norm());
-    const std::string planner = scenario_.planner_name.empty() ? "given waypoints" : scenario_.planner_name;
-    const std::string labels = "time\nspeed\nerror to set-point\n";
-    mjr_overlay(mjFONT_NORMAL, mjGRID_TOPLEFT, ctx_->viewport(), (labels + "planner").c_str(),
-                (std::string(values) + "\n" + planner).c_str(), ctx_->context());
-    mjr_overlay(mjFONT_NORMAL, mjGRID_BOTTOMLEFT, ctx_->viewport(), "planned path (orange)\nflown path (blue)",
-                nullptr, ctx_->context());
+  if (std::abs(pose.fovy_deg - m->vis.global.fovy) > 1e-9) {
+    // A narrower lens than the model's: shrink the frustum at the near plane (the eye and its
+    // direction are already set from the pose).
+    const double k = std::tan(0.5 * pose.fovy_deg * M_PI / 180.0) / std::tan(0.5 * m->vis.global.fovy * M_PI / 180.0);
+    for (auto& c : scene_.camera) {
+      // The eye is far away: move the near plane out too (same view, finer depth resolution).
+      const float q = std::max(1.0f, static_cast<float>(0.3 * pose.distance) / c.frustum_near);
+      c.frustum_near *= q;
+      c.frustum_bottom *= static_cast<float>(k) * q;
+      c.frustum_top *= static_cast<float>(k) * q;
+      c.frustum_center *= static_cast<float>(k) * q;
+      c.frustum_far = std::max(c.frustum_far, static_cast<float>(2.0 * pose.distance));
+    }
   }
+  fadeObstacles();
+  addOverlays(t, camera);
+  mjr_render(ctx_->viewport(), &scene_, ctx_->context());
+  if (annotate_frame && !log_.vehicles.empty()) annotate(t);
   ctx_->readRgb(rgb);
 }
 

@@ -1,55 +1,68 @@
 #pragma once
-// Renders a logged run: the composed world with each vehicle posed from the log at time t,
-// the planned path as a polyline, the flown path as a trail in another colour, start and goal
-// markers and a text overlay. Everything comes from the log, so a run can be re-rendered from
-// another camera without simulating it again.
+// Renders a logged run: the composed world with each vehicle posed from the log at time t, the
+// planned path as a line (one colour per agent), the reference trajectory as a thin dashed
+// line, the flown trail coloured by tracking error, start and goal markers, optionally
+// see-through obstacles, and a 2D overlay (state box, legend, colour scale). Everything comes
+// from the log, so a run can be re-rendered from another camera without simulating it again.
 #include <Eigen/Core>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "render/camera_rig.h"
 #include "render/offscreen_context.h"
+#include "render/overlay_palette.h"
 #include "sim/run_log.h"
 #include "sim/world_model.h"
 
 namespace cosim {
-
-// Colours of the overlays (RGB, 0..1), exposed so tests can look for them.
-inline const Eigen::Vector3f kPlannedPathColour{1.0f, 0.3f, 0.05f};
-inline const Eigen::Vector3f kFlownPathColour{0.05f, 0.4f, 1.0f};
 
 class RunRenderer {
  public:
   RunRenderer(const WorldModel& world, const Scenario& scenario, const RunLog& log, int width,
               int height);
   ~RunRenderer();
+  RunRenderer(const RunRenderer&) = delete;
+  RunRenderer& operator=(const RunRenderer&) = delete;
 
-  // camera: "chase" (behind the first vehicle, following its heading), "overview" (the whole
-  // world at an angle), "top" (straight down). trail_until: draw the flown trail up to this
-  // time (the frame time for videos; +inf for the final picture).
+  // The frame at simulated time t from a named camera (chase, orbit, top, overview, fixed).
+  // The trail is drawn up to t (pass endTime() for the final picture). annotate: the 2D
+  // overlay (state box, legend, colour scale).
+  void render(double t, CameraKind camera, std::vector<std::uint8_t>& rgb, bool annotate = true);
   void render(double t, const std::string& camera, std::vector<std::uint8_t>& rgb,
-              bool overlay_text = true);
+              bool annotate = true) {
+    render(t, cameraKind(camera), rgb, annotate);
+  }
 
   // Pixel (column, row from the top) where world point p appears in the last rendered frame;
   // row/column may be outside the image. Returns false if p is behind the camera.
   bool project(const Eigen::Vector3d& p, Eigen::Vector2d& pixel) const;
 
-  double endTime() const;
+  double endTime() const { return end_time_; }
+  double errorScale() const { return error_scale_; }  // m, the trail colour scale's top
   int width() const { return ctx_->width(); }
   int height() const { return ctx_->height(); }
 
  private:
   void poseVehicles(double t);
-  void placeCamera(double t, const std::string& camera);
-  void addOverlays(double t);
+  void applyCamera(const CameraPose& pose);
+  void fadeObstacles();
+  void addOverlays(double t, CameraKind camera);
+  void addTrail(std::size_t vehicle, double t);
   void addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3f& rgb,
-                  double radius);
-  void addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector4f& rgba);
-  std::size_t sampleIndex(const VehicleLog& v, double t) const;
+                  double radius, float alpha = 1.0f);
+  void addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector3f& rgb, float alpha);
+  void annotate(double t);
+  Eigen::Vector3f plannedColour(std::size_t vehicle) const;
 
   const WorldModel& world_;
   const Scenario& scenario_;
   const RunLog& log_;
+  CameraRig rig_;
+  bool against_trajectory_;
+  std::vector<std::vector<double>> errors_;  // per vehicle, per sample
+  double error_scale_ = 0.1;
+  double end_time_ = 0.0;
   mjData* data_ = nullptr;
   mjvScene scene_;
   mjvCamera camera_;

@@ -1,5 +1,7 @@
 #include "sim/flight_simulation.h"
 
+#include "sim/disturbances.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -106,6 +108,9 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
     pilots[v].controller->reset();
   }
   ContactMonitor contacts(m, world, scenario);
+  Disturbances disturbances(scenario.disturbances, world, scenario.world.bounds_min.z(),
+                            scenario.sim.seed);
+  const bool disturbed = scenario.disturbances.any();
   const Eigen::Vector3d lo = scenario.world.bounds_min, hi = scenario.world.bounds_max;
   const double far = 10.0 * (hi - lo).norm();
 
@@ -159,6 +164,7 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
         break;
       }
     }
+    if (disturbed) disturbances.apply(m, d, m->opt.timestep);
     mj_step(m, d);
     contacts.update(d, log);
     if (!finite(d, m->nq)) {

@@ -40,8 +40,17 @@ struct VehicleLog {
   double arrival_time = -1.0;  // s, when the goal was reached
 };
 
+// A moving obstacle's centre over time (sampled with the vehicles), for metrics and rendering.
+struct MovingObstacleLog {
+  std::string name;  // its MuJoCo body ("moving<i>")
+  double radius = 0.0;  // footprint radius, m
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> pos;
+};
+
 struct RunLog {
   std::vector<VehicleLog> vehicles;
+  std::vector<MovingObstacleLog> moving_obstacles;
   double sim_time = 0.0;    // simulated seconds
   double wall_time = 0.0;   // wall-clock seconds of the simulation loop
   long physics_steps = 0;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "planning/param_set.h"
+#include "sim/disturbance_settings.h"
 #include "planning/world/world.h"
 
 namespace cosim {
@@ -23,6 +24,19 @@ struct VehicleSpec {
   const Eigen::Vector3d& goal() const { return waypoints.back(); }
 };
 
+// An obstacle that moves (issue 5): a cylinder or box standing on the floor whose centre travels
+// along `path` (x, y in metres) at `speed` (m/s), back and forth (or round in a loop). In MuJoCo
+// it is a mocap body driven every step; planners do not see it, navigators sense it.
+struct MovingObstacleSpec {
+  ObstacleType type = ObstacleType::Cylinder;  // Cylinder or Box
+  double radius = 0.0;                          // cylinder, m
+  double height = 1.0;                          // m
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();  // box: full edge lengths, m
+  std::vector<Eigen::Vector2d> path;            // at least one point; one = standing still
+  double speed = 0.0;                           // m/s
+  bool loop = false;                            // false: back and forth; true: last -> first
+};
+
 struct SimSettings {
   double timestep = 0.001;     // s, physics step
   double control_rate = 500;   // Hz, controller rate; the physics rate must be a multiple
@@ -31,9 +45,18 @@ struct SimSettings {
   double goal_tolerance = 0.2;  // m: the goal is reached within this distance (seed 003: 0.2 m)
 };
 
+// Camera names: chase (follows the first vehicle), orbit (circles the world), top (straight
+// down, nearly orthographic), overview (the whole world at an angle), fixed (fixed_pos/lookat).
 struct RenderSettings {
-  std::string camera = "chase";
+  std::string camera = "chase";         // the main video, video.mp4
+  std::vector<std::string> cameras;     // more videos, one per camera: video_<camera>.mp4
   int width = 1280, height = 720, fps = 30;
+  double speedup = 1.0;                 // simulated seconds per second of video
+  bool has_fixed_camera = false;        // render.fixed_camera: {pos: [x,y,z], lookat: [x,y,z]}
+  Eigen::Vector3d fixed_pos = Eigen::Vector3d::Zero();
+  Eigen::Vector3d fixed_lookat = Eigen::Vector3d::Zero();
+  double obstacle_alpha = 1.0;          // below 1: obstacles are see-through
+  bool png_frames = false;              // also write each video as frames_<camera>/NNNNN.png
 };
 
 struct Scenario {
@@ -41,6 +64,7 @@ struct Scenario {
   std::string effective_yaml;       // the document after --set overrides (saved with each run)
   World world;
   std::filesystem::path include_file;  // optional MJCF fragment with more geometry
+  std::vector<MovingObstacleSpec> moving_obstacles;  // world.moving_obstacles
   std::vector<VehicleSpec> vehicles;
 
   // Planner: empty name = fly the vehicle's waypoints as given.
@@ -55,6 +79,7 @@ struct Scenario {
   ParamSet controller_gains;
 
   SimSettings sim;
+  DisturbanceSettings disturbances;
   RenderSettings render;
 };
 

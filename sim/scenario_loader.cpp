@@ -67,6 +67,47 @@ void checkPointPlacement(const YamlReader& r, const YAML::Node& n, const std::st
                          std::to_string(i) + "])");
 }
 
+// world.moving_obstacles[i]: {type: cylinder, radius, height, path: [[x, y], ...], speed, loop}
+// or {type: box, size: [x, y, z], ...}. Path points must be inside the bounds and clear of the
+// static obstacles.
+void readMovingObstacle(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                        Scenario& s) {
+  r.requireMap(n, key);
+  if (!n["type"]) r.fail(n, key, "moving obstacle needs a 'type' (cylinder or box)");
+  MovingObstacleSpec o;
+  const std::string type = r.text(n["type"], key + ".type");
+  if (type == "cylinder") {
+    r.checkKeys(n, key, {"type", "radius", "height", "path", "speed", "loop"});
+    if (!n["radius"]) r.fail(n, key, "cylinder needs 'radius'");
+    o.radius = r.number(n["radius"], key + ".radius", 1e-3, kMaxWorldExtent);
+  } else if (type == "box") {
+    r.checkKeys(n, key, {"type", "size", "path", "speed", "loop"});
+    o.type = ObstacleType::Box;
+    if (!n["size"]) r.fail(n, key, "box needs 'size: [x, y, z]' (full edge lengths)");
+    o.size = r.vec3(n["size"], key + ".size");
+    if ((o.size.array() <= 0).any()) r.fail(n["size"], key + ".size", "sizes must be positive");
+    o.height = o.size.z();
+  } else {
+    r.fail(n["type"], key + ".type", "moving obstacles are 'cylinder' or 'box'");
+  }
+  if (n["height"]) o.height = r.number(n["height"], key + ".height", 1e-3, kMaxWorldExtent);
+  if (!n["path"] || !n["path"].IsSequence() || n["path"].size() == 0)
+    r.fail(n, key, "moving obstacle needs 'path: [[x, y], ...]' (at least one point)");
+  if (n["path"].size() > kMaxWaypoints) r.fail(n["path"], key + ".path", "too many points");
+  for (std::size_t i = 0; i < n["path"].size(); ++i) {
+    const YAML::Node p = n["path"][i];
+    const std::string k = key + ".path[" + std::to_string(i) + "]";
+    if (!p.IsSequence() || p.size() != 2) r.fail(p, k, "must be [x, y]");
+    const Eigen::Vector2d xy(r.number(p[0], k + "[0]", -1e9, 1e9), r.number(p[1], k + "[1]", -1e9, 1e9));
+    checkPointPlacement(r, p, k, s, Eigen::Vector3d(xy.x(), xy.y(), s.world.bounds_min.z() + 0.5 * o.height));
+    o.path.push_back(xy);
+  }
+  if (n["speed"]) o.speed = r.number(n["speed"], key + ".speed", 0.0, 100.0);
+  if (o.path.size() > 1 && !(o.speed > 0)) r.fail(n, key, "a moving obstacle with a path needs 'speed' > 0 (m/s)");
+  if (n["loop"]) o.loop = r.boolean(n["loop"], key + ".loop");
+  s.moving_obstacles.push_back(std::move(o));
+}
+
 void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& key,
                  const std::filesystem::path& scenario_dir, Scenario& s) {
   r.checkKeys(n, key, {"name", "model", "start", "goal", "waypoints", "yaw"});
@@ -145,7 +186,7 @@ Scenario parseScenario(const std::string& text, const std::string& file,
   }
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   for (const auto& o : overrides) applyYamlOverride(root, o);
-  r.checkKeys(root, "", {"world", "vehicles", "planner", "trajectory", "controller", "sim", "render"});
+  r.checkKeys(root, "", {"world", "vehicles", "planner", "trajectory", "controller", "sim", "disturbances", "render"});
 
   Scenario s;
   s.file = file;
@@ -158,7 +199,7 @@ Scenario parseScenario(const std::string& text, const std::string& file,
   // world
   if (!root["world"]) r.fail(root, "world", "missing 'world' section");
   const YAML::Node world = root["world"];
-  r.checkKeys(world, "world", {"bounds", "obstacles", "include"});
+  r.checkKeys(world, "world", {"bounds", "obstacles", "include", "moving_obstacles"});
   if (!world["bounds"]) r.fail(world, "world", "missing 'bounds: {min: [..], max: [..]}'");
   r.checkKeys(world["bounds"], "world.bounds", {"min", "max"});
   if (!world["bounds"]["min"] || !world["bounds"]["max"])
@@ -180,6 +221,13 @@ Scenario parseScenario(const std::string& text, const std::string& file,
       readObstacle(r, obs[i], "world.obstacles[" + std::to_string(i) + "]", o);
       s.world.obstacles.push_back(o);
     }
+  }
+  if (world["moving_obstacles"]) {
+    const YAML::Node mo = world["moving_obstacles"];
+    if (!mo.IsSequence()) r.fail(mo, "world.moving_obstacles", "must be a list");
+    if (mo.size() > 1000) r.fail(mo, "world.moving_obstacles", "more than 1000 moving obstacles");
+    for (std::size_t i = 0; i < mo.size(); ++i)
+      readMovingObstacle(r, mo[i], "world.moving_obstacles[" + std::to_string(i) + "]", s);
   }
   if (world["include"]) {
     const std::string inc = r.text(world["include"], "world.include");
@@ -246,15 +294,55 @@ Scenario parseScenario(const std::string& text, const std::string& file,
              "the physics rate (1/timestep) must be a whole multiple of the control rate");
   }
 
+  // disturbances
+  if (root["disturbances"]) {
+    const YAML::Node n = root["disturbances"];
+    r.checkKeys(n, "disturbances", {"drag", "wind", "gust", "gust_tau", "ground_effect"});
+    DisturbanceSettings& d = s.disturbances;
+    if (n["drag"]) d.drag_coefficient = r.number(n["drag"], "disturbances.drag", 0.0, 100.0);
+    if (n["wind"]) {
+      d.wind = r.vec3(n["wind"], "disturbances.wind");
+      if (d.wind.norm() > 50.0) r.fail(n["wind"], "disturbances.wind", "wind above 50 m/s");
+    }
+    if (n["gust"]) d.gust_sigma = r.number(n["gust"], "disturbances.gust", 0.0, 50.0);
+    if (n["gust_tau"]) d.gust_tau = r.number(n["gust_tau"], "disturbances.gust_tau", 0.01, 1000.0);
+    if (n["ground_effect"]) d.ground_effect = r.boolean(n["ground_effect"], "disturbances.ground_effect");
+  }
+
   // render
   if (root["render"]) {
     const YAML::Node n = root["render"];
-    r.checkKeys(n, "render", {"camera", "width", "height", "fps"});
-    if (n["camera"]) {
-      s.render.camera = r.text(n["camera"], "render.camera");
-      if (s.render.camera != "chase" && s.render.camera != "overview" && s.render.camera != "top")
-        r.fail(n["camera"], "render.camera", "must be chase, overview or top");
+    r.checkKeys(n, "render", {"camera", "cameras", "width", "height", "fps", "speedup", "fixed_camera",
+                              "obstacle_alpha", "png_frames"});
+    const auto cameraName = [&](const YAML::Node& c, const std::string& key) {
+      const std::string name = r.text(c, key);
+      if (name != "chase" && name != "orbit" && name != "top" && name != "overview" && name != "fixed")
+        r.fail(c, key, "must be chase, orbit, top, overview or fixed");
+      return name;
+    };
+    if (n["camera"]) s.render.camera = cameraName(n["camera"], "render.camera");
+    if (n["cameras"]) {
+      if (!n["cameras"].IsSequence()) r.fail(n["cameras"], "render.cameras", "must be a list of camera names");
+      for (std::size_t i = 0; i < n["cameras"].size(); ++i)
+        s.render.cameras.push_back(cameraName(n["cameras"][i], "render.cameras[" + std::to_string(i) + "]"));
     }
+    if (n["fixed_camera"]) {
+      const YAML::Node f = n["fixed_camera"];
+      r.checkKeys(f, "render.fixed_camera", {"pos", "lookat"});
+      if (!f["pos"] || !f["lookat"]) r.fail(f, "render.fixed_camera", "needs 'pos' and 'lookat'");
+      s.render.fixed_pos = r.vec3(f["pos"], "render.fixed_camera.pos");
+      s.render.fixed_lookat = r.vec3(f["lookat"], "render.fixed_camera.lookat");
+      if ((s.render.fixed_pos - s.render.fixed_lookat).norm() < 1e-6)
+        r.fail(f, "render.fixed_camera", "pos and lookat must differ");
+      s.render.has_fixed_camera = true;
+    }
+    bool wants_fixed = s.render.camera == "fixed";
+    for (const auto& c : s.render.cameras) wants_fixed = wants_fixed || c == "fixed";
+    if (wants_fixed && !s.render.has_fixed_camera)
+      r.fail(n, "render", "camera 'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]}");
+    if (n["speedup"]) s.render.speedup = r.number(n["speedup"], "render.speedup", 0.01, 1000.0);
+    if (n["obstacle_alpha"]) s.render.obstacle_alpha = r.number(n["obstacle_alpha"], "render.obstacle_alpha", 0.05, 1.0);
+    if (n["png_frames"]) s.render.png_frames = r.boolean(n["png_frames"], "render.png_frames");
     if (n["width"]) s.render.width = static_cast<int>(r.integer(n["width"], "render.width", 64, 3840));
     if (n["height"]) s.render.height = static_cast<int>(r.integer(n["height"], "render.height", 64, 2160));
     if (n["fps"]) s.render.fps = static_cast<int>(r.integer(n["fps"], "render.fps", 1, 240));

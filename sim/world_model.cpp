@@ -7,6 +7,9 @@
 #include <sstream>
 
 #include "planning/input_error.h"
+#include "sim/ground_vehicle_handles.h"
+#include "sim/moving_obstacle_motion.h"
+#include "sim/urdf_vehicle.h"
 
 namespace cosim {
 
@@ -179,9 +182,11 @@ std::string composeWorldXml(const Scenario& s) {
   XMLElement* actuator = add(doc, mujoco, "actuator");
   for (const VehicleSpec& v : s.vehicles) {
     if (v.ground)
-      throw InputError(v.model_file.string(), "", "ground robots (URDF) are not supported by this build yet");
-    addVehicle(doc, worldbody, actuator, v);
+      addUrdfVehicle(doc, worldbody, actuator, v, lo.z());
+    else
+      addVehicle(doc, worldbody, actuator, v);
   }
+  addMovingObstacleBodies(doc, worldbody, s);
 
   tinyxml2::XMLPrinter printer;
   doc.Print(&printer);
@@ -219,6 +224,11 @@ WorldModel WorldModel::fromXml(const std::string& xml, const Scenario& scenario)
     const std::string p = v.name + "/";
     const std::string file = v.model_file.string();
     h.body = mj_name2id(m, mjOBJ_BODY, (p + "base").c_str());
+    if (v.ground) {
+      readGroundVehicleHandles(m, v, h);
+      wm.vehicles_.push_back(std::move(h));
+      continue;  // the quadrotor conventions below do not apply
+    }
     const int joint = mj_name2id(m, mjOBJ_JOINT, (p + "root").c_str());
     if (h.body < 0 || joint < 0 || m->jnt_type[joint] != mjJNT_FREE)
       throw InputError(file, "<body name=\"base\">", "needs a free joint named \"root\"");

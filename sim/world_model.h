@@ -10,6 +10,7 @@
 
 #include "control/quadrotor_params.h"
 #include "sim/scenario.h"
+#include "sim/urdf_vehicle.h"
 
 namespace cosim {
 
@@ -22,6 +23,11 @@ struct VehicleHandles {
   int actuators[4] = {-1, -1, -1, -1};
   std::vector<int> geoms;  // every geom of the vehicle (for contacts)
   QuadrotorParams params;  // read off the model: mass, inertia, rotors, limits, radius
+  // Ground robots (sim/urdf_vehicle.h): actuators[] holds drive_x, drive_y, drive_yaw
+  // (holonomic) or wheel_left, wheel_right (differential); with a planar root, qpos_adr and
+  // qvel_adr point at root_x, root_y, root_yaw; params has mass, radius (horizontal) and gravity.
+  bool ground = false;
+  GroundDrive drive;
 };
 
 class WorldModel {

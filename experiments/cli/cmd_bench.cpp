@@ -2,7 +2,10 @@
 #include <cstdio>
 #include <iostream>
 
+#include "experiments/bench/ant_planners.h"
 #include "experiments/bench/bench_section.h"
+#include "experiments/bench/grid_astar_vs_boost.h"
+#include "experiments/bench/mapf_planners.h"
 #include "experiments/bench/physics_loop.h"
 #include "experiments/bench/trajectory_generation.h"
 #include "experiments/cli/command.h"
@@ -21,6 +24,9 @@ const std::vector<NamedSection>& sections() {
   static const std::vector<NamedSection> list = {
       {"physics_loop", bench::benchPhysicsLoop},
       {"trajectory_generation", bench::benchTrajectoryGeneration},
+      {"mapf_planners", bench::benchMapfPlanners},
+      {"ant_planners", bench::benchAntPlanners},
+      {"grid_astar_vs_boost", bench::benchGridAStarVsBoost},
   };
   return list;
 }

@@ -5,8 +5,7 @@
 
 #include "experiments/cli/command.h"
 #include "planning/input_error.h"
-#include "render/run_renderer.h"
-#include "render/video_encoder.h"
+#include "render/run_outputs.h"
 #include "sim/run_log_io.h"
 #include "sim/world_model.h"
 
@@ -37,47 +36,72 @@ std::string recordedScenarioFile(const std::filesystem::path& dir) {
 void addRenderCommand(CLI::App& app, CommandContext& ctx) {
   auto* cmd = app.add_subcommand(
       "render",
-      "Re-render a logged run from its timeseries.csv and path.csv, without simulating again.\n"
-      "Writes a video (.mp4) or, if --out ends in .png, the last frame.");
+      "Re-render a logged run from its scenario.yaml, timeseries.csv and path.csv, without\n"
+      "simulating again. Writes a video (.mp4), a PNG frame sequence (--frames), or, if --out\n"
+      "ends in .png, one frame (the last, or the one at --at).");
   struct Args {
     std::string dir, camera, out;
+    bool frames = false, quiet = false;
+    double at = -1.0, speedup = 0.0;
+    int width = 0, height = 0, fps = 0;
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("run_dir", a->dir, "folder written by cosim run")->required();
-  cmd->add_option("--camera", a->camera, "chase, overview or top (default: the scenario's)");
-  cmd->add_option("--out", a->out, "output file (default: RUN_DIR/video_<camera>.mp4)");
+  cmd->add_option("--camera", a->camera,
+                  "chase, orbit, top, overview or fixed (fixed needs render.fixed_camera in the "
+                  "scenario; default: the scenario's render.camera)");
+  cmd->add_option("--out", a->out,
+                  "output file (default: RUN_DIR/video_<camera>.mp4, or RUN_DIR/frames_<camera>/ with --frames)");
+  cmd->add_flag("--frames", a->frames, "write PNG frames (00001.png, ...) into a folder instead of a video");
+  cmd->add_option("--at", a->at, "with --out FILE.png: the frame at this simulated time (s)")->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--speedup", a->speedup, "simulated seconds per video second (default: the scenario's)")
+      ->check(CLI::Range(0.01, 1000.0));
+  cmd->add_option("--fps", a->fps, "frames per second (default: the scenario's)")->check(CLI::Range(1, 240));
+  cmd->add_option("--width", a->width, "frame width in pixels, even (default: the scenario's)")->check(CLI::Range(64, 3840));
+  cmd->add_option("--height", a->height, "frame height in pixels, even (default: the scenario's)")->check(CLI::Range(64, 2160));
+  cmd->add_flag("--quiet", a->quiet, "no progress bar");
   cmd->callback([a, &ctx] {
     const std::filesystem::path dir = a->dir;
     const std::string yaml = readText(dir / "scenario.yaml");
     Scenario s = parseScenario(yaml, recordedScenarioFile(dir));
     if (!a->camera.empty()) {
-      if (a->camera != "chase" && a->camera != "overview" && a->camera != "top")
-        throw InputError("command line", "--camera", "must be chase, overview or top");
+      try {
+        cameraKind(a->camera);
+      } catch (const std::invalid_argument&) {
+        throw InputError("command line", "--camera", std::string("must be ") + cameraNames());
+      }
+      if (a->camera == "fixed" && !s.render.has_fixed_camera)
+        throw InputError("command line", "--camera",
+                         "'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]} in the scenario");
       s.render.camera = a->camera;
     }
+    if (a->width) s.render.width = a->width;
+    if (a->height) s.render.height = a->height;
+    if (s.render.width % 2 || s.render.height % 2)
+      throw InputError("command line", "--width/--height", "must be even (H.264, yuv420p)");
+    if (a->fps) s.render.fps = a->fps;
+    if (a->speedup > 0) s.render.speedup = a->speedup;
     RunLog log;
     readPathCsv((dir / "path.csv").string(), log);
     readTimeseriesCsv((dir / "timeseries.csv").string(), log);
-    const WorldModel world = WorldModel::build(s);
+    const WorldModel world = WorldModel::build(s);  // its off-screen buffer fits the frame size
     for (std::size_t v = 0; v < log.vehicles.size() && v < s.vehicles.size(); ++v) {
       log.vehicles[v].goal = s.vehicles[v].goal();
       log.vehicles[v].radius = world.vehicles()[v].params.radius;
     }
     RunRenderer renderer(world, s, log, s.render.width, s.render.height);
-    const std::filesystem::path out =
-        a->out.empty() ? dir / ("video_" + s.render.camera + ".mp4") : std::filesystem::path(a->out);
-    std::vector<std::uint8_t> rgb;
-    if (out.extension() == ".png") {
-      renderer.render(renderer.endTime(), s.render.camera, rgb);
+    const std::string camera = s.render.camera;
+    std::filesystem::path out = a->out;
+    if (out.empty()) out = dir / (a->frames ? "frames_" + camera : "video_" + camera + ".mp4");
+    if (out.extension() == ".png" && !a->frames) {
+      std::vector<std::uint8_t> rgb;
+      renderer.render(a->at >= 0 ? a->at : renderer.endTime(), camera, rgb);
       writePng(out, rgb, renderer.width(), renderer.height());
     } else {
-      VideoEncoder video(out, s.render.width, s.render.height, s.render.fps);
-      const int frames = static_cast<int>(renderer.endTime() * s.render.fps) + 1;
-      for (int k = 0; k < frames; ++k) {
-        renderer.render(k / static_cast<double>(s.render.fps), s.render.camera, rgb);
-        video.addFrame(rgb);
-      }
-      video.finish();
+      const int frames = renderRunVideo(renderer, s.render, camera, out,
+                                        a->frames ? VideoFormat::PngSequence : VideoFormat::Mp4, !a->quiet);
+      std::cout << "frames: " << frames << " at " << s.render.fps << " fps (" << s.render.speedup
+                << "x simulated time)\n";
     }
     std::cout << "rendered: " << out.string() << "\n";
     ctx.status = 0;

@@ -17,5 +17,6 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx);
 void addReproduceCommand(CLI::App& app, CommandContext& ctx);
 void addGridBenchCommand(CLI::App& app, CommandContext& ctx);
 void addMapfCommand(CLI::App& app, CommandContext& ctx);
+void addSweepCommand(CLI::App& app, CommandContext& ctx);
 
 }  // namespace cosim::cli

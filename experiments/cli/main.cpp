@@ -18,6 +18,10 @@ int main(int argc, char** argv) {
   cosim::cli::addPlanCommand(app, ctx);
   cosim::cli::addRenderCommand(app, ctx);
   cosim::cli::addBenchCommand(app, ctx);
+  cosim::cli::addReproduceCommand(app, ctx);
+  cosim::cli::addGridBenchCommand(app, ctx);
+  cosim::cli::addMapfCommand(app, ctx);
+  cosim::cli::addSweepCommand(app, ctx);
 
   try {
     app.parse(argc, argv);

@@ -1,19 +1,17 @@
 #include "experiments/cli/run_pipeline.h"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 
 #include "control/waypoint_reference.h"
+#include "experiments/cli/ground_run_pipeline.h"
 #include "experiments/cli/output_files.h"
 #include "experiments/cli/scenario_planning.h"
 #include "planning/input_error.h"
 #include "planning/trajectory/minimum_snap_trajectory.h"
-#include "render/run_renderer.h"
-#include "render/video_encoder.h"
+#include "render/run_outputs.h"
 #include "sim/controller_factory.h"
 #include "sim/flight_simulation.h"
 #include "sim/json_writer.h"
@@ -27,8 +25,7 @@ namespace {
 
 // A minimum-snap trajectory through the planned path, within the airframe's limits: speed and
 // acceleration from the scenario's trajectory section, thrust from the model (keeping 20 % of
-// the rotors' thrust for control). The trajectory must stay `inflation` clear of obstacles; the
-// planner kept radius + margin clear, so the curve has the margin to swing in.
+// the rotors' thrust for control).
 MinimumSnapResult fitMinimumSnap(const Scenario& s, const VehicleSpec& spec,
                                  const QuadrotorParams& q, const Path& path, ParamSet& p) {
   MinimumSnapOptions o;
@@ -42,7 +39,9 @@ MinimumSnapResult fitMinimumSnap(const Scenario& s, const VehicleSpec& spec,
   o.max_repair_rounds = p.getInt("max_repair_rounds", o.max_repair_rounds, 0, 100);
   p.requireAllUsed("trajectory mode 'minimum_snap'");
   o.validate();
-  return MinimumSnapTrajectory(o).fit(path, s.world, q.radius);
+  // The curve must keep the vehicle's radius plus half the planner's margin clear: the other half
+  // is the budget for tracking error.
+  return MinimumSnapTrajectory(o).fit(path, s.world, q.radius + 0.5 * s.planner_margin);
 }
 
 JsonObject metricsJson(const FlightMetrics& m) {
@@ -67,30 +66,10 @@ void progressLine(bool enabled, const std::string& text) {
   if (enabled) std::cerr << "cosim: " << text << std::endl;
 }
 
-// Renders the video frame by frame at the scenario's frame rate: a 20 s flight is a 20 s video.
-void renderVideo(RunRenderer& renderer, const Scenario& s, const std::filesystem::path& file,
-                 bool progress) {
-  const double duration = renderer.endTime();
-  const int frames = std::max(1, static_cast<int>(std::floor(duration * s.render.fps)) + 1);
-  VideoEncoder video(file, s.render.width, s.render.height, s.render.fps);
-  std::vector<std::uint8_t> rgb;
-  const bool tty = progress && isatty(STDERR_FILENO);
-  for (int k = 0; k < frames; ++k) {
-    renderer.render(k / static_cast<double>(s.render.fps), s.render.camera, rgb);
-    video.addFrame(rgb);
-    if (tty && (k % 10 == 0 || k + 1 == frames)) {
-      const int width = 40, done = width * (k + 1) / frames;
-      std::fprintf(stderr, "\rcosim: rendering [%s%s] %d/%d frames", std::string(done, '#').c_str(),
-                   std::string(width - done, '.').c_str(), k + 1, frames);
-      if (k + 1 == frames) std::fprintf(stderr, "\n");
-    }
-  }
-  video.finish();
-}
-
 }  // namespace
 
 RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
+  if (isGroundRun(scenario)) return executeGroundRun(scenario, request);
   RunSummary summary;
   const WorldModel world = WorldModel::build(scenario);
   const auto& dir = request.out_dir;
@@ -100,8 +79,9 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
   for (std::size_t v = 0; v < scenario.vehicles.size(); ++v) {
     progressLine(request.progress, "planning " + scenario.vehicles[v].name + " with " +
                                        (scenario.planner_name.empty() ? std::string("given waypoints") : scenario.planner_name));
-    plans.push_back(planVehicle(scenario, scenario.vehicles[v], world.vehicles()[v].params.radius,
-                                scenario.planner_params));
+    const double radius = request.plan_as_point_mass ? 0.0 : world.vehicles()[v].params.radius;
+    if (request.plan_as_point_mass) scenario.planner_margin = 0.0;
+    plans.push_back(planVehicle(scenario, scenario.vehicles[v], radius, scenario.planner_params));
   }
 
   // 2. Reference and controller per vehicle.
@@ -239,20 +219,16 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
   writeFileAtomically(dir / "path.csv", pathCsv(log));
   writeFileAtomically(dir / "timeseries.csv", timeseriesCsv(log));
 
-  // 6. Render from the log.
+  // 6. Render from the log: final.png, figures/, the videos, and index.html showing them.
+  RenderedRun rendered;
   if (all_planned && (request.images || request.video)) {
-    RunRenderer renderer(world, scenario, log, scenario.render.width, scenario.render.height);
-    std::vector<std::uint8_t> rgb;
-    if (request.images) {
-      progressLine(request.progress, "rendering final.png");
-      renderer.render(renderer.endTime(), "overview", rgb);
-      writePng(dir / "final.png", rgb, renderer.width(), renderer.height());
-    }
-    if (request.video) {
-      progressLine(request.progress, "rendering video.mp4");
-      renderVideo(renderer, scenario, dir / "video.mp4", request.progress);
-    }
+    RunRenderRequest render_request;
+    render_request.images = request.images;
+    render_request.video = request.video;
+    render_request.progress = request.progress;
+    rendered = renderRunOutputs(world, scenario, log, dir, render_request);
   }
+  writeRunReport(dir, scenario, metrics.str(), summary.status == 0 ? "" : summary.message, rendered);
   // metrics.json last: its presence means the run's files are complete.
   writeFileAtomically(dir / "metrics.json", metrics.str() + "\n");
   return summary;

@@ -17,6 +17,9 @@ struct RunRequest {
   bool images = true;             // final.png
   bool progress = false;          // progress lines on stderr
   const std::atomic<bool>* interrupt = nullptr;
+  // Plan for a point: ignore the vehicle's size and the margin, as seed 003 did (for its
+  // reproduction only; flights planned this way clip obstacles).
+  bool plan_as_point_mass = false;
 };
 
 struct RunSummary {

@@ -31,12 +31,16 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
   result.success = g.success;
   result.message = g.message;
   if (g.success) {
-    // Exact endpoints replace the centres of their cells: both lie in free cells, and the segment
-    // from a point to its own cell's centre stays inside that cell.
+    // The exact endpoints are joined to the centres of their own cells: that short segment stays
+    // inside a free cell, while every segment between centres was checked by the planner (an
+    // any-angle segment from the exact point itself could clip a blocked cell).
     result.path.waypoints.push_back(problem.start);
-    for (std::size_t i = 1; i + 1 < g.cells.size(); ++i)
-      result.path.waypoints.push_back(grid.cellCenter(g.cells[i]));
-    result.path.waypoints.push_back(problem.goal);
+    for (const Cell& c : g.cells) {
+      const Eigen::Vector3d p = grid.cellCenter(c);
+      if ((p - result.path.waypoints.back()).norm() > 1e-9) result.path.waypoints.push_back(p);
+    }
+    if ((problem.goal - result.path.waypoints.back()).norm() > 1e-9)
+      result.path.waypoints.push_back(problem.goal);
     if (problem.planar)
       for (auto& p : result.path.waypoints) p.z() = problem.start.z();
   }

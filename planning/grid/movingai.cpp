@@ -1,5 +1,7 @@
 #include "planning/grid/movingai.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -114,13 +116,20 @@ std::vector<MovingAIScenarioLine> parseMovingAIScenario(const std::string& text,
     std::istringstream in(lines[i]);
     MovingAIScenarioLine s;
     s.line = static_cast<int>(i + 1);
-    std::string extra;
+    std::string extra, optimal;
     if (!(in >> s.bucket >> s.map >> s.width >> s.height >> s.start_x >> s.start_y >> s.goal_x >>
-          s.goal_y >> s.optimal_length) ||
+          s.goal_y >> optimal) ||
         (in >> extra))
       throw InputError(file, lineRef(i),
                        "expected 9 fields: bucket map width height start_x start_y goal_x goal_y "
                        "optimal_length");
+    char* end = nullptr;
+    s.optimal_length = std::strtod(optimal.c_str(), &end);
+    if (end == optimal.c_str() || *end != '\0' || !std::isfinite(s.optimal_length))
+      throw InputError(file, lineRef(i), "optimal_length '" + optimal + "' is not a number");
+    const auto point = optimal.find('.');
+    s.optimal_decimals =
+        point == std::string::npos ? 0 : static_cast<int>(optimal.size() - point - 1);
     if (s.width <= 0 || s.height <= 0 || s.start_x < 0 || s.start_y < 0 || s.goal_x < 0 ||
         s.goal_y < 0 || s.start_x >= s.width || s.goal_x >= s.width || s.start_y >= s.height ||
         s.goal_y >= s.height || s.optimal_length < 0)
@@ -128,6 +137,12 @@ std::vector<MovingAIScenarioLine> parseMovingAIScenario(const std::string& text,
     out.push_back(s);
   }
   return out;
+}
+
+bool matchesOptimalLength(const MovingAIScenarioLine& line, double length) {
+  const double relative = 1e-4 * std::max(1.0, line.optimal_length);
+  const double printed = 0.5 * std::pow(10.0, -line.optimal_decimals) + 1e-12;
+  return std::abs(length - line.optimal_length) <= std::max(relative, printed);
 }
 
 }  // namespace cosim

@@ -21,7 +21,14 @@ struct MovingAIScenarioLine {
   int width = 0, height = 0;
   int start_x = 0, start_y = 0, goal_x = 0, goal_y = 0;  // x = column, y = row
   double optimal_length = 0.0;
+  // Digits after the decimal point in the file's optimal_length (8 in current files, 2 in the
+  // older "version 1.0" files): a length agrees with it when it rounds to the printed value.
+  int optimal_decimals = 0;
 };
+
+// True when `length` agrees with the line's optimal length: within 1e-4 relative, or within
+// half a unit of the last printed decimal (the 2-decimal files round their lengths).
+bool matchesOptimalLength(const MovingAIScenarioLine& line, double length);
 
 // Accepts "version 1" (tab-separated) and the older "version 1.0" (space-separated).
 std::vector<MovingAIScenarioLine> readMovingAIScenario(const std::string& path);

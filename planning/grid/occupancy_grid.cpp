@@ -60,6 +60,15 @@ OccupancyGrid OccupancyGrid::fromWorld(const World& world, double cell_size, dou
           if (o.signedDistance(c) <= reach) grid.setBlocked(x, y, z, true);
         }
   }
+  // The floor (the bottom of the bounds) is physical: cells whose centre is closer than
+  // `inflation` to it are blocked, so paths keep the vehicle off the ground. The other faces of
+  // the bounds only delimit the flight area (the grid already ends there).
+  if (!planar)
+    for (int z = 0; z < nz; ++z) {
+      if (grid.cellCenter({0, 0, z}).z() - world.bounds_min.z() >= inflation) break;
+      for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x) grid.setBlocked(x, y, z, true);
+    }
   return grid;
 }
 

@@ -56,6 +56,9 @@ class OccupancyGrid {
   void setBlocked(int x, int y, int z, bool value) { cells_[index(x, y, z)] = value ? 1 : 0; }
   void setBlocked(const Cell& c, bool value) { setBlocked(c.x, c.y, c.z, value); }
   std::size_t blockedCount() const;
+  // The cells as one flat array in index() order, 1 = blocked: for search loops that read
+  // neighbours by index offset without bounds checks.
+  const std::uint8_t* data() const { return cells_.data(); }
 
   Eigen::Vector3d cellCenter(const Cell& c) const {
     return origin_ + cell_size_ * Eigen::Vector3d(c.x + 0.5, c.y + 0.5, c.z + 0.5);
@@ -65,8 +68,9 @@ class OccupancyGrid {
 
   // Voxelises a world. A cell is blocked when any point of it could lie within `inflation` of an
   // obstacle (centre distance <= inflation + half the cell diagonal), so a path through free
-  // cells keeps the vehicle's volume clear of obstacles. planar: a one-layer grid at height
-  // plane_z for ground robots.
+  // cells keeps the vehicle's volume clear of obstacles; cells closer than `inflation` to the
+  // floor (the bottom of the bounds) are blocked too. planar: a one-layer grid at height plane_z
+  // for ground robots.
   static OccupancyGrid fromWorld(const World& world, double cell_size, double inflation,
                                  bool planar = false, double plane_z = 0.0);
 

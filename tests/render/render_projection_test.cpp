@@ -79,3 +79,88 @@ TEST(RenderProjection, PlannedPathPixelsAreWhereThePathProjects) {
   ASSERT_TRUE(renderer.project({19, 19, 0}, corner));
   EXPECT_FALSE(isPlannedOrange(rgb, 640, static_cast<int>(corner.x()), static_cast<int>(corner.y())));
 }
+
+namespace {
+
+// Pixels that differ between two frames (any channel by more than 24).
+std::vector<bool> changedPixels(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+  std::vector<bool> changed(a.size() / 3);
+  for (std::size_t i = 0; i < changed.size(); ++i)
+    for (int c = 0; c < 3; ++c) changed[i] = changed[i] || std::abs(int(a[3 * i + c]) - int(b[3 * i + c])) > 24;
+  return changed;
+}
+
+}  // namespace
+
+TEST(RenderProjection, VehiclePixelsAreWhereTheVehicleProjects) {
+  const Scenario s = scene();
+  const WorldModel world = WorldModel::build(s);
+  // The same frame twice, with the vehicle at A and then far outside the view: the pixels that
+  // change around A's projection are the vehicle (and its marker), centred on the projection.
+  const Eigen::Vector3d A(12, 7, 4.5);
+  std::vector<std::uint8_t> with, without;
+  Eigen::Vector2d px;
+  for (int pass = 0; pass < 2; ++pass) {
+    RunLog log;
+    VehicleLog& v = log.vehicles.emplace_back();
+    v.name = "uav1";
+    v.radius = 0.35;
+    v.goal = s.vehicles[0].goal();
+    v.planned_path = {{3, 3, 2}, {17, 5, 2}};  // start and goal markers away from A
+    LogSample sample;
+    sample.pos = pass == 0 ? A : Eigen::Vector3d(300, 300, -100);
+    v.samples.push_back(sample);
+    RunRenderer renderer(world, s, log, 640, 360);
+    renderer.render(0.0, "overview", pass == 0 ? with : without, /*annotate=*/false);
+    if (pass == 0) {
+      ASSERT_TRUE(renderer.project(A, px));
+    }
+  }
+  const std::vector<bool> changed = changedPixels(with, without);
+
+  // The changed pixels within 20 px of the projection (the vehicle and its marker are ~16 px
+  // across here; its shadow on the floor falls ~35 px below).
+  double sx = 0, sy = 0;
+  int n = 0;
+  for (int y = 0; y < 360; ++y)
+    for (int x = 0; x < 640; ++x)
+      if (changed[static_cast<std::size_t>(y) * 640 + x] && std::hypot(x + 0.5 - px.x(), y + 0.5 - px.y()) < 20) {
+        sx += x + 0.5;
+        sy += y + 0.5;
+        ++n;
+      }
+  ASSERT_GT(n, 20) << "no vehicle near its projection at " << px.transpose();
+  EXPECT_NEAR(sx / n, px.x(), 3.0);
+  EXPECT_NEAR(sy / n, px.y(), 3.0);
+  // And the pixel at the projection itself changed.
+  EXPECT_TRUE(changed[static_cast<std::size_t>(std::lround(px.y())) * 640 + static_cast<std::size_t>(std::lround(px.x()))]);
+}
+
+TEST(RenderProjection, ChaseCameraKeepsTheVehicleAtTheFrameCentre) {
+  const Scenario s = scene();
+  const WorldModel world = WorldModel::build(s);
+  RunLog log;
+  VehicleLog& v = log.vehicles.emplace_back();
+  v.name = "uav1";
+  v.radius = 0.35;
+  v.goal = s.vehicles[0].goal();
+  for (int k = 0; k <= 300; ++k) {
+    LogSample sample;
+    sample.t = k / 100.0;
+    sample.pos = Eigen::Vector3d(3, 3, 2) + sample.t * Eigen::Vector3d(3, 1, 0.2);
+    v.samples.push_back(sample);
+  }
+  RunRenderer renderer(world, s, log, 320, 180);
+  std::vector<std::uint8_t> rgb;
+  for (double t : {0.5, 2.0, 3.0}) {
+    renderer.render(t, "chase", rgb, false);
+    Eigen::Vector2d px;
+    ASSERT_TRUE(renderer.project(v.samples[static_cast<std::size_t>(t * 100)].pos, px));
+    EXPECT_NEAR(px.x(), 160.0, 1.0) << "t = " << t;
+    EXPECT_NEAR(px.y(), 90.0, 1.0) << "t = " << t;
+    // The camera is behind the vehicle: a point 2 m ahead along its motion is farther up the
+    // screen, not behind the camera.
+    ASSERT_TRUE(renderer.project(v.samples[static_cast<std::size_t>(t * 100)].pos + 2.0 * Eigen::Vector3d(3, 1, 0).normalized(), px));
+    EXPECT_LT(px.y(), 90.0);
+  }
+}

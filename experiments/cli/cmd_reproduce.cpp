@@ -1,0 +1,100 @@
+// cosim reproduce NAME: re-runs one of the seed documents' experiments and writes a markdown
+// table with the seed's published numbers beside ours.
+#include <iostream>
+
+#include "experiments/cli/command.h"
+#include "experiments/cli/output_files.h"
+#include "experiments/reproduce/reproduction.h"
+#include "planning/input_error.h"
+
+namespace cosim::reproduce {
+// One declaration per reproduction (each defined in experiments/reproduce/<name>.cpp).
+std::string seed003Discrete(const Options& options);
+std::string seed003Sampling(const Options& options);
+std::string seed002AntVsGa(const Options& options);
+std::string seed002Maklink(const Options& options);
+std::string seed004Planners(const Options& options);
+std::string seed004WhcaWindow(const Options& options);
+std::string seed004MapfScaling(const Options& options);
+std::string seed000Msac(const Options& options);
+std::string seed000Sacodm(const Options& options);
+std::string seed000Rna(const Options& options);
+std::string seed003Flight(const Options& options);
+}  // namespace cosim::reproduce
+
+namespace cosim::cli {
+
+namespace {
+// The reproductions, by name.
+const std::vector<reproduce::Entry>& reproductions() {
+  static const std::vector<reproduce::Entry> entries = {
+      {"seed003-flight", "seed 003 Sec. 4.2: Theta* and RRT*FN paths on map 3 flown four ways in MuJoCo",
+       reproduce::seed003Flight},
+      {"seed000-msac", "seed 000 Tabs. 6.1-6.7: MSAC tabu tables, post-processing, ants, MAX",
+       reproduce::seed000Msac},
+      {"seed000-sacodm", "seed 000 Tabs. 6.8-6.16, Fig. 6.5: SACO vs SACOdm, gamma, AS/EAS, ants",
+       reproduce::seed000Sacodm},
+      {"seed000-rna", "seed 000 Figs. 6.6-6.9: RNA, WF-RNA vs D* Lite, sight, moving obstacles",
+       reproduce::seed000Rna},
+      {"seed004-planners", "seed 004 §6.3: LRA* vs CA* vs WHCA* (and CBS) on maze, open, bottleneck",
+       reproduce::seed004Planners},
+      {"seed004-whca-window", "seed 004 §6.3: WHCA* over window sizes, fixed vs dynamic priorities",
+       reproduce::seed004WhcaWindow},
+      {"seed004-mapf-scaling", "WHCA* and CBS success and SOC vs agents on the MAPF benchmarks",
+       reproduce::seed004MapfScaling},
+      {"seed003-sampling", "seed 003 Tabs. 4-17: RRT vs RRT* vs RRT*FN, 2D and 3D maps, sets 1-4",
+       reproduce::seed003Sampling},
+      {"seed003-discrete", "seed 003 Tabs. 1-4: A* vs Basic Theta* vs Lazy Theta*, 2D and 3D maps",
+       reproduce::seed003Discrete},
+      {"seed002-ant-vs-ga", "seed 002 part A: grid ant algorithm vs GA on three workspaces",
+       reproduce::seed002AntVsGa},
+      {"seed002-maklink", "seed 002 part B: MAKLINK graph, Dijkstra, ACS offsets vs real-coded GA",
+       reproduce::seed002Maklink},
+  };
+  return entries;
+}
+}  // namespace
+
+void addReproduceCommand(CLI::App& app, CommandContext& ctx) {
+  auto* cmd = app.add_subcommand("reproduce",
+                                 "Re-run an experiment of the seed theses; writes NAME.md with the "
+                                 "seed's numbers beside ours");
+  struct Args {
+    std::string name, out;
+    int runs = 0;
+    std::uint64_t seed = 1;
+    bool quick = false, list = false;
+  };
+  auto args = std::make_shared<Args>();
+  cmd->add_option("name", args->name, "which experiment (see --list)");
+  cmd->add_option("--runs", args->runs, "repetitions per configuration (default: the seed's)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--seed", args->seed, "base random seed (run i uses seed + i)");
+  cmd->add_option("--out", args->out, "output folder (default: a new folder under out/)");
+  cmd->add_flag("--quick", args->quick, "a small version, for smoke tests");
+  cmd->add_flag("--list", args->list, "list the available experiments");
+  cmd->callback([args, &ctx] {
+    if (args->list || args->name.empty()) {
+      for (const auto& e : reproductions()) std::cout << e.name << "\t" << e.description << "\n";
+      if (!args->list) throw InputError("command line", "reproduce", "name an experiment");
+      return;
+    }
+    for (const auto& e : reproductions()) {
+      if (args->name != e.name) continue;
+      reproduce::Options opt;
+      opt.runs = args->runs;
+      opt.seed = args->seed;
+      opt.quick = args->quick;
+      opt.out_dir = prepareOutputDir(args->out, args->name).string();
+      const std::string report = e.run(opt);
+      writeFileAtomically(std::filesystem::path(opt.out_dir) / (args->name + ".md"), report);
+      std::cout << report << "\nwritten: " << opt.out_dir << "/" << args->name << ".md\n";
+      ctx.status = 0;
+      return;
+    }
+    throw InputError("command line", "reproduce", "unknown experiment '" + args->name +
+                                                      "' (see cosim reproduce --list)");
+  });
+}
+
+}  // namespace cosim::cli

@@ -1,0 +1,539 @@
+#include "experiments/cli/ground_run_pipeline.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <memory>
+
+#include "control/ground_feedback_linearization.h"
+#include "control/ground_velocity_tracker.h"
+#include "experiments/cli/output_files.h"
+#include "experiments/cli/scenario_planning.h"
+#include "planning/input_error.h"
+#include "planning/mapf/mapf_planner_registry.h"
+#include "planning/mapf/solution_validator.h"
+#include "planning/mapf/timed_paths.h"
+#include "planning/navigation/d_star_lite.h"
+#include "planning/navigation/robot_navigation_ant.h"
+#include "render/run_renderer.h"
+#include "render/video_encoder.h"
+#include "sim/flight_metrics.h"
+#include "sim/ground_simulation.h"
+#include "sim/json_writer.h"
+#include "sim/moving_obstacle_motion.h"
+#include "sim/run_log_io.h"
+#include "sim/world_model.h"
+
+namespace cosim {
+
+namespace {
+
+// Robots settle on their wheels before the plan's clock starts.
+constexpr double kSettleTime = 0.2;  // s
+
+bool isNavigatorName(const std::string& name) {
+  return name == "rna" || name == "wf_rna" || name == "d_star_lite";
+}
+
+bool isMapfPlannerName(const std::string& name) {
+  for (const auto& e : mapfPlanners())
+    if (e.name == name) return true;
+  return false;
+}
+
+Eigen::Vector2d xy(const Eigen::Vector3d& p) { return p.head<2>(); }
+Eigen::Vector3d onFloor(const Eigen::Vector2d& p) { return {p.x(), p.y(), 0.0}; }
+
+// What the planning stage hands the simulation.
+struct GroundPlan {
+  bool success = false;
+  std::string message;
+  std::vector<GroundTimedPath> paths;  // one per robot
+  double time_ms = 0.0;
+  double inflation = 0.0;
+  std::map<std::string, double> counters;
+  std::map<std::string, std::string> params;
+};
+
+// The speed the plan is timed at: trajectory.max_speed, by default 80 % of the slowest robot's
+// top speed (the rest is headroom for the feedback that corrects tracking errors).
+double cruiseSpeed(Scenario& s, const WorldModel& world) {
+  double slowest = std::numeric_limits<double>::infinity();
+  for (const auto& v : world.vehicles()) slowest = std::min(slowest, v.drive.max_speed);
+  ParamSet p = s.trajectory_params;
+  const double speed = p.getDouble("max_speed", 0.8 * slowest, 1e-3, 100.0);
+  p.requireAllUsed("trajectory (ground robots: max_speed only)");
+  if (speed > slowest)
+    throw InputError(s.file, "trajectory.max_speed",
+                     "faster than the slowest robot's top speed (" + std::to_string(slowest) + " m/s)");
+  return speed;
+}
+
+double largestRadius(const WorldModel& world) {
+  double r = 0.0;
+  for (const auto& v : world.vehicles()) r = std::max(r, v.params.radius);
+  return r;
+}
+
+OccupancyGrid planarGrid(const Scenario& s, double resolution, double inflation) {
+  // The grid's layer sits 0.1 m above the floor, at the height of a small robot's body.
+  return OccupancyGrid::fromWorld(s.world, resolution, inflation, true, s.world.bounds_min.z() + 0.1);
+}
+
+// Team plan: a multi-robot planner on the planar grid, executed one grid step per step_time.
+GroundPlan planTeam(Scenario& s, const WorldModel& world, double speed) {
+  GroundPlan plan;
+  ParamSet p = s.planner_params;
+  const double resolution = p.getDouble("resolution", 0.5, 0.01, 100.0);
+  const int connectivity = p.getInt("connectivity", 4, 4, 8);
+  const double time_limit = p.getDouble("time_limit", 30.0, 0.001, 86400.0);
+  if (connectivity != 4 && connectivity != 8)
+    throw InputError(s.file, "planner.connectivity", "must be 4 or 8");
+  plan.inflation = largestRadius(world) + s.planner_margin;
+  MapfInstance instance;
+  instance.grid = planarGrid(s, resolution, plan.inflation);
+  instance.connectivity = connectivity;
+  for (const VehicleSpec& v : s.vehicles) {
+    if (v.waypoints.size() != 1)
+      throw InputError(s.file, "vehicles", "a team plan takes one goal per robot ('" + v.name + "' has waypoints)");
+    instance.starts.push_back(instance.grid.cellOf(v.start));
+    instance.goals.push_back(instance.grid.cellOf(v.goal()));
+  }
+  checkMapfInstance(instance, s.file);
+  auto planner = makeMapfPlanner(s.planner_name, p, "planner.name");
+  for (const auto& [k, v] : p.effective()) plan.params[k] = v;
+  MapfQuery query;
+  query.instance = &instance;
+  query.time_limit_s = time_limit;
+  query.seed = s.sim.seed;
+  const MapfResult r = planner->solve(query);
+  plan.time_ms = r.time_ms;
+  plan.counters = r.counters;
+  const MapfValidation check = validateMapfSolution(instance, r.paths);
+  plan.counters["conflicts"] = static_cast<double>(check.conflicts.size());
+  if (!r.success || !check.valid()) {
+    plan.message = r.success ? "the team plan failed validation (" + std::to_string(check.conflicts.size()) +
+                                   " conflicts)"
+                             : "no team plan: " + r.message;
+    return plan;
+  }
+  plan.counters["sum_of_costs"] = static_cast<double>(sumOfCosts(r.paths));
+  plan.counters["makespan"] = makespan(r.paths);
+  // Every step takes the same time (seed 004 §3.6); a diagonal one is the longest.
+  const double step_time = resolution * (connectivity == 8 ? std::sqrt(2.0) : 1.0) / speed;
+  plan.counters["step_time_s"] = step_time;
+  const auto timed = timedMetricPaths(instance.grid, r.paths, step_time, 0.0);
+  for (std::size_t i = 0; i < timed.size(); ++i) {
+    GroundTimedPath path;
+    const VehicleSpec& v = s.vehicles[i];
+    for (std::size_t k = 0; k < timed[i].size(); ++k)
+      // The robot starts where it stands (inside its start cell), not at the cell's centre.
+      path.append(kSettleTime + timed[i][k].t, k == 0 ? xy(v.start) : xy(timed[i][k].position));
+    // ... and ends on its goal, inside its goal cell, one step after reaching the centre.
+    if ((xy(v.goal()) - path.points().back()).norm() > 1e-3) path.append(path.endTime() + step_time, xy(v.goal()));
+    plan.paths.push_back(std::move(path));
+  }
+  plan.success = true;
+  return plan;
+}
+
+// One robot per single-agent plan (or the given waypoints), timed at the cruise speed.
+GroundPlan planEach(Scenario& s, const WorldModel& world, double speed) {
+  GroundPlan plan;
+  for (std::size_t v = 0; v < s.vehicles.size(); ++v) {
+    const VehiclePlan p = planVehicle(s, s.vehicles[v], world.vehicles()[v].params.radius, s.planner_params);
+    plan.time_ms += p.time_ms;
+    for (const auto& [k, c] : p.counters) plan.counters[k] += c;
+    plan.params = p.params;
+    plan.inflation = p.inflation;
+    if (!p.success) {
+      plan.message = "no path found for " + s.vehicles[v].name + ": " + p.message;
+      return plan;
+    }
+    std::vector<Eigen::Vector2d> points;
+    for (const auto& w : p.path.waypoints) points.push_back(xy(w));
+    plan.paths.push_back(GroundTimedPath::atConstantSpeed(points, speed, kSettleTime));
+  }
+  plan.success = true;
+  return plan;
+}
+
+std::unique_ptr<Navigator> makeNavigator(const std::string& name, ParamSet& p) {
+  // The navigators' main parameter; their other parameters keep their defaults here.
+  const int sight = p.getInt("sight", 10, 1, 1000);
+  if (name == "d_star_lite") {
+    DStarLiteParams d;
+    d.sight = sight;
+    return std::make_unique<DStarLite>(d);
+  }
+  RnaParams r;
+  r.sight = sight;
+  r.wave_front = name == "wf_rna";
+  return std::make_unique<RobotNavigationAnt>(r);
+}
+
+// Drives one robot with a navigator: whenever the robot's commanded step is over, it asks the
+// navigator for the next cell (from the robot's measured cell) and extends the timed path by one
+// step. Navigation time runs in robot steps: one cell per `tau` seconds (seed 000 §4.2.3).
+class NavigationDriver {
+ public:
+  NavigationDriver(std::unique_ptr<Navigator> navigator, NavigationWorld world, const std::string& file,
+                   const VehicleSpec& v, double tau, GroundTimedPath& path)
+      : navigator_(std::move(navigator)), world_(std::move(world)), goal_(v.goal()), tau_(tau), path_(path) {
+    const OccupancyGrid& g = world_.grid();
+    commanded_ = g.cellOf({v.start.x(), v.start.y(), g.origin().z() + 0.5 * g.cellSize()});
+    goal_cell_ = g.cellOf({goal_.x(), goal_.y(), g.origin().z() + 0.5 * g.cellSize()});
+    if (g.blocked(commanded_) || g.blocked(goal_cell_))
+      throw InputError(file, "vehicles", "'" + v.name + "': start or goal lies in a blocked cell of the navigation grid");
+    navigator_->reset(world_, commanded_, goal_cell_, 1);
+    path_.append(0.0, xy(v.start));
+    path_.append(kSettleTime, xy(v.start));
+    executed_.push_back(onFloor(xy(v.start)));
+  }
+
+  // before_control: false when the navigator gives up.
+  bool update(double t, const PlanarState& s) {
+    if (done_ || t + 1e-9 < path_.endTime()) return true;
+    const OccupancyGrid& g = world_.grid();
+    Cell at = g.cellOf({s.position.x(), s.position.y(), g.origin().z() + 0.5 * g.cellSize()});
+    if (g.blocked(at)) at = commanded_;
+    if (at == goal_cell_) {
+      path_.append(t + tau_, xy(goal_));
+      executed_.push_back(onFloor(xy(goal_)));
+      done_ = true;
+      return true;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const NavigationDecision d = navigator_->decide(at, navigationTime(t));
+    plan_ms_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    ++decisions_;
+    replans_ += d.replans;
+    if (d.give_up) {
+      message_ = d.note;
+      return false;
+    }
+    const bool wait = d.next == at;
+    waits_ += wait ? 1 : 0;
+    const bool diagonal = d.next.x != at.x && d.next.y != at.y;
+    path_.append(t + tau_ * (diagonal ? std::sqrt(2.0) : 1.0), xy(g.cellCenter(d.next)));
+    if (!wait) executed_.push_back(onFloor(xy(g.cellCenter(d.next))));
+    commanded_ = d.next;
+    return true;
+  }
+
+  double navigationTime(double t) const { return std::max(0.0, t - kSettleTime) / tau_; }
+  Eigen::Vector2d obstacle(std::size_t i, double t) const { return xy(world_.obstacleCentre(i, navigationTime(t))); }
+  const std::vector<Eigen::Vector3d>& executed() const { return executed_; }
+  std::map<std::string, double> counters() const {
+    return {{"decisions", decisions_}, {"waits", waits_}, {"replans", replans_},
+            {"mean_plan_ms", decisions_ ? plan_ms_ / decisions_ : 0.0}};
+  }
+  const std::string& message() const { return message_; }
+
+ private:
+  std::unique_ptr<Navigator> navigator_;
+  NavigationWorld world_;
+  Eigen::Vector3d goal_;
+  double tau_;
+  GroundTimedPath& path_;
+  Cell commanded_, goal_cell_;
+  bool done_ = false;
+  double decisions_ = 0, waits_ = 0, replans_ = 0, plan_ms_ = 0.0;
+  std::vector<Eigen::Vector3d> executed_;
+  std::string message_;
+};
+
+// The navigator's world: the static map as a planar grid, the moving obstacles with their path
+// points snapped to cell centres (the navigator's obstacles live on the grid; the physical ones
+// then follow the very same trajectories), speeds in cells per robot step.
+NavigationWorld navigationWorld(Scenario& s, const WorldModel& world, double resolution, double speed,
+                                double& inflation) {
+  const double robot = world.vehicles().front().params.radius;
+  inflation = robot + s.planner_margin;
+  OccupancyGrid grid = planarGrid(s, resolution, inflation);
+  std::vector<MovingObstacle> obstacles;
+  for (std::size_t i = 0; i < s.moving_obstacles.size(); ++i) {
+    const MovingObstacleSpec& o = s.moving_obstacles[i];
+    // Two one-cell squares that do not overlap keep their centres a cell apart, so the bodies
+    // cannot touch when they fit in a cell together.
+    if (movingObstacleFootprintRadius(o) + robot >= resolution)
+      throw InputError(s.file, "world.moving_obstacles[" + std::to_string(i) + "]",
+                       "footprint radius + robot radius (" + std::to_string(robot) +
+                           " m) must be below the navigation grid's resolution (" + std::to_string(resolution) + " m)");
+    std::vector<Cell> cells;
+    for (const auto& p : o.path) cells.push_back(grid.cellOf({p.x(), p.y(), grid.origin().z() + 0.5 * resolution}));
+    obstacles.emplace_back(cells, o.speed / speed,
+                           o.loop ? MovingObstacle::Mode::Loop : MovingObstacle::Mode::BackAndForth);
+  }
+  return NavigationWorld(std::move(grid), std::move(obstacles));
+}
+
+std::unique_ptr<GroundController> makeGroundController(ParamSet& gains, const VehicleHandles& h) {
+  GroundMotionLimits limits;
+  limits.max_speed = h.drive.max_speed;
+  limits.max_yaw_rate = h.drive.max_yaw_rate;
+  limits.max_acceleration = gains.getDouble("max_acceleration", 1.0, 1e-3, 100.0);
+  limits.max_yaw_acceleration = gains.getDouble("max_yaw_acceleration", 4.0, 1e-3, 1000.0);
+  if (h.drive.kind == GroundDrive::Kind::Holonomic) {
+    GroundVelocityTrackerGains g;
+    g.k_position = gains.getDouble("k_position", g.k_position, 1e-3, 100.0);
+    g.k_yaw = gains.getDouble("k_yaw", g.k_yaw, 1e-3, 100.0);
+    return std::make_unique<GroundVelocityTracker>(limits, g);
+  }
+  GroundFeedbackLinearizationParams p;
+  p.b = gains.getDouble("b", p.b, 1e-3, 10.0);
+  p.k = gains.getDouble("k", p.k, 1e-3, 100.0);
+  p.wheel_separation = h.drive.wheel_separation;
+  return std::make_unique<GroundFeedbackLinearization>(limits, p);
+}
+
+void renderGroundVideo(RunRenderer& renderer, const Scenario& s, const std::filesystem::path& file) {
+  const int frames = std::max(1, static_cast<int>(std::floor(renderer.endTime() * s.render.fps)) + 1);
+  VideoEncoder video(file, s.render.width, s.render.height, s.render.fps);
+  std::vector<std::uint8_t> rgb;
+  for (int k = 0; k < frames; ++k) {
+    renderer.render(k / static_cast<double>(s.render.fps), s.render.camera, rgb);
+    video.addFrame(rgb);
+  }
+  video.finish();
+}
+
+// Team figures from the log: contacts by kind, closest approaches, deviation, arrivals.
+struct TeamMetrics {
+  int robot_contacts = 0, obstacle_contacts = 0, moving_obstacle_contacts = 0;
+  double min_robot_distance_m = std::numeric_limits<double>::infinity();  // surface to surface
+  double min_moving_obstacle_distance_m = std::numeric_limits<double>::infinity();
+};
+
+TeamMetrics teamMetrics(const RunLog& log) {
+  TeamMetrics t;
+  for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
+    for (const ContactEvent& c : log.vehicles[v].collisions) {
+      bool robot = false;
+      for (std::size_t w = 0; w < log.vehicles.size(); ++w)
+        if (w != v && c.other.rfind(log.vehicles[w].name + "/", 0) == 0) {
+          robot = true;
+          t.robot_contacts += w > v ? 1 : 0;  // each touching pair is booked by both robots
+        }
+      if (robot) continue;
+      if (c.other.rfind("moving", 0) == 0)
+        ++t.moving_obstacle_contacts;
+      else
+        ++t.obstacle_contacts;
+    }
+  }
+  // Samples are logged at the same instants for every robot and obstacle.
+  for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
+    const auto& a = log.vehicles[v];
+    for (std::size_t k = 0; k < a.samples.size(); ++k) {
+      for (std::size_t w = v + 1; w < log.vehicles.size(); ++w) {
+        const auto& b = log.vehicles[w];
+        if (k < b.samples.size())
+          t.min_robot_distance_m = std::min(t.min_robot_distance_m,
+                                            (a.samples[k].pos - b.samples[k].pos).head<2>().norm() - a.radius - b.radius);
+      }
+      for (const auto& o : log.moving_obstacles)
+        if (k < o.pos.size())
+          t.min_moving_obstacle_distance_m = std::min(
+              t.min_moving_obstacle_distance_m, (a.samples[k].pos - o.pos[k]).head<2>().norm() - a.radius - o.radius);
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+bool isGroundRun(const Scenario& s) {
+  if (!s.moving_obstacles.empty()) return true;
+  return std::any_of(s.vehicles.begin(), s.vehicles.end(), [](const VehicleSpec& v) { return v.ground; });
+}
+
+RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
+  for (const VehicleSpec& v : scenario.vehicles)
+    if (!v.ground)
+      throw InputError(scenario.file, "vehicles",
+                       "'" + v.name + "' is a quadrotor: ground robots and moving obstacles run only with "
+                                      "ground robots (omni_base, diff_drive or a URDF)");
+  RunSummary summary;
+  const WorldModel world = WorldModel::build(scenario);
+  const double speed = cruiseSpeed(scenario, world);
+  const std::string& name = scenario.planner_name;
+
+  // 1. Plan.
+  GroundPlan plan;
+  std::unique_ptr<NavigationDriver> driver;
+  if (isNavigatorName(name)) {
+    if (scenario.vehicles.size() != 1)
+      throw InputError(scenario.file, "planner.name", "navigators (" + name + ") drive one robot");
+    ParamSet p = scenario.planner_params;
+    const double resolution = p.getDouble("resolution", 0.5, 0.01, 100.0);
+    auto navigator = makeNavigator(name, p);
+    p.requireAllUsed("planner '" + name + "' (in cosim run: resolution and sight)");
+    plan.params = p.effective();
+    NavigationWorld nav = navigationWorld(scenario, world, resolution, speed, plan.inflation);
+    plan.paths.resize(1);
+    driver = std::make_unique<NavigationDriver>(std::move(navigator), std::move(nav), scenario.file, scenario.vehicles[0],
+                                                resolution / speed, plan.paths[0]);
+    plan.success = true;
+  } else if (isMapfPlannerName(name)) {
+    plan = planTeam(scenario, world, speed);
+  } else {
+    plan = planEach(scenario, world, speed);
+  }
+
+  // 2. Controllers, and 3. drive.
+  std::vector<std::unique_ptr<GroundController>> controllers;
+  std::vector<GroundPilot> pilots;
+  RunLog log;
+  if (plan.success) {
+    for (std::size_t v = 0; v < scenario.vehicles.size(); ++v) {
+      ParamSet gains = scenario.controller_gains;
+      controllers.push_back(makeGroundController(gains, world.vehicles()[v]));
+      gains.requireAllUsed("controller.gains (ground robots)");
+      GroundPilot pilot;
+      pilot.controller = controllers.back().get();
+      pilot.path = &plan.paths[v];
+      pilot.yaw = scenario.vehicles[v].yaw_deg * M_PI / 180.0;
+      pilot.goal = onFloor(xy(scenario.vehicles[v].goal()));
+      for (const auto& p : plan.paths[v].points()) pilot.planned_path.push_back(onFloor(p));
+      pilots.push_back(pilot);
+    }
+    GroundSimOptions options;
+    options.settings = scenario.sim;
+    options.interrupt = request.interrupt;
+    if (driver) {
+      options.before_control = [&driver](double t, const std::vector<PlanarState>& s) { return driver->update(t, s[0]); };
+      options.obstacle_position = [&driver](std::size_t i, double t) { return driver->obstacle(i, t); };
+    }
+    if (request.progress) std::cerr << "cosim: driving " << pilots.size() << " ground robot(s)" << std::endl;
+    log = simulateGround(world, scenario, pilots, options);
+    if (driver) {
+      log.vehicles[0].planned_path = driver->executed();
+      plan.counters = driver->counters();
+    }
+  } else {
+    for (const VehicleSpec& v : scenario.vehicles) {
+      VehicleLog& vl = log.vehicles.emplace_back();
+      vl.name = v.name;
+      vl.goal = v.goal();
+    }
+    log.end_reason = "no_path";
+  }
+  if (log.end_reason == "interrupted") {
+    summary.status = 1;
+    summary.message = "interrupted";
+    return summary;
+  }
+
+  // 4. Evaluate, from the log.
+  summary.sim_speed_x = log.wall_time > 0 ? log.sim_time / log.wall_time : 0.0;
+  const TeamMetrics team = teamMetrics(log);
+  bool reached = true;
+  int collisions = team.robot_contacts + team.obstacle_contacts + team.moving_obstacle_contacts;
+  double planned = 0, flown = 0, sum_sq = 0, max_error = 0, clearance = std::numeric_limits<double>::infinity();
+  double makespan_s = 0.0, sum_arrivals = 0.0, planned_makespan = 0.0;
+  std::size_t samples = 0;
+  std::vector<JsonObject> per_vehicle;
+  for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
+    const FlightMetrics m = computeFlightMetrics(log.vehicles[v], scenario.world, true);
+    summary.metrics.push_back(m);
+    reached = reached && m.reached_goal;
+    planned += m.planned_length_m;
+    flown += m.flown_length_m;
+    const std::size_t n = log.vehicles[v].samples.size();
+    sum_sq += m.rmse_m * m.rmse_m * static_cast<double>(n);
+    samples += n;
+    max_error = std::max(max_error, m.max_error_m);
+    clearance = std::min(clearance, m.min_clearance_m);
+    const double arrival = log.vehicles[v].arrival_time;
+    makespan_s = std::max(makespan_s, arrival);
+    sum_arrivals += std::max(arrival, 0.0);
+    if (plan.success) planned_makespan = std::max(planned_makespan, plan.paths[v].endTime());
+    JsonObject j;
+    j.add("name", log.vehicles[v].name)
+        .add("model", scenario.vehicles[v].model)
+        .add("reached_goal", m.reached_goal)
+        .add("arrival_time_s", arrival)
+        .add("planned_arrival_s", plan.success ? plan.paths[v].endTime() : -1.0)
+        .add("contacts", m.collisions)
+        .add("planned_length_m", m.planned_length_m)
+        .add("flown_length_m", m.flown_length_m)
+        .add("rmse_m", m.rmse_m)
+        .add("max_error_m", m.max_error_m)
+        .add("min_clearance_m", m.min_clearance_m)
+        .add("max_speed_mps", m.max_speed_mps)
+        .add("radius_m", log.vehicles[v].radius);
+    per_vehicle.push_back(j);
+  }
+  const bool ok = plan.success && log.end_reason == "goal" && reached && collisions == 0;
+  summary.status = ok ? 0 : 1;
+  if (!plan.success)
+    summary.message = plan.message;
+  else if (log.end_reason == "gave_up")
+    summary.message = "the navigator gave up" + (driver && !driver->message().empty() ? ": " + driver->message() : "");
+  else if (log.end_reason == "diverged")
+    summary.message = "the simulation diverged (NaN state)";
+  else if (!reached)
+    summary.message = "goal not reached within sim.max_time";
+  else if (collisions > 0)
+    summary.message = "collision";
+
+  // 5. Files.
+  JsonObject metrics;
+  metrics.add("reached_goal", reached && plan.success)
+      .add("collisions", collisions)
+      .add("planner", name.empty() ? std::string("waypoints") : name)
+      .add("planning_time_ms", plan.time_ms)
+      .add("planned_length_m", planned)
+      .add("flown_length_m", flown)
+      .add("flight_time_s", makespan_s)
+      .add("rmse_m", samples ? std::sqrt(sum_sq / static_cast<double>(samples)) : 0.0)
+      .add("max_error_m", max_error)
+      .add("min_clearance_m", clearance)
+      .add("sim_speed_x", summary.sim_speed_x)
+      .add("error_reference", "timed_plan")
+      .add("robots", static_cast<int>(log.vehicles.size()))
+      .add("robot_contacts", team.robot_contacts)
+      .add("obstacle_contacts", team.obstacle_contacts)
+      .add("moving_obstacle_contacts", team.moving_obstacle_contacts)
+      .add("moving_obstacles", static_cast<int>(scenario.moving_obstacles.size()))
+      .add("min_robot_distance_m", team.min_robot_distance_m)
+      .add("min_moving_obstacle_distance_m", team.min_moving_obstacle_distance_m)
+      .add("planned_makespan_s", planned_makespan)
+      .add("executed_makespan_s", makespan_s)
+      .add("sum_of_arrival_times_s", sum_arrivals)
+      .add("cruise_speed_mps", speed)
+      .add("inflation_m", plan.inflation)
+      .add("seed", static_cast<long>(scenario.sim.seed))
+      .add("sim_time_s", log.sim_time)
+      .add("wall_time_s", log.wall_time)
+      .add("end_reason", log.end_reason)
+      .add("mujoco_warnings", log.mujoco_warnings)
+      .add("status", summary.status)
+      .add("message", summary.message)
+      .add("planner_counters", plan.counters)
+      .add("planner_params", plan.params);
+  metrics.addArray("vehicles", per_vehicle);
+
+  const auto& dir = request.out_dir;
+  writeFileAtomically(dir / "scenario.yaml", scenario.effective_yaml);
+  writeFileAtomically(dir / "run.json",
+                      JsonObject().add("scenario_file", std::filesystem::absolute(scenario.file).string()).str() + "\n");
+  writeFileAtomically(dir / "path.csv", pathCsv(log));
+  writeFileAtomically(dir / "timeseries.csv", timeseriesCsv(log));
+  if (plan.success && (request.images || request.video)) {
+    RunRenderer renderer(world, scenario, log, scenario.render.width, scenario.render.height);
+    std::vector<std::uint8_t> rgb;
+    if (request.images) {
+      renderer.render(renderer.endTime(), "overview", rgb);
+      writePng(dir / "final.png", rgb, renderer.width(), renderer.height());
+    }
+    if (request.video) renderGroundVideo(renderer, scenario, dir / "video.mp4");
+  }
+  writeFileAtomically(dir / "metrics.json", metrics.str() + "\n");
+  return summary;
+}
+
+}  // namespace cosim

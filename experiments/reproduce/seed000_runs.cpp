@@ -1,0 +1,107 @@
+#include "experiments/reproduce/seed000_runs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+#include "planning/grid/astar.h"
+
+namespace cosim::reproduce {
+
+Seed000Stats runSeed000(GridPlanner& planner, const Seed000Scene& scene, int runs,
+                        std::uint64_t seed, double time_limit_s) {
+  Seed000Stats s;
+  s.runs = runs;
+  s.min_length = std::numeric_limits<double>::infinity();
+  double time_sum = 0.0, length_sum = 0.0;
+  for (int i = 0; i < runs; ++i) {
+    GridQuery q;
+    q.grid = &scene.grid;
+    q.start = scene.start;
+    q.goal = scene.goal;
+    q.seed = seed + static_cast<std::uint64_t>(i);
+    q.time_limit_s = time_limit_s;
+    const GridPlanResult r = planner.solveGrid(q);
+    time_sum += r.time_ms;
+    if (!r.success) {
+      ++s.failures;
+      continue;
+    }
+    length_sum += r.length;
+    s.min_length = std::min(s.min_length, r.length);
+  }
+  const int ok = runs - s.failures;
+  s.mean_ms = runs > 0 ? time_sum / runs : 0.0;
+  s.mean_length = ok > 0 ? length_sum / ok : std::nan("");
+  if (ok == 0) s.min_length = std::nan("");
+  return s;
+}
+
+std::string seed000Number(double v, int decimals) {
+  if (std::isnan(v)) return "-";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string seed000Table(const std::string& title, const std::string& swept,
+                         const std::vector<Seed000Column>& columns, double optimum) {
+  std::ostringstream out;
+  out << "### " << title << "\n\nOptimum of our scene (A*): " << seed000Number(optimum, 2)
+      << ". Seed: MATLAB on an i3 330M; ours: C++, this machine.\n\n| " << swept << " |";
+  for (const auto& c : columns) out << " " << c.label << " |";
+  out << "\n|---|";
+  for (std::size_t i = 0; i < columns.size(); ++i) out << "---|";
+  out << "\n";
+  auto row = [&](const char* name, auto value) {
+    out << "| " << name << " |";
+    for (const auto& c : columns) out << " " << value(c) << " |";
+    out << "\n";
+  };
+  row("avg. time, seed [s]",
+      [](const Seed000Column& c) { return seed000Number(c.seed_time_s, 3); });
+  row("avg. time, ours [ms]",
+      [](const Seed000Column& c) { return seed000Number(c.ours.mean_ms, 3); });
+  row("avg. length, seed", [](const Seed000Column& c) { return seed000Number(c.seed_mean, 2); });
+  row("avg. length, ours",
+      [](const Seed000Column& c) { return seed000Number(c.ours.mean_length, 2); });
+  row("min. length, seed", [](const Seed000Column& c) { return seed000Number(c.seed_min, 2); });
+  row("min. length, ours",
+      [](const Seed000Column& c) { return seed000Number(c.ours.min_length, 2); });
+  row("runs without a path, ours", [](const Seed000Column& c) {
+    return std::to_string(c.ours.failures) + "/" + std::to_string(c.ours.runs);
+  });
+  out << "\n";
+  return out.str();
+}
+
+Seed000SceneSet seed000Scenes() {
+  Seed000SceneSet s{seed000FreeScene(), seed000Scene1(), seed000Scene2(), 0.0, 0.0, 0.0};
+  s.opt_free = seed000Optimum(s.free_scene, false);
+  s.opt1 = seed000Optimum(s.scene1, false);
+  s.opt2 = seed000Optimum(s.scene2, false);
+  return s;
+}
+
+int seed000RunCount(const Options& options) {
+  return options.runs > 0 ? options.runs : (options.quick ? 2 : 10);
+}
+
+std::string seed000Preamble(const std::string& title, const Seed000SceneSet& scenes, int runs,
+                            std::uint64_t seed, const std::string& settings) {
+  std::ostringstream out;
+  out << "# " << title << "\n\nScenes: ";
+  for (const Seed000Scene* s : {&scenes.free_scene, &scenes.scene1, &scenes.scene2})
+    out << s->name << " (" << s->origin << ")" << (s == &scenes.scene2 ? ".\n" : "; ");
+  out << runs << " runs per setting (seeds " << seed << "..." << seed + runs - 1 << "); "
+      << settings << "\n\n";
+  return out.str();
+}
+
+double seed000Optimum(const Seed000Scene& scene, bool conditional_diagonal) {
+  return planAStar(scene.grid, scene.start, scene.goal, GridMoves{8, !conditional_diagonal}).length;
+}
+
+}  // namespace cosim::reproduce

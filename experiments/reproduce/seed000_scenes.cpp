@@ -1,0 +1,62 @@
+#include "experiments/reproduce/seed000_scenes.h"
+
+namespace cosim::reproduce {
+
+namespace {
+void block(OccupancyGrid& g, int x0, int y0, int x1, int y1) {
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x) g.setBlocked(x, y, 0, true);
+}
+}  // namespace
+
+Seed000Scene seed000FreeScene() {
+  return {"free 50x50",
+          OccupancyGrid(50, 50),
+          {2, 2, 0},
+          {48, 48, 0},
+          "as in the seed: 50x50, start-goal 46 diagonal steps (65.05)"};
+}
+
+Seed000Scene seed000Scene1() {
+  OccupancyGrid g(50, 50);
+  // Two convex blocks across the diagonal; found by a search over random block layouts for one
+  // whose optimum is the seed's 73.84 (31 diagonal + 30 straight steps).
+  block(g, 17, 12, 33, 31);
+  block(g, 8, 19, 13, 39);
+  return {"scene 1",
+          std::move(g),
+          {2, 2, 0},
+          {48, 48, 0},
+          "rebuilt (figure not in the text): 50x50, two convex blocks, no local minimum, optimum "
+          "73.84 as the seed's"};
+}
+
+Seed000Scene seed000Scene2() {
+  OccupancyGrid g(50, 50);
+  block(g, 32, 6, 33, 44);   // the cup's bottom, between start and goal
+  block(g, 14, 6, 33, 7);    // its north arm
+  block(g, 14, 43, 33, 44);  // its south arm
+  block(g, 14, 0, 15, 7);    // no way round the north arm
+  block(g, 40, 0, 41, 46);   // a second wall, open only at the south edge
+  return {"scene 2",
+          std::move(g),
+          {26, 25, 0},
+          {46, 3, 0},
+          "rebuilt (map of [33] not in the text): 50x50, start inside a cup opening away from "
+          "the goal; optimum 99.70 (the seed gives no optimum; its best path was 132.41)"};
+}
+
+Seed000Scene seed000DeadEndScene() {
+  OccupancyGrid g(50, 50);
+  block(g, 34, 15, 35, 35);  // the dead end's end, facing the start
+  block(g, 16, 15, 35, 16);  // its north side
+  block(g, 16, 34, 35, 35);  // its south side
+  return {"dead end",
+          std::move(g),
+          {5, 25, 0},
+          {45, 25, 0},
+          "built for Fig. 5.1 (no map in the text): a U-shaped dead end 17 x 17 cells inside, "
+          "open towards the start"};
+}
+
+}  // namespace cosim::reproduce

@@ -1,0 +1,32 @@
+#pragma once
+// The test scenes of seed 000 (Pěňčík 2014, ch. 6). Only the free 50x50 scene is fully specified
+// in the text; the figures of scenes 1-3 are missing from it, so scenes 1 and 2 are rebuilt here
+// from the verbal descriptions (see each function), and every table states our scene's optimum.
+#include <string>
+
+#include "planning/grid/occupancy_grid.h"
+
+namespace cosim::reproduce {
+
+struct Seed000Scene {
+  std::string name;
+  OccupancyGrid grid;
+  Cell start, goal;
+  std::string origin;  // how the scene relates to the seed's
+};
+
+// 50x50, no obstacles, start and goal 46 diagonal steps apart (65.05 = 46 sqrt 2, as the seed).
+Seed000Scene seed000FreeScene();
+// Scene 1 ([41] Fig. 6.2): "relatively open, no local minimum", about 50x50, shortest path 73.84
+// = 31 diagonal + 30 straight steps. Rebuilt: two convex blocks across the diagonal of a 50x50
+// map, placed so that the optimum is 73.84 with unconditional diagonals, as in the seed.
+Seed000Scene seed000Scene1();
+// Scene 2 ([33]): "closed, with a local minimum (concave obstacle)". Rebuilt: the start inside a
+// cup that opens away from the goal, the goal behind a second wall open only at its far end.
+Seed000Scene seed000Scene2();
+
+// For RNA (Fig. 5.1): a 50x50 map with a U-shaped dead end (17 x 17 cells inside) opening towards
+// the start, between start and goal; from the start, a robot sees its end with sight 30 or more.
+Seed000Scene seed000DeadEndScene();
+
+}  // namespace cosim::reproduce

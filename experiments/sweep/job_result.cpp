@@ -1,0 +1,65 @@
+#include "experiments/sweep/job_result.h"
+
+#include <sys/wait.h>
+#include <yaml-cpp/yaml.h>
+
+#include "experiments/cli/output_files.h"
+#include "sim/json_writer.h"
+
+namespace cosim {
+
+const char* jobStatusName(JobStatus s) {
+  switch (s) {
+    case JobStatus::Ok: return "ok";
+    case JobStatus::Failed: return "failed";
+    case JobStatus::Timeout: return "timeout";
+    case JobStatus::Crashed: return "crashed";
+    case JobStatus::BadInput: return "bad_input";
+  }
+  return "crashed";
+}
+
+JobStatus classifyJobExit(int wait_status, bool timed_out) {
+  if (timed_out) return JobStatus::Timeout;
+  if (wait_status == -1 || !WIFEXITED(wait_status)) return JobStatus::Crashed;
+  switch (WEXITSTATUS(wait_status)) {
+    case 0: return JobStatus::Ok;
+    case 1: return JobStatus::Failed;
+    case 2: return JobStatus::BadInput;
+    default: return JobStatus::Crashed;  // 3 internal error, 127 cannot exec, ...
+  }
+}
+
+void writeJobResult(const std::filesystem::path& job_dir, const JobResult& r) {
+  JsonObject j;
+  j.add("job", r.job)
+      .add("fingerprint", r.fingerprint)
+      .add("scenario", r.scenario)
+      .add("status", r.status)
+      .add("exit_code", r.exit_code)
+      .add("signal", r.signal)
+      .add("wall_time_s", r.wall_time_s);
+  writeFileAtomically(job_dir / "result.json", j.str() + "\n");
+}
+
+std::optional<JobResult> readJobResult(const std::filesystem::path& job_dir) {
+  std::error_code ec;
+  if (!std::filesystem::exists(job_dir / "result.json", ec)) return std::nullopt;
+  try {
+    // JSON is YAML; yaml-cpp reads it.
+    const YAML::Node n = YAML::LoadFile((job_dir / "result.json").string());
+    JobResult r;
+    r.job = n["job"].as<std::size_t>();
+    r.fingerprint = n["fingerprint"].as<std::string>();
+    r.scenario = n["scenario"].as<std::string>();
+    r.status = n["status"].as<std::string>();
+    r.exit_code = n["exit_code"].as<int>();
+    r.signal = n["signal"].as<int>();
+    r.wall_time_s = n["wall_time_s"].as<double>();
+    return r;
+  } catch (const YAML::Exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace cosim

@@ -1,0 +1,32 @@
+#pragma once
+// JOBDIR/result.json: written (atomically) by the sweep runner after a job's process has ended.
+// Its presence is what makes a job finished: a resumed sweep skips it, the merge reads it.
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+namespace cosim {
+
+enum class JobStatus { Ok, Failed, Timeout, Crashed, BadInput };
+const char* jobStatusName(JobStatus s);  // ok, failed, timeout, crashed, bad_input
+
+// From waitpid's status (-1: unknown) and whether the runner killed the job for its time limit.
+// `cosim run` exits 0 (ok), 1 (task failed), 2 (bad input); anything else, or a signal, is a crash.
+JobStatus classifyJobExit(int wait_status, bool timed_out);
+
+struct JobResult {
+  std::size_t job = 0;
+  std::string fingerprint;
+  std::string scenario;
+  std::string status;     // jobStatusName
+  int exit_code = -1;     // -1 when ended by a signal
+  int signal = 0;
+  double wall_time_s = 0.0;
+};
+
+void writeJobResult(const std::filesystem::path& job_dir, const JobResult& r);
+// nullopt if missing or unreadable (then the job is not finished).
+std::optional<JobResult> readJobResult(const std::filesystem::path& job_dir);
+
+}  // namespace cosim

@@ -1,0 +1,140 @@
+#include "experiments/sweep/sweep_jobs.h"
+
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "experiments/cli/output_files.h"
+#include "experiments/sweep/generated_scenario.h"
+#include "planning/input_error.h"
+#include "planning/planner_registry.h"
+#include "sim/scenario.h"
+
+namespace cosim {
+
+namespace {
+
+std::string readText(const std::filesystem::path& p, const std::string& place, const std::filesystem::path& sweep) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) throw InputError(sweep.string(), place, "cannot read scenario file " + p.string());
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// FNV-1a, 64 bit: a stable content hash (std::hash is not stable across builds).
+std::string fingerprint(const std::string& scenario_text, const std::vector<std::string>& overrides) {
+  std::uint64_t h = 1469598103934665603ull;
+  const auto mix = [&h](const std::string& s) {
+    for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
+    h = (h ^ 0xff) * 1099511628211ull;  // separator: ("ab","c") != ("a","bc")
+  };
+  mix(scenario_text);
+  for (const auto& o : overrides) mix(o);
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
+  return buf;
+}
+
+// "line 3, key planner.step" names planner.step and planner, not planner.s.
+bool placeNamesKey(const std::string& place, const std::string& key) {
+  const auto at = place.find("key " + key);
+  if (at == std::string::npos) return false;
+  const std::size_t end = at + 4 + key.size();
+  return end == place.size() || place[end] == '.' || place[end] == '[' || place[end] == ',';
+}
+
+struct ScenarioSource {
+  std::string column;
+  std::filesystem::path path;
+  std::string text;
+};
+
+}  // namespace
+
+std::string sweepJobDirName(std::size_t id, std::size_t job_count) {
+  const std::size_t width = std::max<std::size_t>(4, std::to_string(job_count > 0 ? job_count - 1 : 0).size());
+  std::string s = std::to_string(id);
+  return std::string(width > s.size() ? width - s.size() : 0, '0') + s;
+}
+
+std::vector<SweepJob> expandSweepJobs(const SweepSpec& spec, const std::filesystem::path& out_dir) {
+  std::vector<ScenarioSource> sources;
+  for (const auto& f : spec.scenarios)
+    sources.push_back({f.as_written, f.path, readText(f.path, f.place, spec.file)});
+  for (const auto& g : spec.generators)
+    for (double density : g.densities)
+      for (long seed : g.seeds) {
+        const std::string name = generatedScenarioName(g, density, seed);
+        const std::string text = generatedScenarioYaml(g, density, seed, spec.file.string());
+        const auto path = out_dir / "worlds" / name;
+        std::error_code ec;
+        std::filesystem::create_directories(path.parent_path(), ec);
+        std::ifstream existing(path, std::ios::binary);
+        std::ostringstream old;
+        if (existing) old << existing.rdbuf();
+        if (!existing || old.str() != text) writeFileAtomically(path, text);
+        sources.push_back({"worlds/" + name, path, text});
+      }
+
+  std::vector<std::string> fixed;
+  for (const auto& [k, v] : spec.fixed) fixed.push_back(k + "=" + v);
+  std::size_t combinations = 1;
+  for (const auto& v : spec.vary) combinations *= v.values.size();
+
+  std::vector<SweepJob> jobs;
+  jobs.reserve(sources.size() * combinations);
+  for (const auto& src : sources)
+    for (std::size_t c = 0; c < combinations; ++c) {
+      SweepJob job;
+      job.id = jobs.size();
+      job.scenario = src.column;
+      job.scenario_path = src.path;
+      job.overrides = fixed;
+      // Mixed-radix digits of c, the last key fastest.
+      std::size_t rest = c;
+      job.values.resize(spec.vary.size());
+      for (std::size_t k = spec.vary.size(); k-- > 0;) {
+        const auto& var = spec.vary[k];
+        job.values[k] = var.values[rest % var.values.size()];
+        rest /= var.values.size();
+      }
+      for (std::size_t k = 0; k < spec.vary.size(); ++k)
+        job.overrides.push_back(spec.vary[k].key + "=" + job.values[k]);
+      job.fingerprint = fingerprint(src.text, job.overrides);
+      jobs.push_back(std::move(job));
+    }
+  return jobs;
+}
+
+void validateSweepJobs(const SweepSpec& spec, const std::vector<SweepJob>& jobs) {
+  std::map<std::filesystem::path, std::string> texts;
+  for (const auto& job : jobs) {
+    auto& text = texts[job.scenario_path];
+    if (text.empty()) text = readText(job.scenario_path, "scenario " + job.scenario, spec.file);
+    try {
+      Scenario s = parseScenario(text, job.scenario_path.string(), job.overrides);
+      if (!s.planner_name.empty()) {
+        ParamSet params = s.planner_params;
+        params.getDouble("time_limit", 30.0, 0.001, 86400.0);  // read by the run pipeline
+        makePlanner(s.planner_name, params);
+      }
+    } catch (const InputError& e) {
+      // Name the sweep file's key behind the problem when there is one.
+      std::string place = "job " + std::to_string(job.id);
+      for (const auto& [k, value] : spec.fixed)
+        if (placeNamesKey(e.place(), k)) place = "key set." + k;
+      for (const auto& v : spec.vary)
+        if (placeNamesKey(e.place(), v.key)) place = v.place;
+      std::string with;
+      for (std::size_t k = 0; k < spec.vary.size(); ++k)
+        with += (k ? ", " : " with ") + spec.vary[k].key + "=" + job.values[k];
+      throw InputError(spec.file.string(), place,
+                       "scenario " + job.scenario + with + ": " + e.what());
+    }
+  }
+}
+
+}  // namespace cosim

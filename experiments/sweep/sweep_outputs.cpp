@@ -1,0 +1,33 @@
+#include "experiments/sweep/sweep_outputs.h"
+
+#include "experiments/cli/output_files.h"
+#include "experiments/sweep/sweep_results_table.h"
+#include "experiments/sweep/sweep_summary.h"
+#include "planning/input_error.h"
+#include "render/figures.h"
+
+namespace cosim {
+
+SweepOutputs writeSweepOutputs(const SweepSpec& spec, const std::vector<SweepJob>& jobs,
+                               const std::filesystem::path& out_dir) {
+  const SweepTable table = mergeSweepResults(spec, jobs, out_dir);
+  writeFileAtomically(out_dir / "results.csv", sweepTableCsv(table));
+  const SweepSummary summary = summarizeSweep(table);
+  writeFileAtomically(out_dir / "summary.csv", sweepSummaryCsv(summary));
+  SweepOutputs o;
+  o.rows = table.rows.size();
+  o.unfinished = table.unfinished;
+  // The figure: the metric per scenario, one bar per value of the first varied key that is not a
+  // seed (seeds are what the bars average over).
+  std::string series;
+  for (const auto& v : spec.vary)
+    if (series.empty() && !isSeedKey(v.key)) series = v.key;
+  try {
+    writeComparisonChart(out_dir / "results.csv", "scenario", spec.figure_metric, series, out_dir / "figure");
+  } catch (const std::exception& e) {
+    o.figure_problem = e.what();  // the figure is a convenience; the tables are the results
+  }
+  return o;
+}
+
+}  // namespace cosim

@@ -1,0 +1,23 @@
+#pragma once
+// The merge step: results.csv (one row per finished job, by job id), summary.csv (statistics per
+// group) and figure.png/.svg (render/figures.h: the `output.figure` metric per scenario, one bar
+// per value of the first non-seed varied key, mean with one standard deviation), each written
+// atomically into the sweep's folder.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "experiments/sweep/sweep_jobs.h"
+
+namespace cosim {
+
+struct SweepOutputs {
+  std::size_t rows = 0;
+  std::size_t unfinished = 0;
+  std::string figure_problem;  // why figure.png was not drawn ("" if it was)
+};
+
+SweepOutputs writeSweepOutputs(const SweepSpec& spec, const std::vector<SweepJob>& jobs,
+                               const std::filesystem::path& out_dir);
+
+}  // namespace cosim

@@ -1,0 +1,108 @@
+#include "experiments/sweep/sweep_results_table.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <map>
+
+#include "experiments/cli/output_files.h"
+#include "experiments/sweep/job_result.h"
+#include "experiments/sweep/sweep_runner.h"
+#include "sim/json_writer.h"
+
+namespace cosim {
+
+namespace {
+
+using Fields = std::vector<std::pair<std::string, std::string>>;
+
+void flatten(const YAML::Node& n, const std::string& prefix, Fields& out) {
+  if (n.IsMap()) {
+    for (const auto& kv : n) flatten(kv.second, prefix.empty() ? kv.first.Scalar() : prefix + "." + kv.first.Scalar(), out);
+  } else if (n.IsSequence()) {
+    if (prefix == "vehicles" && n.size() == 1) return;
+    for (std::size_t i = 0; i < n.size(); ++i) flatten(n[i], prefix + "[" + std::to_string(i) + "]", out);
+  } else if (n.IsScalar()) {
+    out.emplace_back(prefix, n.Scalar());
+  } else {
+    out.emplace_back(prefix, "");  // null (a non-finite number)
+  }
+}
+
+Fields readMetrics(const std::filesystem::path& file) {
+  Fields f;
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) return f;
+  try {
+    flatten(YAML::LoadFile(file.string()), "", f);
+  } catch (const YAML::Exception&) {
+    f.clear();  // unreadable: the row keeps its status, without metrics
+  }
+  return f;
+}
+
+}  // namespace
+
+SweepTable mergeSweepResults(const SweepSpec& spec, const std::vector<SweepJob>& jobs,
+                             const std::filesystem::path& out_dir) {
+  SweepTable t;
+  t.header = {"job", "scenario"};
+  for (const auto& v : spec.vary) t.header.push_back(v.key);
+  t.header.push_back("status");
+  t.first_metric_column = t.header.size();
+  std::map<std::string, std::size_t> fixed_columns;
+  for (std::size_t i = 0; i < t.header.size(); ++i) fixed_columns[t.header[i]] = i;
+
+  struct Row {
+    std::vector<std::string> fixed;
+    Fields metrics;
+    std::string wall;
+  };
+  std::vector<Row> rows;
+  std::vector<std::string> metric_names;
+  std::map<std::string, std::size_t> metric_index;
+  for (const auto& job : jobs) {
+    const auto dir = sweepJobDir(out_dir, job, jobs.size());
+    const auto result = readJobResult(dir);
+    if (!result || result->fingerprint != job.fingerprint || result->job != job.id) {
+      ++t.unfinished;
+      continue;
+    }
+    Row row;
+    row.fixed = {std::to_string(job.id), job.scenario};
+    row.fixed.insert(row.fixed.end(), job.values.begin(), job.values.end());
+    row.fixed.push_back(result->status);
+    for (auto& [name, value] : readMetrics(dir / "metrics.json")) {
+      if (fixed_columns.count(name)) continue;
+      if (metric_index.emplace(name, metric_names.size()).second) metric_names.push_back(name);
+      row.metrics.emplace_back(name, value);
+    }
+    row.wall = JsonObject::number(result->wall_time_s);
+    rows.push_back(std::move(row));
+  }
+  for (const auto& m : metric_names) t.header.push_back(m);
+  t.header.push_back("job_wall_time_s");
+  for (auto& r : rows) {
+    std::vector<std::string> cells = r.fixed;
+    cells.resize(t.header.size());
+    for (const auto& [name, value] : r.metrics) cells[t.first_metric_column + metric_index[name]] = value;
+    cells.back() = r.wall;
+    t.rows.push_back(std::move(cells));
+  }
+  return t;
+}
+
+std::string sweepTableCsv(const SweepTable& table) {
+  std::string s;
+  const auto line = [&s](const std::vector<std::string>& cells) {
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      if (i) s += ",";
+      s += csvField(cells[i]);
+    }
+    s += "\n";
+  };
+  line(table.header);
+  for (const auto& r : table.rows) line(r);
+  return s;
+}
+
+}  // namespace cosim

@@ -1,0 +1,42 @@
+#include "planning/mapf/independent_astar.h"
+
+#include "planning/mapf/mapf_grid.h"
+#include "planning/mapf/solution_validator.h"
+#include "planning/mapf/spatial_astar.h"
+
+namespace cosim {
+
+MapfResult IndependentAStar::solve(const MapfQuery& query) {
+  const Deadline deadline(query.time_limit_s);
+  const MapfInstance& inst = *query.instance;
+  const MapfGrid grid(inst.grid, inst.connectivity);
+  MapfResult result;
+  long expansions = 0;
+  for (int a = 0; a < inst.agentCount(); ++a) {
+    SpatialAStarRequest request;
+    request.start = grid.id(inst.starts[a]);
+    request.goal = grid.id(inst.goals[a]);
+    request.deadline = &deadline;
+    const SpatialAStarResult path = spatialAStar(grid, request);
+    expansions += path.expansions;
+    if (path.cells.empty()) {
+      result.message = deadline.expired()
+                           ? "time limit reached"
+                           : "goal of agent " + std::to_string(a) + " is unreachable";
+      result.paths.clear();
+      break;
+    }
+    result.paths.push_back(grid.toCells(path.cells));
+  }
+  if (result.message.empty()) {
+    const MapfValidation check = validateMapfSolution(inst, result.paths);
+    result.success = check.valid();
+    if (!result.success)
+      result.message = std::to_string(check.conflicts.size()) + " conflicts between the paths";
+  }
+  result.counters["expansions"] = static_cast<double>(expansions);
+  result.time_ms = deadline.elapsedMs();
+  return result;
+}
+
+}  // namespace cosim

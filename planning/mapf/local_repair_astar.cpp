@@ -1,0 +1,82 @@
+#include "planning/mapf/local_repair_astar.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <random>
+
+#include "planning/mapf/mapf_grid.h"
+#include "planning/mapf/spatial_astar.h"
+#include "planning/mapf/step_arbiter.h"
+
+namespace cosim {
+
+MapfResult LocalRepairAStar::solve(const MapfQuery& query) {
+  const Deadline deadline(query.time_limit_s);
+  const MapfInstance& inst = *query.instance;
+  const MapfGrid grid(inst.grid, inst.connectivity);
+  const int n = inst.agentCount();
+  const int max_steps = options_.max_steps > 0 ? options_.max_steps : grid.cellCount();
+  std::mt19937_64 rng(query.seed);
+  MapfResult result;
+
+  std::vector<int> start(n), goal(n), replans(n, 0);
+  std::vector<std::vector<int>> route(n);
+  std::vector<std::size_t> next(n, 1);  // route[a][next[a]] is the next cell to enter
+  long expansions = 0, total_replans = 0;
+  for (int a = 0; a < n; ++a) {
+    start[a] = grid.id(inst.starts[a]);
+    goal[a] = grid.id(inst.goals[a]);
+    SpatialAStarRequest request{start[a], goal[a], nullptr, 0.0, nullptr, &deadline};
+    const SpatialAStarResult path = spatialAStar(grid, request);
+    expansions += path.expansions;
+    if (path.cells.empty()) {
+      result.message = "goal of agent " + std::to_string(a) + " is unreachable";
+      result.time_ms = deadline.elapsedMs();
+      return result;
+    }
+    route[a] = path.cells;
+  }
+
+  StepArbiter arbiter(grid, start);
+  std::vector<std::uint8_t> robots_near(grid.cellCount(), 0);
+  while (!arbiter.finished(goal, max_steps, deadline, result)) {
+    arbiter.beginStep();
+    for (int a = 0; a < n; ++a) {
+      const int here = arbiter.positions()[a];
+      if (here == goal[a]) continue;  // arrived agents stay
+      if (arbiter.tryMove(a, route[a][next[a]])) {
+        ++next[a];
+        continue;
+      }
+      // The next step is blocked: repair the route around the robots close by.
+      const Cell c = grid.cell(here);
+      std::vector<int> marked;
+      for (int b = 0; b < n; ++b) {
+        const Cell o = grid.cell(arbiter.positions()[b]);
+        if (b != a && std::max(std::abs(o.x - c.x), std::abs(o.y - c.y)) <= options_.local_radius) {
+          robots_near[arbiter.positions()[b]] = 1;
+          marked.push_back(arbiter.positions()[b]);
+        }
+      }
+      ++replans[a];
+      ++total_replans;
+      SpatialAStarRequest request{here, goal[a],  &robots_near, options_.agitation * replans[a],
+                                  &rng, &deadline};
+      const SpatialAStarResult repaired = spatialAStar(grid, request);
+      expansions += repaired.expansions;
+      for (const int m : marked) robots_near[m] = 0;
+      if (repaired.cells.size() < 2) continue;  // boxed in (or goal occupied): wait
+      route[a] = repaired.cells;
+      next[a] = 1;
+      if (arbiter.tryMove(a, route[a][1])) next[a] = 2;
+    }
+    arbiter.commitStep();
+  }
+  arbiter.storePaths(result);
+  result.counters["expansions"] = static_cast<double>(expansions);
+  result.counters["replans"] = static_cast<double>(total_replans);
+  result.time_ms = deadline.elapsedMs();
+  return result;
+}
+
+}  // namespace cosim

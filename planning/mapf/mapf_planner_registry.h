@@ -1,0 +1,31 @@
+#pragma once
+// The multi-agent planners by name (CONTRACT.md: independent_astar, lra_star, ca_star, hca_star,
+// whca_star, cbs, potential_field), separate from the single-agent PlannerRegistry because they
+// solve a different problem (a MapfInstance, not a PlanningProblem). Parameters come by name
+// from a ParamSet, as for every planner; unknown or misspelt ones are an InputError.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "planning/mapf/mapf_planner.h"
+#include "planning/param_set.h"
+
+namespace cosim {
+
+using MapfPlannerFactory = std::function<std::unique_ptr<MapfPlanner>(ParamSet& params)>;
+
+struct MapfPlannerEntry {
+  std::string name;
+  std::string summary;
+  MapfPlannerFactory make;
+};
+
+const std::vector<MapfPlannerEntry>& mapfPlanners();
+
+// Throws InputError for an unknown name (place names where it came from, e.g. "--planner") or
+// unknown/invalid parameters.
+std::unique_ptr<MapfPlanner> makeMapfPlanner(const std::string& name, ParamSet& params,
+                                             const std::string& place = "--planner");
+
+}  // namespace cosim

@@ -1,0 +1,54 @@
+#include "planning/mapf/mapf_problem.h"
+
+#include <algorithm>
+#include <set>
+#include <utility>
+
+#include "planning/input_error.h"
+
+namespace cosim {
+
+int arrivalTime(const MapfPath& path) {
+  if (path.empty()) return 0;
+  int t = static_cast<int>(path.size()) - 1;
+  while (t > 0 && path[t - 1] == path.back()) --t;
+  return t;
+}
+
+long sumOfCosts(const std::vector<MapfPath>& paths) {
+  long total = 0;
+  for (const auto& p : paths) total += arrivalTime(p);
+  return total;
+}
+
+int makespan(const std::vector<MapfPath>& paths) {
+  int m = 0;
+  for (const auto& p : paths) m = std::max(m, arrivalTime(p));
+  return m;
+}
+
+void trimWaitsAtEnd(MapfPath& path) {
+  path.resize(static_cast<std::size_t>(arrivalTime(path)) + 1);
+}
+
+void checkMapfInstance(const MapfInstance& instance, const std::string& file) {
+  if (instance.connectivity != 4 && instance.connectivity != 8)
+    throw InputError(file, "connectivity", "must be 4 or 8");
+  if (instance.grid.is3D()) throw InputError(file, "map", "MAPF needs a 2D map");
+  if (instance.starts.size() != instance.goals.size())
+    throw InputError(file, "agents", "as many goals as starts are needed");
+  std::set<std::pair<int, int>> starts, goals;
+  for (int i = 0; i < instance.agentCount(); ++i) {
+    const std::string where = "agent " + std::to_string(i);
+    const Cell& s = instance.starts[i];
+    const Cell& g = instance.goals[i];
+    if (instance.grid.blocked(s)) throw InputError(file, where, "start is blocked or off the map");
+    if (instance.grid.blocked(g)) throw InputError(file, where, "goal is blocked or off the map");
+    if (!starts.insert({s.x, s.y}).second)
+      throw InputError(file, where, "start is shared with an earlier agent");
+    if (!goals.insert({g.x, g.y}).second)
+      throw InputError(file, where, "goal is shared with an earlier agent (seed 004 §1.2)");
+  }
+}
+
+}  // namespace cosim

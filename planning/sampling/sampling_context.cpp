@@ -1,0 +1,87 @@
+#include "planning/sampling/sampling_context.h"
+
+#include <cstdio>
+
+#include "planning/sampling/path_shortcutter.h"
+
+namespace cosim {
+
+namespace {
+
+std::string describe(const char* what, const Eigen::Vector3d& p) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s (%g, %g, %g)", what, p.x(), p.y(), p.z());
+  return buf;
+}
+
+const World& worldOf(const PlanningProblem& problem) {
+  static const World empty;
+  return problem.world ? *problem.world : empty;
+}
+
+}  // namespace
+
+SamplingContext::SamplingContext(const PlanningProblem& problem)
+    : world_(worldOf(problem), problem.inflation, problem.inflation, problem.planar),
+      sampler_(world_.validMin(), world_.validMax(), problem.planar, problem.start.z()),
+      deadline_(problem.time_limit_s),
+      rng_(problem.seed),
+      start_(problem.start),
+      goal_(problem.goal) {
+  if (problem.planar) goal_.z() = start_.z();
+  char inflated[64];
+  std::snprintf(inflated, sizeof inflated, " (obstacles inflated by %g m)", problem.inflation);
+  if (!problem.world)
+    invalid_ = "no world given";
+  else if (!world_.insideBounds(start_))
+    invalid_ = describe("start", start_) + " is outside the world bounds";
+  else if (!world_.insideBounds(goal_))
+    invalid_ = describe("goal", goal_) + " is outside the world bounds";
+  else if (!world_.pointFree(start_))
+    invalid_ = describe("start", start_) + " is inside an obstacle" + inflated;
+  else if (!world_.pointFree(goal_))
+    invalid_ = describe("goal", goal_) + " is inside an obstacle" + inflated;
+}
+
+Eigen::Vector3d SamplingContext::sample(double goal_bias) {
+  if (goal_bias > 0.0 && std::uniform_real_distribution<double>(0.0, 1.0)(rng_) < goal_bias)
+    return goal_;
+  return sampler_.uniform(rng_);
+}
+
+Eigen::Vector3d SamplingContext::sampleInformed(double goal_bias, double c_best) {
+  if (goal_bias > 0.0 && std::uniform_real_distribution<double>(0.0, 1.0)(rng_) < goal_bias)
+    return goal_;
+  return sampler_.informed(start_, goal_, c_best, rng_);
+}
+
+Eigen::Vector3d SamplingContext::steer(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                                       double step) {
+  const Eigen::Vector3d d = to - from;
+  const double dist = d.norm();
+  if (dist <= step) return to;
+  return from + d * (step / dist);
+}
+
+PlanResult SamplingContext::finish(PlanResult result, bool shortcut,
+                                   const std::string& no_path_message) {
+  result.success = !result.path.empty();
+  if (result.success) {
+    result.message.clear();
+    if (shortcut) {
+      const std::size_t before = result.path.size();
+      result.path = shortcutPath(
+          result.path,
+          [this](const Eigen::Vector3d& a, const Eigen::Vector3d& b) { return segmentFree(a, b); });
+      result.counters["shortcut_removed_waypoints"] =
+          static_cast<double>(before - result.path.size());
+    }
+  } else {
+    result.message = deadline_.expired() ? "time limit" : no_path_message;
+  }
+  result.counters["collision_checks"] = collision_checks_;
+  result.time_ms = deadline_.elapsedMs();
+  return result;
+}
+
+}  // namespace cosim

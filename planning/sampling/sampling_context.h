@@ -1,0 +1,72 @@
+#pragma once
+// What every sampling planner needs during one solve(): the problem checked (start and goal in
+// bounds and free), the inflated collision world, the random generator seeded from the problem,
+// the deadline, collision-check counting, goal-biased sampling, steering and the final result.
+#include <Eigen/Core>
+#include <random>
+#include <string>
+
+#include "planning/deadline.h"
+#include "planning/planner.h"
+#include "planning/sampling/collision_world.h"
+#include "planning/sampling/state_sampler.h"
+
+namespace cosim {
+
+// Parameters shared by the whole family (each planner reads the ones it uses; see
+// sampling_planners.cpp for names, defaults and where the defaults come from).
+struct SamplingOptions {
+  double step = 2.0;            // maximum edge length ("maximum distance between nodes")
+  int max_nodes = 2000;         // budget of generated nodes N
+  int mode = 1;                 // 1: stop at the first solution; 2: use the whole budget
+  double goal_bias = 0.05;      // probability of sampling the goal itself
+  double goal_tolerance = 0.0;  // new nodes this close to the goal try to connect to it
+  bool shortcut = false;        // greedy shortcutting of the returned path
+};
+
+class SamplingContext {
+ public:
+  explicit SamplingContext(const PlanningProblem& problem);
+
+  // Why the problem cannot be planned (start/goal outside bounds or in collision), or empty.
+  const std::string& invalid() const { return invalid_; }
+
+  const Eigen::Vector3d& start() const { return start_; }
+  // For planar problems the goal is projected onto the plane z = start.z.
+  const Eigen::Vector3d& goal() const { return goal_; }
+  const CollisionWorld& world() const { return world_; }
+  std::mt19937_64& rng() { return rng_; }
+  bool timeUp() const { return deadline_.expired(); }
+
+  bool pointFree(const Eigen::Vector3d& p) {
+    ++collision_checks_;
+    return world_.pointFree(p);
+  }
+  bool segmentFree(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    ++collision_checks_;
+    return world_.segmentFree(a, b);
+  }
+
+  // The goal with probability goal_bias, otherwise a uniform state.
+  Eigen::Vector3d sample(double goal_bias);
+  // Informed sample for the current best cost c_best (Gammell et al. 2014), with goal bias.
+  Eigen::Vector3d sampleInformed(double goal_bias, double c_best);
+  // The point at most `step` from `from` towards `to` (Steer of seed 003 / LaValle 1998).
+  static Eigen::Vector3d steer(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double step);
+
+  // Fills time, collision_checks, success and message; shortcuts the path if asked. An empty
+  // path means failure: the message is then "time limit" if the deadline passed, else
+  // `no_path_message`.
+  PlanResult finish(PlanResult result, bool shortcut, const std::string& no_path_message);
+
+ private:
+  CollisionWorld world_;
+  StateSampler sampler_;
+  Deadline deadline_;
+  std::mt19937_64 rng_;
+  Eigen::Vector3d start_, goal_;
+  std::string invalid_;
+  double collision_checks_ = 0;
+};
+
+}  // namespace cosim

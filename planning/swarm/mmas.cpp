@@ -1,0 +1,151 @@
+#include "planning/swarm/mmas.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "planning/deadline.h"
+#include "planning/grid/grid_distance.h"
+#include "planning/swarm/grid_walk_002.h"
+#include "planning/swarm/path_shortcut_002.h"
+#include "planning/swarm/planar_layer_002.h"
+
+namespace cosim {
+
+namespace {
+// Trails on every (cell, direction) of a large map would cost a full sweep per iteration to
+// evaporate; instead each trail remembers when it was last written and is decayed when read.
+// Reading gives max(tau_min, min(tau_max, tau * (1 - rho)^age)), which equals evaporating and
+// clamping every iteration while the bounds stay fixed (they change only when L_best improves).
+class LazyTrails {
+ public:
+  LazyTrails(std::size_t size, int iterations, double rho, double initial)
+      : value_(size, static_cast<float>(initial)), written_(size, 0), decay_(iterations + 2) {
+    for (std::size_t a = 0; a < decay_.size(); ++a) decay_[a] = std::pow(1.0 - rho, a);
+  }
+  void setBounds(double lo, double hi) { lo_ = lo, hi_ = hi; }
+  double read(std::size_t i, int now) const {
+    const double v = value_[i] * decay_[now - written_[i]];
+    return std::clamp(v, lo_, hi_);
+  }
+  void add(std::size_t i, int now, double amount) {
+    value_[i] = static_cast<float>(std::min(hi_, read(i, now) + amount));
+    written_[i] = static_cast<std::uint16_t>(now);
+  }
+
+ private:
+  std::vector<float> value_;
+  std::vector<std::uint16_t> written_;
+  std::vector<double> decay_;
+  double lo_ = 0.0, hi_ = std::numeric_limits<double>::infinity();
+};
+}  // namespace
+
+GridPlanResult Mmas::solveGrid(const GridQuery& query) {
+  const Deadline deadline(query.time_limit_s);
+  const PlanarLayer layer = planarLayerFor(query);
+  if (!layer.error.empty()) return planarFailure(layer.error, 0, deadline);
+  const OccupancyGrid& grid = layer.grid;
+  const ExtendedNeighbourhood moves(p_.directions);
+  const int D = moves.directions();
+  GridWalk walker(grid, moves);
+  const PathShortcut shortcut(grid, moves);
+  std::mt19937_64 rng(query.seed);
+  const Cell goal = layer.goal;
+  // Until the first path exists, tau_max is estimated from the straight-line (octile) length.
+  const double first_estimate =
+      std::max(1.0, octileDistance(layer.start.x - goal.x, layer.start.y - goal.y, 0));
+  LazyTrails tau(grid.cellCount() * D, p_.iterations, p_.rho, 1.0 / (p_.rho * first_estimate));
+
+  int now = 0;
+  double weights[32];
+  auto choose = [&](const Cell& c, int, const int* candidates, int n) {
+    const std::size_t base = grid.index(c) * D;
+    const double h_here = octileDistance(c.x - goal.x, c.y - goal.y, 0);
+    for (int i = 0; i < n; ++i) {
+      const NeighbourOffset& o = moves.offset(candidates[i]);
+      // Detour of the move over the straight-line estimate: 0 for every move that keeps an
+      // optimal free-space route open, up to 2x its length for a move away from the goal.
+      const double detour =
+          o.length + octileDistance(c.x + o.dx - goal.x, c.y + o.dy - goal.y, 0) - h_here;
+      const double eta = 1.0 / (p_.detour_offset + std::max(0.0, detour));
+      weights[i] =
+          powExponent(tau.read(base + candidates[i], now), p_.alpha) * powExponent(eta, p_.beta);
+    }
+    return rouletteIndex(weights, n, rng);
+  };
+
+  // No path can be shorter than this free-space bound; reaching it ends the search early.
+  const double dx = std::abs(layer.start.x - goal.x), dy = std::abs(layer.start.y - goal.y);
+  const double lower_bound = D == 4 ? dx + dy
+                             : D == 8
+                                 ? octileDistance(static_cast<int>(dx), static_cast<int>(dy), 0)
+                                 : std::hypot(dx, dy);
+  std::vector<Cell> path, iteration_best_path, best;
+  std::vector<int> dirs;
+  double best_length = std::numeric_limits<double>::infinity();
+  int iterations_done = 0, best_iteration = 0, improvements = 0;
+  bool time_up = false;
+  for (int it = 0; it < p_.iterations && !time_up; ++it) {
+    double iteration_best = std::numeric_limits<double>::infinity();
+    iteration_best_path.clear();
+    for (int k = 0; k < p_.ants; ++k) {
+      const WalkOutcome outcome = walker.walk(layer.start, goal, choose, deadline, path, dirs);
+      if (outcome == WalkOutcome::Unreachable)
+        return planarFailure("goal unreachable from start", walker.steps(), deadline);
+      if (outcome == WalkOutcome::TimeUp) {
+        time_up = true;
+        break;
+      }
+      const double length = gridPathLength(path);
+      if (length < iteration_best) {
+        iteration_best = length;
+        iteration_best_path = path;
+      }
+      if (length < best_length - 1e-12) {
+        best_length = length;
+        best = path;
+        best_iteration = it + 1;
+      }
+    }
+    if (iteration_best_path.empty()) break;
+    if (p_.local_search) {
+      // Local search on the iteration-best ant only (Stuetzle and Hoos apply it to every ant;
+      // here it costs more than the walks, and only the iteration-best ant deposits).
+      improvements += shortcut.improve(iteration_best_path);
+      iteration_best = gridPathLength(iteration_best_path);
+      if (iteration_best < best_length - 1e-12) {
+        best_length = iteration_best;
+        best = iteration_best_path;
+        best_iteration = it + 1;
+      }
+    }
+    ++iterations_done;
+    if (best_length <= lower_bound + 1e-9) break;  // provably optimal
+    if (p_.stall_iterations > 0 && iterations_done - best_iteration >= p_.stall_iterations) break;
+    ++now;  // one evaporation step for every trail (applied lazily)
+    const double tau_max = 1.0 / (p_.rho * best_length);
+    const double root = std::pow(p_.p_best, 1.0 / std::max<std::size_t>(1, best.size() - 1));
+    const double avg = std::max(2.0, D / 2.0);
+    const double tau_min = std::min(tau_max, tau_max * (1.0 - root) / ((avg - 1.0) * root));
+    tau.setBounds(tau_min, tau_max);
+    const bool use_best = (it % 5) == 4;
+    const std::vector<Cell>& deposit_path = use_best ? best : iteration_best_path;
+    const double amount = 1.0 / (use_best ? best_length : iteration_best);
+    // Deposit on the moves of the path (after local search the moves are recomputed from cells).
+    for (std::size_t i = 0; i + 1 < deposit_path.size(); ++i) {
+      const Cell& a = deposit_path[i];
+      const Cell& b = deposit_path[i + 1];
+      const int k = moves.indexOf(b.x - a.x, b.y - a.y);
+      tau.add(grid.index(a) * D + k, now, amount);
+    }
+  }
+
+  GridPlanResult result = planarResult(layer, best, "time limit reached before any ant arrived",
+                                       iterations_done, best_iteration, walker.steps(), deadline);
+  result.counters["local_search_moves"] = improvements;
+  return result;
+}
+
+}  // namespace cosim

@@ -1,0 +1,71 @@
+#include "planning/swarm/planar_layer_002.h"
+
+namespace cosim {
+
+PlanarLayer planarLayerFor(const GridQuery& query) {
+  PlanarLayer out;
+  const OccupancyGrid& g = *query.grid;
+  const Cell& s = query.start;
+  const Cell& t = query.goal;
+  if (g.blocked(s) || g.blocked(t)) {
+    out.error =
+        std::string(g.blocked(s) ? "start" : "goal") + " cell is blocked or outside the grid";
+    return out;
+  }
+  out.layer = s.z;
+  out.grid = OccupancyGrid(g.nx(), g.ny(), 1, g.cellSize(),
+                           g.origin() + Eigen::Vector3d(0, 0, g.cellSize() * s.z));
+  for (int y = 0; y < g.ny(); ++y)
+    for (int x = 0; x < g.nx(); ++x)
+      if (g.blocked(x, y, s.z)) out.grid.setBlocked(x, y, 0, true);
+  out.start = {s.x, s.y, 0};
+  out.goal = {t.x, t.y, 0};
+  const int step = t.z > s.z ? 1 : -1;
+  for (int z = s.z; z != t.z;) {
+    z += step;
+    if (g.blocked(t.x, t.y, z)) {
+      out.error = "this planner plans on the start's layer (z = " + std::to_string(s.z) +
+                  "); the goal's column is blocked at layer " + std::to_string(z);
+      return out;
+    }
+    out.climb.push_back({t.x, t.y, z});
+  }
+  if (out.grid.blocked(out.goal)) out.error = "the goal's column is blocked on the start's layer";
+  return out;
+}
+
+std::vector<Cell> liftFromLayer(const std::vector<Cell>& cells, const PlanarLayer& layer) {
+  std::vector<Cell> out;
+  out.reserve(cells.size() + layer.climb.size());
+  for (Cell c : cells) {
+    c.z = layer.layer;
+    out.push_back(c);
+  }
+  out.insert(out.end(), layer.climb.begin(), layer.climb.end());
+  return out;
+}
+
+GridPlanResult planarFailure(const std::string& message, std::uint64_t steps,
+                             const Deadline& deadline) {
+  GridPlanResult result;
+  result.message = message;
+  result.counters["expansions"] = static_cast<double>(steps);
+  result.time_ms = deadline.elapsedMs();
+  return result;
+}
+
+GridPlanResult planarResult(const PlanarLayer& layer, const std::vector<Cell>& best,
+                            const std::string& failure, int iterations, int best_iteration,
+                            std::uint64_t steps, const Deadline& deadline) {
+  GridPlanResult result = planarFailure(best.empty() ? failure : "", steps, deadline);
+  result.counters["iterations"] = iterations;
+  result.counters["best_iteration"] = best_iteration;
+  if (!best.empty()) {
+    result.success = true;
+    result.cells = liftFromLayer(best, layer);
+    result.length = gridPathLength(result.cells);
+  }
+  return result;
+}
+
+}  // namespace cosim

@@ -1,0 +1,18 @@
+#include "planning/worlds/generators/generated_world.h"
+
+#include <cmath>
+
+#include "planning/input_error.h"
+
+namespace cosim {
+
+void checkWorldGeneratorOptions(const WorldGeneratorOptions& o, double max_density,
+                                const std::string& generator) {
+  const std::string place = "generator " + generator;
+  if (!o.size.allFinite() || (o.size.array() <= 0).any() || (o.size.array() > 10000).any())
+    throw InputError("", place, "size must be positive and at most 10 km on every axis");
+  if (!std::isfinite(o.density) || o.density < 0 || o.density > max_density)
+    throw InputError("", place, "density must be in [0, " + std::to_string(max_density) + "]");
+}
+
+}  // namespace cosim

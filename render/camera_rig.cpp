@@ -1,0 +1,106 @@
+#include "render/camera_rig.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "render/log_lookup.h"
+
+namespace cosim {
+
+namespace {
+constexpr double kDeg = M_PI / 180.0;
+constexpr double kModelFovy = 45.0;  // <visual><global fovy> in sim/world_model.cpp
+// The top view looks from far away through a narrow lens: nearly orthographic (parallel lines
+// stay parallel, heights barely shift positions) with MuJoCo 2.2's perspective-only camera.
+constexpr double kTopFovy = 8.0;
+}  // namespace
+
+CameraKind cameraKind(const std::string& name) {
+  if (name == "chase") return CameraKind::Chase;
+  if (name == "orbit") return CameraKind::Orbit;
+  if (name == "top") return CameraKind::Top;
+  if (name == "overview") return CameraKind::Overview;
+  if (name == "fixed") return CameraKind::Fixed;
+  throw std::invalid_argument("unknown camera '" + name + "' (" + cameraNames() + ")");
+}
+
+const char* cameraNames() { return "chase, orbit, top, overview or fixed"; }
+
+Eigen::Vector3d CameraPose::eye() const {
+  const double a = azimuth * kDeg, e = elevation * kDeg;
+  const Eigen::Vector3d forward(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+  return lookat - distance * forward;
+}
+
+CameraRig::CameraRig(const Scenario& scenario, const RunLog& log, double aspect)
+    : scenario_(scenario), log_(log), aspect_(aspect), duration_(logEndTime(log)) {}
+
+CameraPose CameraRig::chase(double t) const {
+  CameraPose p;
+  const VehicleLog& v = log_.vehicles.front();
+  const std::size_t i = sampleIndexAt(v, t);
+  const Eigen::Vector3d pos = v.samples[i].pos;
+  // Heading from the displacement over the last 1.5 s (an average velocity: no jitter from
+  // attitude wobble), blended with a constant lean toward the goal so the heading is defined
+  // while hovering and never jumps.
+  const Eigen::Vector3d moved = pos - v.samples[sampleIndexAt(v, t - 1.5)].pos;
+  Eigen::Vector3d toward = v.goal - v.samples.front().pos;
+  toward.z() = 0.0;
+  if (toward.norm() > 1e-9) toward.normalize();
+  const Eigen::Vector3d d = moved + 0.3 * toward;
+  p.lookat = pos;
+  p.azimuth = d.head<2>().norm() > 1e-9 ? std::atan2(d.y(), d.x()) / kDeg : 0.0;
+  p.elevation = -22.0;
+  p.distance = std::max(1.5, 18.0 * std::max(v.radius, 0.05));
+  return p;
+}
+
+CameraPose CameraRig::pose(CameraKind kind, double t) const {
+  const Eigen::Vector3d lo = scenario_.world.bounds_min, hi = scenario_.world.bounds_max;
+  const Eigen::Vector3d centre = 0.5 * (lo + hi);
+  const double extent = (hi - lo).head<2>().norm();
+  CameraPose p;
+  p.fovy_deg = kModelFovy;
+  switch (kind) {
+    case CameraKind::Chase:
+      if (!log_.vehicles.empty() && !log_.vehicles.front().samples.empty()) return chase(t);
+      [[fallthrough]];
+    case CameraKind::Overview:
+      p.lookat = {centre.x(), centre.y(), lo.z()};
+      p.azimuth = 225.0;  // from beyond the (max x, max y) corner, looking back at the start side
+      p.elevation = -42.0;
+      p.distance = 1.05 * extent;
+      return p;
+    case CameraKind::Orbit: {
+      // One revolution over the flight (at least 20 s per turn, so short flights do not spin).
+      const double period = std::max(20.0, duration_);
+      p.lookat = {centre.x(), centre.y(), lo.z() + 0.25 * (hi.z() - lo.z())};
+      p.azimuth = 225.0 + 360.0 * t / period;
+      p.elevation = -35.0;
+      p.distance = 0.95 * extent;
+      return p;
+    }
+    case CameraKind::Top: {
+      p.fovy_deg = kTopFovy;
+      p.lookat = {centre.x(), centre.y(), lo.z()};
+      p.azimuth = 90.0;  // screen up = +y, screen right = +x
+      p.elevation = -89.99;
+      // Fit the bounds (with a 6 % margin) into the frame; the distance is from the floor.
+      const double half_h = 1.06 * 0.5 * std::max(hi.y() - lo.y(), (hi.x() - lo.x()) / aspect_);
+      p.distance = half_h / std::tan(0.5 * kTopFovy * kDeg);
+      return p;
+    }
+    case CameraKind::Fixed: {
+      const Eigen::Vector3d d = scenario_.render.fixed_lookat - scenario_.render.fixed_pos;
+      p.lookat = scenario_.render.fixed_lookat;
+      p.distance = d.norm();
+      p.azimuth = std::atan2(d.y(), d.x()) / kDeg;
+      p.elevation = std::asin(std::clamp(d.z() / p.distance, -1.0, 1.0)) / kDeg;
+      return p;
+    }
+  }
+  return p;
+}
+
+}  // namespace cosim

@@ -1,0 +1,48 @@
+#pragma once
+// Where the camera of a named view is at time t of a logged run. Every pose is a function of
+// the log and t alone (no state carried between frames), so any frame can be rendered on its
+// own and a re-render from the log reproduces the video exactly.
+#include <Eigen/Core>
+#include <string>
+
+#include "sim/run_log.h"
+#include "sim/scenario.h"
+
+namespace cosim {
+
+enum class CameraKind { Chase, Orbit, Top, Overview, Fixed };
+
+// Throws std::invalid_argument for an unknown name (the loader has already checked scenario
+// names; this guards the command line).
+CameraKind cameraKind(const std::string& name);
+const char* cameraNames();  // "chase, orbit, top, overview or fixed", for messages
+
+// A MuJoCo free camera (mjvCamera's lookat/azimuth/elevation/distance, degrees) plus the
+// vertical field of view it is rendered with.
+struct CameraPose {
+  Eigen::Vector3d lookat = Eigen::Vector3d::Zero();
+  double azimuth = 0.0;    // the camera looks along this heading (degrees from +x)
+  double elevation = 0.0;  // negative: looking down
+  double distance = 1.0;
+  double fovy_deg = 45.0;
+  // Where the eye is: lookat - distance * forward.
+  Eigen::Vector3d eye() const;
+};
+
+class CameraRig {
+ public:
+  // aspect: frame width / height (the top view fits the world into it).
+  CameraRig(const Scenario& scenario, const RunLog& log, double aspect);
+
+  CameraPose pose(CameraKind kind, double t) const;
+
+ private:
+  CameraPose chase(double t) const;
+
+  const Scenario& scenario_;
+  const RunLog& log_;
+  double aspect_;
+  double duration_;
+};
+
+}  // namespace cosim

@@ -1,0 +1,360 @@
+#include "render/figures.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "planning/input_error.h"
+#include "render/csv_table.h"
+#include "render/gnuplot.h"
+#include "render/log_lookup.h"
+#include "render/overlay_palette.h"
+#include "sim/flight_metrics.h"
+
+namespace cosim {
+
+namespace {
+
+constexpr std::size_t kMaxPlotRows = 2500;  // per series: smooth at print size, small SVGs
+const char* kObstacleFill = "#9aa3b0";
+const char* kObstacleEdge = "#5b6473";
+
+// A scratch folder beside the outputs; the finished files are renamed out of it, so every
+// figure appears complete or not at all.
+class WorkDir {
+ public:
+  explicit WorkDir(const std::filesystem::path& parent) {
+    std::filesystem::create_directories(parent);
+    path_ = parent / (".plot.part" + std::to_string(getpid()));
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~WorkDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  const std::filesystem::path& path() const { return path_; }
+  void publish(const std::string& name, const std::filesystem::path& target) const {
+    std::filesystem::rename(path_ / name, target);
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+void writeText(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream out(p);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + p.string());
+}
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+// Viridis for the error palette, as in the videos.
+std::string errorPalette(double scale) {
+  std::ostringstream s;
+  s << "set palette defined (";
+  for (int i = 0; i <= 8; ++i) s << (i ? ", " : "") << i / 8.0 << " '" << hexColour(errorColour(i / 8.0)) << "'";
+  s << ")\nset cbrange [0:" << num(scale) << "]\nset cblabel 'tracking error [m]'\n";
+  return s.str();
+}
+
+// One series file per vehicle: t x y z ref_x ref_y ref_z error (decimated evenly in time).
+void writeVehicleData(const VehicleLog& v, const std::vector<double>& err, const std::filesystem::path& file) {
+  std::ostringstream s;
+  const std::size_t step = std::max<std::size_t>(1, v.samples.size() / kMaxPlotRows);
+  for (std::size_t i = 0; i < v.samples.size(); i = (i + 1 < v.samples.size() && i + step >= v.samples.size())
+                                                         ? v.samples.size() - 1  // always end with the last sample
+                                                         : i + step) {
+    const LogSample& x = v.samples[i];
+    s << num(x.t) << ' ' << num(x.pos.x()) << ' ' << num(x.pos.y()) << ' ' << num(x.pos.z()) << ' '
+      << num(x.ref_pos.x()) << ' ' << num(x.ref_pos.y()) << ' ' << num(x.ref_pos.z()) << ' ' << num(err[i]) << '\n';
+  }
+  writeText(file, s.str());
+}
+
+void writePathData(const std::vector<Eigen::Vector3d>& path, const std::filesystem::path& file) {
+  std::ostringstream s;
+  for (const auto& p : path) s << num(p.x()) << ' ' << num(p.y()) << ' ' << num(p.z()) << '\n';
+  writeText(file, s.str());
+}
+
+// Obstacles as gnuplot objects seen along an axis: `horizontal`/`vertical` are the world axes
+// (0 x, 1 y, 2 z) on the figure's x and y.
+std::string obstacleObjects(const World& world, int horizontal, int vertical) {
+  std::ostringstream s;
+  int id = 1;
+  const std::string style = " fc rgb '" + std::string(kObstacleFill) + "' fillstyle transparent solid 0.55 border lc rgb '" +
+                            kObstacleEdge + "' lw 0.8 back\n";
+  for (const Obstacle& o : world.obstacles) {
+    const double c = std::cos(o.yaw_deg * M_PI / 180.0), sn = std::sin(o.yaw_deg * M_PI / 180.0);
+    if (o.type == ObstacleType::Sphere ||
+        (o.type == ObstacleType::Cylinder && vertical != 2)) {
+      // A circle from above (spheres, and cylinders standing on z).
+      s << "set object " << id++ << " ellipse at " << num(o.pos[horizontal]) << "," << num(o.pos[vertical])
+        << " size " << num(2 * o.radius) << "," << num(2 * o.radius) << " units xy" << style;
+    } else if (o.type == ObstacleType::Cylinder || vertical == 2) {
+      // From the side: the horizontal extent of the (rotated) footprint, the full height.
+      double half_h;
+      if (o.type == ObstacleType::Cylinder) {
+        half_h = o.radius;
+      } else {
+        half_h = horizontal == 0 ? 0.5 * (std::abs(c) * o.size.x() + std::abs(sn) * o.size.y())
+                                 : 0.5 * (std::abs(sn) * o.size.x() + std::abs(c) * o.size.y());
+      }
+      const double half_v = 0.5 * (o.type == ObstacleType::Cylinder ? o.height : o.size.z());
+      s << "set object " << id++ << " rectangle from " << num(o.pos[horizontal] - half_h) << ","
+        << num(o.pos[2] - half_v) << " to " << num(o.pos[horizontal] + half_h) << "," << num(o.pos[2] + half_v)
+        << style;
+    } else {
+      // A box from above: its rotated footprint.
+      s << "set object " << id++ << " polygon";
+      const double hx = 0.5 * o.size.x(), hy = 0.5 * o.size.y();
+      const double corners[5][2] = {{-hx, -hy}, {hx, -hy}, {hx, hy}, {-hx, hy}, {-hx, -hy}};
+      for (int k = 0; k < 5; ++k) {
+        const double x = o.pos.x() + c * corners[k][0] - sn * corners[k][1];
+        const double y = o.pos.y() + sn * corners[k][0] + c * corners[k][1];
+        s << (k ? " to " : " from ") << num(x) << "," << num(y);
+      }
+      s << style;
+    }
+  }
+  return s.str();
+}
+
+// "v0.dat" (vehicle series), "p0.dat" (planned path), "g0.dat" (goal), built piece by piece:
+// GCC 12's -Wrestrict misfires on operator+ chains with std::to_string.
+std::string dataFile(char kind, std::size_t vehicle) {
+  std::string name(1, kind);
+  name += std::to_string(vehicle);
+  name += ".dat";
+  return name;
+}
+
+std::string axisName(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
+
+// The paths over the obstacles along two world axes (top: x,y; side: x or y, z).
+std::string pathPlot(const RunLog& log, int h, int v, bool against_trajectory) {
+  const bool several = log.vehicles.size() > 1;
+  std::ostringstream p;
+  p << "plot ";
+  bool first = true;
+  const auto sep = [&] {
+    if (!first) p << ", \\\n     ";
+    first = false;
+  };
+  const std::string hc = std::to_string(h + 2), vc = std::to_string(v + 2);
+  const std::string rh = std::to_string(h + 5), rv = std::to_string(v + 5);
+  for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
+    const VehicleLog& vl = log.vehicles[a];
+    const std::string who = several ? vl.name + " " : "";
+    const std::string planned = hexColour(several ? agentColour(a) : kPlannedPathColour);
+    const std::string id = std::to_string(a);
+    if (!vl.samples.empty()) {
+      if (against_trajectory) {
+        sep();
+        p << "'v" << id << ".dat' using " << rh << ":" << rv << " with lines lw 1.2 dt (6,4) lc rgb '"
+          << hexColour(kReferenceColour) << "' title " << gnuplotString(a == 0 ? "reference trajectory" : "");
+      }
+      sep();
+      p << "'v" << id << ".dat' using " << hc << ":" << vc << ":8 with lines lw 3 lc palette title "
+        << gnuplotString(who + "flown (colour: tracking error)");
+    }
+    if (vl.planned_path.size() > 1) {
+      sep();
+      p << "'p" << id << ".dat' using " << h + 1 << ":" << v + 1 << " with linespoints lw 1.8 pt 7 ps 0.5 lc rgb '"
+        << planned << "' title " << gnuplotString(who + "planned path");
+    }
+    sep();
+    p << "'p" << id << ".dat' every ::0::0 using " << h + 1 << ":" << v + 1 << " with points pt 7 ps 1.6 lc rgb '"
+      << hexColour(several ? agentColour(a) : kStartColour) << "' title " << gnuplotString(a == 0 ? "start" : "");
+    sep();
+    p << "'g" << id << ".dat' using " << h + 1 << ":" << v + 1 << " with points pt 5 ps 1.6 lc rgb '"
+      << hexColour(several ? agentColour(a) : kGoalColour) << "' title " << gnuplotString(a == 0 ? "goal" : "");
+  }
+  return p.str();
+}
+
+}  // namespace
+
+std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scenario,
+                                         const std::filesystem::path& dir) {
+  WorkDir work(dir);
+  const bool against = scenario.trajectory_mode != "waypoints";
+  const World& world = scenario.world;
+  double max_error = 0.0;
+  std::ostringstream error_plot, error_marks;
+  error_plot << "plot ";
+  for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
+    const VehicleLog& v = log.vehicles[a];
+    const std::vector<double> err = trackingErrors(v, against);
+    for (double e : err) max_error = std::max(max_error, e);
+    writeVehicleData(v, err, work.path() / dataFile('v', a));
+    std::vector<Eigen::Vector3d> planned = v.planned_path;
+    if (planned.empty() && !v.samples.empty()) planned.push_back(v.samples.front().pos);
+    if (planned.empty()) planned.push_back(v.goal);
+    writePathData(planned, work.path() / dataFile('p', a));
+    writePathData({v.goal}, work.path() / dataFile('g', a));
+    const bool several = log.vehicles.size() > 1;
+    const std::string colour = hexColour(several ? agentColour(a) : Eigen::Vector3f(0.13f, 0.35f, 0.65f));
+    const FlightMetrics m = computeFlightMetrics(v, world, against);
+    error_plot << (a ? ", \\\n     " : "") << "'v" << a << ".dat' using 1:8 with lines lw 2 lc rgb '" << colour
+               << "' title " << gnuplotString((several ? v.name + ": " : std::string()) + "RMSE " + num(std::round(m.rmse_m * 1000) / 1000) + " m, max " + num(std::round(m.max_error_m * 1000) / 1000) + " m");
+    error_marks << "set arrow from graph 0, first " << num(m.rmse_m) << " to graph 1, first " << num(m.rmse_m)
+                << " nohead dt (4,4) lw 1 lc rgb '" << colour << "'\n";
+    if (v.reached_goal && v.arrival_time >= 0)
+      error_marks << "set arrow from first " << num(v.arrival_time) << ", graph 0 to first " << num(v.arrival_time)
+                  << ", graph 1 nohead dt (2,3) lw 1 lc rgb '#606060'\n"
+                  << "set label " << gnuplotString(" goal reached") << " at first " << num(v.arrival_time)
+                  << ", graph 0.95 left tc rgb '#404040' font ',9'\n";
+  }
+  const double scale = errorScaleMax(max_error);
+  const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
+  const std::string planner = scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
+  const std::string reference = against ? "the reference trajectory" : "the planned path";
+
+  std::ostringstream common;
+  common << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid lc rgb '#dddddd' lw 1\n"
+         << "set tics out nomirror\nset key box lc rgb '#bbbbbb' opaque samplen 2.5 spacing 1.1 font ',10'\n";
+
+  std::ostringstream error;
+  error << common.str() << "set title " << gnuplotString("Tracking error against " + reference + " (" + planner + ")")
+        << "\nset xlabel 'time [s]'\nset ylabel 'position error [m]'\nset yrange [0:*]\nset xrange [0:*]\n"
+        << "set key top right\n"
+        << error_marks.str() << error_plot.str() << "\n";
+
+  std::ostringstream top;
+  top << common.str() << errorPalette(scale) << obstacleObjects(world, 0, 1)
+      << "set title " << gnuplotString("Top view: planned vs flown path (" + planner + ")") << "\n"
+      << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
+      << "set xrange [" << num(lo.x()) << ":" << num(hi.x()) << "]\nset yrange [" << num(lo.y()) << ":"
+      << num(hi.y()) << "]\nset key outside below horizontal center\n"
+      << pathPlot(log, 0, 1, against) << "\n";
+
+  // Side view along the axis the flight crosses most (the other horizontal axis is depth).
+  int along = 0;
+  if (!log.vehicles.empty() && !log.vehicles[0].samples.empty()) {
+    const Eigen::Vector3d d = log.vehicles[0].goal - log.vehicles[0].samples.front().pos;
+    along = std::abs(d.y()) > std::abs(d.x()) ? 1 : 0;
+  }
+  std::ostringstream side;
+  side << common.str() << errorPalette(scale) << obstacleObjects(world, along, 2)
+       << "set title " << gnuplotString("Side view (looking along " + axisName(1 - along) + "; height exaggerated)") << "\n"
+       << "set xlabel '" << axisName(along) << " [m]'\nset ylabel 'z [m]'\nset size ratio 0.42\n"
+       << "set xrange [" << num(lo[along]) << ":" << num(hi[along]) << "]\nset yrange [" << num(lo.z()) << ":"
+       << num(hi.z()) << "]\nset key outside below horizontal center\n"
+       << pathPlot(log, along, 2, against) << "\n";
+
+  std::string script = plotBoth("error", 1000, 480, error.str()) + "reset\n" +
+                       plotBoth("top", 1000, 880, top.str()) + "reset\n" + plotBoth("side", 1000, 560, side.str());
+  runGnuplot(script, work.path());
+  const std::vector<std::string> names = {"error", "top", "side"};
+  for (const auto& n : names)
+    for (const char* ext : {".png", ".svg"}) work.publish(n + ext, dir / (n + ext));
+  return names;
+}
+
+void writeComparisonChart(const std::filesystem::path& csv_path, const std::string& x_column,
+                          const std::string& y_column, const std::string& group_column,
+                          const std::filesystem::path& out_base) {
+  const CsvTable t = readCsvTable(csv_path);
+  const std::string file = csv_path.string();
+  const std::size_t xi = t.column(x_column, file), yi = t.column(y_column, file);
+  const std::size_t gi = group_column.empty() ? 0 : t.column(group_column, file);
+  // Values per (group, x), groups and x values in order of first appearance.
+  std::vector<std::string> groups, xs;
+  std::map<std::pair<std::string, std::string>, std::vector<double>> cells;
+  bool numeric_x = true;
+  for (const auto& row : t.rows) {
+    char* end = nullptr;
+    const double y = std::strtod(row[yi].c_str(), &end);
+    if (row[yi].empty() || *end != '\0' || !std::isfinite(y)) continue;
+    const std::string g = group_column.empty() ? y_column : row[gi];
+    const std::string& x = row[xi];
+    char* xend = nullptr;
+    std::strtod(x.c_str(), &xend);
+    numeric_x = numeric_x && !x.empty() && *xend == '\0';
+    if (std::find(groups.begin(), groups.end(), g) == groups.end()) groups.push_back(g);
+    if (std::find(xs.begin(), xs.end(), x) == xs.end()) xs.push_back(x);
+    cells[{g, x}].push_back(y);
+  }
+  if (cells.empty()) throw InputError(file, "column " + y_column, "no row has a numeric value to chart");
+  if (numeric_x)
+    std::stable_sort(xs.begin(), xs.end(), [](const std::string& a, const std::string& b) {
+      return std::strtod(a.c_str(), nullptr) < std::strtod(b.c_str(), nullptr);
+    });
+  const auto stats = [](const std::vector<double>& v) {
+    double mean = 0.0, var = 0.0;
+    for (double x : v) mean += x;
+    mean /= static_cast<double>(v.size());
+    for (double x : v) var += (x - mean) * (x - mean);
+    return std::make_pair(mean, v.size() > 1 ? std::sqrt(var / static_cast<double>(v.size() - 1)) : 0.0);
+  };
+
+  const std::filesystem::path out_dir = out_base.has_parent_path() ? out_base.parent_path() : std::filesystem::path(".");
+  WorkDir work(out_dir);
+  std::ostringstream data, body;
+  body << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid ytics lc rgb '#dddddd'\n"
+       << "set tics out nomirror\nset key outside right top box lc rgb '#bbbbbb' font ',10'\n"
+       << "set datafile missing '?'\nset title " << gnuplotString(y_column + " by " + x_column) << "\n"
+       << "set xlabel " << gnuplotString(x_column) << "\nset ylabel " << gnuplotString(y_column) << "\n";
+  // Colours: the agents' palette, distinguishable for colour-blind readers.
+  if (numeric_x) {
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      for (const auto& x : xs) {
+        auto it = cells.find({groups[g], x});
+        if (it == cells.end()) continue;
+        const auto [mean, sd] = stats(it->second);
+        data << x << ' ' << num(mean) << ' ' << num(sd) << '\n';
+      }
+      data << "\n\n";  // next gnuplot index
+    }
+    body << "plot ";
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      body << (g ? ", \\\n     " : "") << "'chart.dat' index " << g
+           << " using 1:2:3 with yerrorlines lw 2 pt 7 ps 0.8 lc rgb '" << hexColour(agentColour(g + 4)) << "' title "
+           << gnuplotString(groups[g]);
+    body << "\n";
+  } else {
+    for (const auto& x : xs) {
+      std::string label = x;
+      std::replace(label.begin(), label.end(), ' ', '_');
+      data << '"' << label << '"';
+      for (const auto& g : groups) {
+        auto it = cells.find({g, x});
+        if (it == cells.end()) {
+          data << " ? ?";
+        } else {
+          const auto [mean, sd] = stats(it->second);
+          data << ' ' << num(mean) << ' ' << num(sd);
+        }
+      }
+      data << '\n';
+    }
+    body << "set style data histogram\nset style histogram errorbars gap 1.5 lw 1\n"
+         << "set style fill solid 0.85 border rgb '#303030'\nset boxwidth 0.9\nset yrange [0:*]\n"
+         << "set xtics rotate by -30 left noenhanced\n";
+    if (groups.size() == 1) body << "set key off\n";
+    body << "plot ";
+    for (std::size_t g = 0; g < groups.size(); ++g)
+      body << (g ? ", \\\n     " : "") << "'chart.dat' using " << 2 + 2 * g << ":" << 3 + 2 * g
+           << (g == 0 ? ":xtic(1)" : "") << " lc rgb '" << hexColour(agentColour(g + 4)) << "' title "
+           << gnuplotString(groups[g]);
+    body << "\n";
+  }
+  writeText(work.path() / "chart.dat", data.str());
+  runGnuplot(plotBoth("chart", 900, 500, body.str()), work.path());
+  const std::string base = out_base.filename().string();
+  work.publish("chart.png", out_dir / (base + ".png"));
+  work.publish("chart.svg", out_dir / (base + ".svg"));
+}
+
+}  // namespace cosim

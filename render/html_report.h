@@ -1,0 +1,27 @@
+#pragma once
+// index.html for a run (or a sweep): its videos, images and figures with their metrics as a
+// table, in one self-contained page that opens from the file system. A script in the page
+// marks <body data-media="loaded"> once every image and video has loaded (or
+// "failed: <files>"), so a headless browser can check the page.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace cosim {
+
+struct HtmlReport {
+  std::string title;
+  std::string subtitle;               // one line under the title (e.g. the run's status)
+  std::vector<std::string> videos;    // paths relative to the report
+  std::vector<std::string> images;    // PNGs shown as they are (e.g. final.png)
+  std::vector<std::string> figures;   // base paths relative to the report: <base>.png is shown, <base>.svg linked
+  std::string metrics_json;           // shown flattened as a key/value table (may be empty)
+};
+
+// Writes dir/index.html atomically. Throws std::runtime_error if metrics_json is malformed.
+void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& report);
+
+// Escapes &, <, >, " and ' for HTML text and attributes.
+std::string htmlEscape(const std::string& s);
+
+}  // namespace cosim

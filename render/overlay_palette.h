@@ -1,0 +1,33 @@
+#pragma once
+// The colours of everything the renderer and the figures draw on top of the world, in one
+// place so a video frame and a figure of the same run agree.
+#include <Eigen/Core>
+#include <string>
+
+namespace cosim {
+
+// Planned path of a single vehicle; with several vehicles each has its own (agentColour).
+inline const Eigen::Vector3f kPlannedPathColour{1.0f, 0.3f, 0.05f};
+// The reference trajectory the controller tracked (a thin dashed line).
+inline const Eigen::Vector3f kReferenceColour{0.12f, 0.12f, 0.14f};
+inline const Eigen::Vector3f kStartColour{0.1f, 0.75f, 0.2f};
+inline const Eigen::Vector3f kGoalColour{0.9f, 0.1f, 0.1f};
+
+// One colour per agent, distinguishable for colour-blind viewers (Okabe & Ito, "Color
+// Universal Design", 2008), starting with the single-vehicle orange. With one agent, the
+// planned path keeps kPlannedPathColour.
+Eigen::Vector3f agentColour(std::size_t agent);
+
+// The flown trail's colour for a tracking error as a fraction of the colour scale (0..1,
+// clamped): the viridis map (van der Walt & Smith, matplotlib 2015), perceptually uniform and
+// readable in grey print.
+Eigen::Vector3f errorColour(double fraction);
+
+// "#rrggbb" for gnuplot and HTML.
+std::string hexColour(const Eigen::Vector3f& rgb);
+
+// The colour scale's upper end: the largest error rounded up to 1, 2 or 5 x 10^k, so the
+// scale's labels are round numbers.
+double errorScaleMax(double max_error);
+
+}  // namespace cosim

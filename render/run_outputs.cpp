@@ -1,0 +1,95 @@
+#include "render/run_outputs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "render/figures.h"
+#include "render/html_report.h"
+#include "render/log_lookup.h"
+#include "render/progress_bar.h"
+
+namespace cosim {
+
+int videoFrameCount(double duration, const RenderSettings& settings) {
+  // The small tolerance keeps a flight of exactly k frame periods at k + 1 frames despite
+  // rounding in the logged times.
+  return std::max(1, static_cast<int>(std::floor(duration / settings.speedup * settings.fps + 1e-6)) + 1);
+}
+
+int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
+                   const std::filesystem::path& out, VideoFormat format, bool progress) {
+  const int frames = videoFrameCount(renderer.endTime(), settings);
+  VideoEncoder video(out, renderer.width(), renderer.height(), settings.fps, format);
+  ProgressBar bar("rendering " + out.filename().string(), frames, progress);
+  const CameraKind kind = cameraKind(camera);
+  std::vector<std::uint8_t> rgb;
+  for (int k = 0; k < frames; ++k) {
+    renderer.render(k * settings.speedup / settings.fps, kind, rgb);
+    video.addFrame(rgb);
+    bar.update(k + 1);
+  }
+  video.finish();
+  return frames;
+}
+
+std::vector<std::string> videoCameras(const RenderSettings& settings) {
+  std::vector<std::string> cams = {settings.camera};
+  for (const auto& c : settings.cameras)
+    if (std::find(cams.begin(), cams.end(), c) == cams.end()) cams.push_back(c);
+  return cams;
+}
+
+std::string videoFileName(const RenderSettings& settings, const std::string& camera) {
+  return camera == settings.camera ? "video.mp4" : "video_" + camera + ".mp4";
+}
+
+RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+                             const std::filesystem::path& dir, const RunRenderRequest& request) {
+  RenderedRun done;
+  const auto say = [&](const std::string& what) {
+    if (request.progress) std::cerr << "cosim: " << what << std::endl;
+  };
+  const RenderSettings& rs = scenario.render;
+  RunRenderer renderer(world, scenario, log, rs.width, rs.height);
+  if (request.images) {
+    say("rendering final.png");
+    std::vector<std::uint8_t> rgb;
+    renderer.render(renderer.endTime(), CameraKind::Overview, rgb);
+    writePng(dir / "final.png", rgb, renderer.width(), renderer.height());
+    done.final_image = "final.png";
+    say("plotting figures/");
+    done.figures = writeRunFigures(log, scenario, dir / "figures");
+  }
+  if (request.video) {
+    for (const std::string& camera : videoCameras(rs)) {
+      const std::string file = videoFileName(rs, camera);
+      say("rendering " + file + " (" + camera + " camera, " +
+          std::to_string(videoFrameCount(renderer.endTime(), rs)) + " frames)");
+      renderRunVideo(renderer, rs, camera, dir / file, VideoFormat::Mp4, request.progress);
+      done.videos.push_back(file);
+      if (rs.png_frames)
+        renderRunVideo(renderer, rs, camera, dir / ("frames_" + camera), VideoFormat::PngSequence,
+                       request.progress);
+    }
+  }
+  return done;
+}
+
+void writeRunReport(const std::filesystem::path& dir, const Scenario& scenario,
+                    const std::string& metrics_json, const std::string& failure,
+                    const RenderedRun& rendered) {
+  HtmlReport r;
+  const std::string planner = scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
+  r.title = "cosim run: " + std::filesystem::path(scenario.file).stem().string() + " (" + planner + ", " +
+            scenario.controller_name + " controller)";
+  r.subtitle = failure.empty() ? "Every vehicle reached its goal without a collision."
+                               : "The run failed its task: " + failure;
+  r.videos = rendered.videos;
+  for (const auto& f : rendered.figures) r.figures.push_back("figures/" + f);
+  if (!rendered.final_image.empty()) r.images.push_back(rendered.final_image);
+  r.metrics_json = metrics_json;
+  writeHtmlReport(dir, r);
+}
+
+}  // namespace cosim

@@ -1,0 +1,53 @@
+#pragma once
+// Everything `cosim run` renders from a run's log into its folder: final.png, the videos (one
+// per camera of the scenario's render section, optionally also as PNG frames), the figures
+// (figures/*.png and .svg), and index.html showing them with the metrics.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/run_renderer.h"
+#include "render/video_encoder.h"
+#include "sim/run_log.h"
+#include "sim/scenario.h"
+#include "sim/world_model.h"
+
+namespace cosim {
+
+// Frames of a video of a `duration`-second flight: one every speedup/fps simulated seconds,
+// from t = 0 through the end (a 20 s flight at speedup 1 is a 20 s video).
+int videoFrameCount(double duration, const RenderSettings& settings);
+
+// Renders the whole flight from one camera into `out` (an .mp4 or a PNG folder). Returns the
+// number of frames. progress: a progress bar on stderr (only if it is a terminal).
+int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
+                   const std::filesystem::path& out, VideoFormat format, bool progress);
+
+// The cameras of a run's videos, in order, without repeats: render.camera, then render.cameras.
+std::vector<std::string> videoCameras(const RenderSettings& settings);
+// The file of a camera's video: video.mp4 for the main camera, video_<camera>.mp4 otherwise.
+std::string videoFileName(const RenderSettings& settings, const std::string& camera);
+
+struct RunRenderRequest {
+  bool images = true;    // final.png and the figures
+  bool video = true;     // the videos
+  bool progress = false; // progress lines and bars on stderr
+};
+
+// Files written, relative to the run folder.
+struct RenderedRun {
+  std::string final_image;
+  std::vector<std::string> videos;
+  std::vector<std::string> figures;  // base names in figures/ (each as .png and .svg)
+};
+
+RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+                             const std::filesystem::path& dir, const RunRenderRequest& request);
+
+// dir/index.html: the rendered files and the metrics table. failure: why the run failed its
+// task (empty if it succeeded).
+void writeRunReport(const std::filesystem::path& dir, const Scenario& scenario,
+                    const std::string& metrics_json, const std::string& failure,
+                    const RenderedRun& rendered);
+
+}  // namespace cosim

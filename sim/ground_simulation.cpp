@@ -1,0 +1,213 @@
+#include "sim/ground_simulation.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+
+#include "sim/ground_vehicle_handles.h"
+#include "sim/moving_obstacle_motion.h"
+
+namespace cosim {
+
+PlanarState readPlanarState(const mjData* d, const VehicleHandles& v) {
+  const mjtNum* q = d->qpos + v.qpos_adr;
+  const mjtNum* u = d->qvel + v.qvel_adr;
+  PlanarState s;
+  s.position = {q[0], q[1]};
+  s.velocity = {u[0], u[1]};
+  if (v.drive.planar_root) {  // slide x, slide y (from the start), hinge yaw
+    s.position += v.drive.planar_origin;
+    s.yaw = q[2];
+    s.yaw_rate = u[2];
+  } else {  // free joint: x y z qw qx qy qz; angular velocity in the body frame
+    s.yaw = std::atan2(2.0 * (q[3] * q[6] + q[4] * q[5]), 1.0 - 2.0 * (q[5] * q[5] + q[6] * q[6]));
+    s.yaw_rate = u[5];
+  }
+  return s;
+}
+
+namespace {
+
+Eigen::Quaterniond attitude(const mjData* d, const VehicleHandles& v) {
+  const mjtNum* q = d->qpos + v.qpos_adr;
+  if (v.drive.planar_root) return Eigen::Quaterniond(Eigen::AngleAxisd(q[2], Eigen::Vector3d::UnitZ()));
+  return Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized();
+}
+
+// The drive servos' set-points for a body-frame command.
+void actuate(mjData* d, const VehicleHandles& v, const PlanarState& s, const GroundCommand& c) {
+  if (v.drive.kind == GroundDrive::Kind::Holonomic) {
+    const double cy = std::cos(s.yaw), sy = std::sin(s.yaw);
+    d->ctrl[v.actuators[0]] = cy * c.forward - sy * c.lateral;
+    d->ctrl[v.actuators[1]] = sy * c.forward + cy * c.lateral;
+    d->ctrl[v.actuators[2]] = c.yaw_rate;
+  } else {
+    // Wheel speeds of a differential drive: (v -+ w s / 2) / r.
+    const double half = 0.5 * v.drive.wheel_separation * c.yaw_rate;
+    d->ctrl[v.actuators[0]] = (c.forward - half) / v.drive.wheel_radius;
+    d->ctrl[v.actuators[1]] = (c.forward + half) / v.drive.wheel_radius;
+  }
+}
+
+// Contact onsets between a robot and anything but the floor and itself; a contact lasting many
+// steps is one event. Pairs (vehicle, other geom) in contact are kept between steps.
+class GroundContactBook {
+ public:
+  GroundContactBook(const mjModel* m, const WorldModel& world) : m_(m), floor_(world.floorGeom()), owner_(m->ngeom, -1) {
+    for (std::size_t v = 0; v < world.vehicles().size(); ++v)
+      for (int g : world.vehicles()[v].geoms) owner_[g] = static_cast<int>(v);
+  }
+  void update(const mjData* d, RunLog& log) {
+    if (d->ncon == 0 && touching_.empty()) return;
+    std::set<std::pair<int, int>> now;
+    for (int i = 0; i < d->ncon; ++i) {
+      const mjContact& c = d->contact[i];
+      for (const auto& [mine, other] : {std::pair{c.geom1, c.geom2}, std::pair{c.geom2, c.geom1}}) {
+        const int v = owner_[mine];
+        if (v < 0 || other == floor_ || owner_[other] == v) continue;
+        if (now.insert({v, other}).second && !touching_.count({v, other})) {
+          const char* name = mj_id2name(m_, mjOBJ_GEOM, other);
+          log.vehicles[v].collisions.push_back({d->time, name ? name : "geom" + std::to_string(other),
+                                                Eigen::Vector3d(c.pos[0], c.pos[1], c.pos[2])});
+        }
+      }
+    }
+    touching_.swap(now);
+  }
+
+ private:
+  const mjModel* m_;
+  int floor_;
+  std::vector<int> owner_;
+  std::set<std::pair<int, int>> touching_;
+};
+
+}  // namespace
+
+RunLog simulateGround(const WorldModel& world, const Scenario& scenario, std::vector<GroundPilot>& pilots,
+                      const GroundSimOptions& options) {
+  const mjModel* m = world.model();
+  mjData* d = mj_makeData(m);
+  mj_resetData(m, d);
+  const auto& vehicles = world.vehicles();
+  for (const auto& v : vehicles)
+    if (v.drive.planar_root) setPlanarPose(d, v, v.drive.planar_origin, v.drive.start_yaw);
+  const SimSettings& cfg = options.settings;
+  const int steps_per_control = std::max(1, static_cast<int>(std::lround(1.0 / (cfg.timestep * cfg.control_rate))));
+  const double control_dt = steps_per_control * m->opt.timestep;
+  const int controls_per_log = std::max(1, static_cast<int>(std::ceil(1.0 / (options.log_rate * control_dt) - 1e-9)));
+  const long max_steps = static_cast<long>(std::ceil(cfg.max_time / m->opt.timestep));
+
+  // Moving obstacles: mocap bodies placed from their trajectories.
+  auto obstacle_xy = options.obstacle_position
+                         ? options.obstacle_position
+                         : [&scenario](std::size_t i, double t) { return movingObstaclePosition(scenario.moving_obstacles[i], t); };
+  std::vector<int> mocap;
+  RunLog log;
+  for (std::size_t i = 0; i < scenario.moving_obstacles.size(); ++i) {
+    const int body = mj_name2id(m, mjOBJ_BODY, movingObstacleName(i).c_str());
+    mocap.push_back(body >= 0 ? m->body_mocapid[body] : -1);
+    MovingObstacleLog& ol = log.moving_obstacles.emplace_back();
+    ol.name = movingObstacleName(i);
+    ol.radius = movingObstacleFootprintRadius(scenario.moving_obstacles[i]);
+  }
+  const auto placeObstacles = [&](double t) {
+    for (std::size_t i = 0; i < mocap.size(); ++i) {
+      if (mocap[i] < 0) continue;
+      const Eigen::Vector2d p = obstacle_xy(i, t);
+      d->mocap_pos[3 * mocap[i]] = p.x();
+      d->mocap_pos[3 * mocap[i] + 1] = p.y();
+    }
+  };
+  placeObstacles(0.0);
+  mj_forward(m, d);
+
+  for (std::size_t v = 0; v < vehicles.size(); ++v) {
+    VehicleLog& vl = log.vehicles.emplace_back();
+    vl.name = vehicles[v].name;
+    vl.radius = vehicles[v].params.radius;
+    vl.goal = pilots[v].goal;
+    vl.planned_path = pilots[v].planned_path;
+    pilots[v].controller->reset();
+  }
+  GroundContactBook contacts(m, world);
+  std::vector<PlanarState> states(vehicles.size());
+
+  const auto wall_start = std::chrono::steady_clock::now();
+  long step = 0, control_count = 0;
+  log.end_reason = "max_time";
+  for (; step < max_steps; ++step) {
+    if (step % steps_per_control == 0) {
+      if (options.interrupt && options.interrupt->load()) {
+        log.end_reason = "interrupted";
+        break;
+      }
+      for (std::size_t v = 0; v < vehicles.size(); ++v) states[v] = readPlanarState(d, vehicles[v]);
+      if (options.before_control && !options.before_control(d->time, states)) {
+        log.end_reason = "gave_up";
+        break;
+      }
+      const bool record = control_count++ % controls_per_log == 0;
+      bool all_done = true, diverged = false;
+      for (std::size_t v = 0; v < vehicles.size(); ++v) {
+        const PlanarState& s = states[v];
+        PlanarReference ref = pilots[v].path->sample(d->time);
+        ref.yaw = pilots[v].yaw;
+        const GroundCommand cmd = pilots[v].controller->update(s, ref, control_dt);
+        actuate(d, vehicles[v], s, cmd);
+
+        VehicleLog& vl = log.vehicles[v];
+        // Height: the free base's z; a planar base rides at its fixed height (logged as 0).
+        const double z = vehicles[v].drive.planar_root ? 0.0 : d->qpos[vehicles[v].qpos_adr + 2];
+        const Eigen::Vector3d pos(s.position.x(), s.position.y(), z);
+        if (!vl.reached_goal && ref.final && (pos - pilots[v].goal).head<2>().norm() < cfg.goal_tolerance) {
+          vl.reached_goal = true;
+          vl.arrival_time = d->time;
+        }
+        all_done = all_done && vl.reached_goal && d->time >= vl.arrival_time + options.hold_after_arrival;
+        diverged = diverged || !pos.allFinite();
+        if (!record) continue;
+        LogSample& x = vl.samples.emplace_back();
+        x.t = d->time;
+        x.ref_pos = {ref.position.x(), ref.position.y(), 0.0};
+        x.ref_vel = {ref.velocity.x(), ref.velocity.y(), 0.0};
+        x.pos = pos;
+        x.vel = {s.velocity.x(), s.velocity.y(), 0.0};
+        x.att = attitude(d, vehicles[v]);
+        x.omega = {0.0, 0.0, s.yaw_rate};
+        // "Rotor" columns of a ground robot: its drive servos' set-points and forces.
+        for (int i = 0; i < 4 && vehicles[v].actuators[i] >= 0; ++i) {
+          x.rotor_cmd[i] = d->ctrl[vehicles[v].actuators[i]];
+          x.rotor_thrust[i] = d->actuator_force[vehicles[v].actuators[i]];
+        }
+        x.saturated = cmd.saturated;
+      }
+      if (record)
+        for (std::size_t i = 0; i < mocap.size(); ++i) {
+          const Eigen::Vector2d p = obstacle_xy(i, d->time);
+          log.moving_obstacles[i].t.push_back(d->time);
+          log.moving_obstacles[i].pos.push_back({p.x(), p.y(), 0.0});
+        }
+      if (diverged) {
+        log.end_reason = "diverged";
+        break;
+      }
+      if (all_done) {
+        log.end_reason = "goal";
+        break;
+      }
+    }
+    placeObstacles(d->time);
+    mj_step(m, d);
+    contacts.update(d, log);
+  }
+  log.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  log.sim_time = d->time;
+  log.physics_steps = step;
+  for (int i = 0; i < mjNWARNING; ++i) log.mujoco_warnings += d->warning[i].number;
+  mj_deleteData(d);
+  return log;
+}
+
+}  // namespace cosim

@@ -1,0 +1,49 @@
+#pragma once
+// Ground robots described in URDF (read with urdfdom), turned into MuJoCo bodies for the composed
+// world: links become bodies (with their inertials), joints become MuJoCo joints, collision shapes
+// become colliding geoms and visuals become drawn-only geoms; then the actuators URDF cannot
+// express are added. Conventions (see models/omni_base.urdf and models/diff_drive.urdf):
+// - every MuJoCo name is prefixed "<vehicle>/"; the base body is "<vehicle>/base";
+// - a root link without mass or geometry joined to the base by a planar joint (axis z) makes a
+//   holonomic base: slide joints root_x, root_y and hinge root_yaw, driven by velocity servos
+//   drive_x, drive_y, drive_yaw (force and speed from the planar joint's <limit>);
+// - otherwise the root link is the base and gets a free joint "root"; it must then have two
+//   continuous joints named *left_wheel* and *right_wheel* (a differential drive), driven by
+//   velocity servos wheel_left, wheel_right (torque and speed from their <limit>);
+// - links named *caster* touch the floor without friction (a ball caster rolls every way).
+// The robot's URDF frame lies on the floor (REP 120 base_footprint): its origin is placed at the
+// vehicle's start (x, y) on the floor.
+#include <mujoco/mujoco.h>
+#include <Eigen/Core>
+#include <tinyxml2.h>
+
+#include "sim/scenario.h"
+
+namespace cosim {
+
+// How a ground robot moves, read back from the compiled model.
+struct GroundDrive {
+  enum class Kind { Holonomic, Differential };
+  Kind kind = Kind::Holonomic;
+  bool planar_root = false;  // root dofs: slide x, slide y, hinge yaw (else a free joint)
+  double max_speed = 0.0;       // m/s
+  double max_yaw_rate = 0.0;    // rad/s
+  double wheel_radius = 0.0;    // m (differential)
+  double wheel_separation = 0.0;  // m (differential)
+  // Planar root: the world (x, y) where root_x = root_y = 0, and the start heading (rad).
+  Eigen::Vector2d planar_origin = Eigen::Vector2d::Zero();
+  double start_yaw = 0.0;
+};
+
+// Appends the robot's bodies to `worldbody`, its actuators to `actuator`, its meshes to the
+// document's <asset> and its drive description to <custom>. Throws InputError naming the URDF
+// file and the element for a malformed URDF, a missing mesh or a robot that breaks the
+// conventions above.
+void addUrdfVehicle(tinyxml2::XMLDocument& doc, tinyxml2::XMLElement* worldbody,
+                    tinyxml2::XMLElement* actuator, const VehicleSpec& vehicle, double floor_z);
+
+// The drive that addUrdfVehicle recorded for `vehicle_name` in the compiled model; false if
+// there is none (not a ground robot).
+bool readGroundDrive(const mjModel* m, const std::string& vehicle_name, GroundDrive& drive);
+
+}  // namespace cosim

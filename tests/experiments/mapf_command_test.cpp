@@ -1,0 +1,103 @@
+// End-to-end tests of `cosim mapf` and the seed-004 reproductions / bench section (quick modes).
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "cli_test_support.h"
+#include "experiments/bench/mapf_planners.h"
+#include "experiments/reproduce/reproduction.h"
+
+namespace cosim::reproduce {
+std::string seed004Planners(const Options& options);
+std::string seed004WhcaWindow(const Options& options);
+std::string seed004MapfScaling(const Options& options);
+}  // namespace cosim::reproduce
+
+using namespace cosim;
+using cosim::test::runCosim;
+
+namespace {
+const std::string kMap = COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map";
+const std::string kScen = COSIM_TEST_DATA_DIR "/movingai/random-32-32-10-random-1.scen";
+
+// Rows of paths.csv per agent, and whether consecutive rows of an agent count t up from 0.
+std::vector<int> rowsPerAgent(const std::string& csv, int agents, bool* times_consecutive) {
+  std::vector<int> rows(agents, 0);
+  std::istringstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  *times_consecutive = true;
+  while (std::getline(in, line)) {
+    int a = 0, t = 0, x = 0, y = 0;
+    char c1, c2, c3;
+    std::istringstream l(line);
+    l >> a >> c1 >> t >> c2 >> x >> c3 >> y;
+    if (t != rows.at(a)) *times_consecutive = false;
+    ++rows.at(a);
+  }
+  return rows;
+}
+}  // namespace
+
+TEST(MapfCommand, CbsWritesAValidatedSolutionWithOneRowPerAgentPerStep) {
+  const auto dir = test::freshDir("mapf-cbs");
+  const auto r =
+      runCosim("mapf " + kMap + " " + kScen + " --agents 10 --planner cbs --out " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string json = test::slurp(dir / "mapf.json");
+  EXPECT_TRUE(test::jsonTrue(json, "success"));
+  EXPECT_EQ(test::jsonNumber(json, "conflicts"), 0);
+  EXPECT_EQ(test::jsonNumber(json, "agents"), 10);
+  const std::string csv = test::slurp(dir / "paths.csv");
+  EXPECT_EQ(csv.rfind("agent,t,x,y\n", 0), 0u);
+  bool consecutive = false;
+  const auto rows = rowsPerAgent(csv, 10, &consecutive);
+  EXPECT_TRUE(consecutive);
+  long soc = 0;
+  int longest = 0;
+  for (const int n : rows) soc += n - 1, longest = std::max(longest, n - 1);
+  // Rows run from t = 0 to each agent's arrival, so they add up to the reported costs.
+  EXPECT_EQ(test::jsonNumber(json, "sum_of_costs"), soc);
+  EXPECT_EQ(test::jsonNumber(json, "makespan"), longest);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(MapfCommand, ExitCodesForFailureAndBadInput) {
+  const auto dir = test::freshDir("mapf-codes");
+  const std::string base = "mapf " + kMap + " " + kScen + " --out " + dir.string();
+  // Independent A* paths conflict on 30 agents: planning failed, not bad input.
+  EXPECT_EQ(runCosim(base + " --agents 30 --planner independent_astar").status, 1);
+  const auto too_many = runCosim(base + " --agents 100000 --planner cbs");
+  EXPECT_EQ(too_many.status, 2);
+  EXPECT_NE(too_many.err.find("scenario lines"), std::string::npos);
+  EXPECT_EQ(runCosim(base + " --agents 5 --planner astar").status, 2);
+  EXPECT_EQ(runCosim(base + " --agents 5 --planner cbs --window 4").status, 2);
+  EXPECT_EQ(runCosim(base + " --agents 5 --planner whca_star --connectivity 6").status, 2);
+  EXPECT_EQ(runCosim(base + " --agents 5 --planner whca_star --window 4 --connectivity 8").status,
+            0);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Seed004Reproductions, QuickRunsProduceTheirTables) {
+  reproduce::Options o;
+  o.quick = true;
+  const std::string planners = reproduce::seed004Planners(o);
+  EXPECT_NE(planners.find("| maze | 5 | CBS (optimal) | 100 |"), std::string::npos) << planners;
+  EXPECT_NE(planners.find("no numeric results"), std::string::npos);
+  const std::string window = reproduce::seed004WhcaWindow(o);
+  EXPECT_NE(window.find("| bottleneck | 5 | dynamic |"), std::string::npos) << window;
+  const std::string scaling = reproduce::seed004MapfScaling(o);
+  EXPECT_NE(scaling.find("| empty-8-8 | 5 | 1 | 100 |"), std::string::npos) << scaling;
+}
+
+TEST(MapfBench, QuickSectionReportsBothPlannersAtTwentyAgents) {
+  const bench::Section s = bench::benchMapfPlanners(true);
+  int found = 0;
+  for (const auto& f : s.figures) {
+    if (f.name == "cbs_ms_random32_20" || f.name == "whca_ms_random32_20") {
+      ++found;
+      EXPECT_GT(f.value, 0.0);
+    }
+  }
+  EXPECT_EQ(found, 2);
+}

@@ -1,0 +1,62 @@
+// Camera poses of the named views, from the log alone.
+#include "render/camera_rig.h"
+
+#include <gtest/gtest.h>
+
+#include "render/run_renderer.h"
+#include "render_test_scene.h"
+#include "sim/world_model.h"
+
+using namespace cosim;
+using namespace cosim::test;
+
+TEST(CameraRig, FixedCameraSitsAtItsPositionLookingAtItsTarget) {
+  Scenario s = renderTestScenario();
+  s.render.has_fixed_camera = true;
+  s.render.fixed_pos = {-5, 10, 8};
+  s.render.fixed_lookat = {10, 10, 1};
+  const RunLog log = straightFlightLog(2.0);
+  const CameraRig rig(s, log, 16.0 / 9.0);
+  const CameraPose p = rig.pose(CameraKind::Fixed, 1.0);
+  EXPECT_LT((p.eye() - s.render.fixed_pos).norm(), 1e-9);
+  EXPECT_LT((p.lookat - s.render.fixed_lookat).norm(), 1e-9);
+  EXPECT_NEAR(p.azimuth, 0.0, 1e-9);  // looking along +x
+  EXPECT_LT(p.elevation, 0.0);        // and down
+}
+
+TEST(CameraRig, OrbitKeepsItsDistanceAndTurnsWithTime) {
+  const Scenario s = renderTestScenario();
+  const RunLog log = straightFlightLog(2.0);
+  const CameraRig rig(s, log, 16.0 / 9.0);
+  const CameraPose a = rig.pose(CameraKind::Orbit, 0.0), b = rig.pose(CameraKind::Orbit, 5.0);
+  EXPECT_NEAR(a.distance, b.distance, 1e-12);
+  // One turn per max(20 s, flight): 5 s of a 20 s period is a quarter turn.
+  EXPECT_NEAR(b.azimuth - a.azimuth, 90.0, 1e-9);
+}
+
+TEST(CameraRig, TopViewIsNearlyOrthographicAndFitsTheWorld) {
+  const Scenario s = renderTestScenario(320, 180);
+  const WorldModel world = WorldModel::build(s);
+  const RunLog log = straightFlightLog(2.0);
+  RunRenderer renderer(world, s, log, 320, 180);
+  std::vector<std::uint8_t> rgb;
+  renderer.render(1.0, "top", rgb, false);
+  Eigen::Vector2d lo, hi, high_point, low_point;
+  ASSERT_TRUE(renderer.project({0, 0, 0}, lo));
+  ASSERT_TRUE(renderer.project({20, 20, 0}, hi));
+  // +x right, +y up on screen, the 20 m height of the world filling ~94 % of the 180 rows.
+  EXPECT_GT(hi.x(), lo.x());
+  EXPECT_LT(hi.y(), lo.y());
+  EXPECT_NEAR(lo.y() - hi.y(), 180.0 / 1.06, 3.0);
+  EXPECT_NEAR(0.5 * (lo.x() + hi.x()), 160.0, 1.0);
+  // Nearly orthographic: a point 6 m up projects within 6 px of the floor point below it,
+  // even at the world's corner (through the model's 45-degree lens it would move ~36 px).
+  ASSERT_TRUE(renderer.project({20, 20, 6}, high_point));
+  ASSERT_TRUE(renderer.project({20, 20, 0}, low_point));
+  EXPECT_LT((high_point - low_point).norm(), 6.0);
+}
+
+TEST(CameraRig, UnknownCameraNameIsRejected) {
+  EXPECT_THROW(cameraKind("sideways"), std::invalid_argument);
+  EXPECT_EQ(cameraKind("orbit"), CameraKind::Orbit);
+}

@@ -1,0 +1,100 @@
+// Figures through gnuplot: a run's error/top/side figures and comparison charts from a CSV.
+#include "render/figures.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "planning/input_error.h"
+#include "render_test_scene.h"
+
+using namespace cosim;
+using namespace cosim::test;
+
+namespace {
+
+std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Width and height from a PNG's IHDR chunk.
+std::pair<int, int> pngSize(const std::filesystem::path& p) {
+  const std::string b = slurp(p);
+  if (b.size() < 24 || b.substr(1, 3) != "PNG") return {0, 0};
+  const auto be32 = [&](std::size_t at) {
+    return (static_cast<unsigned char>(b[at]) << 24) | (static_cast<unsigned char>(b[at + 1]) << 16) |
+           (static_cast<unsigned char>(b[at + 2]) << 8) | static_cast<unsigned char>(b[at + 3]);
+  };
+  return {be32(16), be32(20)};
+}
+
+}  // namespace
+
+TEST(Figures, RunFiguresAreWrittenAsPngAndSvgWithTheirContent) {
+  const auto dir = freshTestDir("figures");
+  const Scenario s = renderTestScenario();
+  const RunLog log = straightFlightLog(3.0, 0.25);
+  const std::vector<std::string> names = writeRunFigures(log, s, dir / "figures");
+  EXPECT_EQ(names, (std::vector<std::string>{"error", "top", "side"}));
+  EXPECT_EQ(pngSize(dir / "figures" / "error.png"), std::make_pair(1000, 480));
+  EXPECT_EQ(pngSize(dir / "figures" / "top.png"), std::make_pair(1000, 880));
+  EXPECT_EQ(pngSize(dir / "figures" / "side.png"), std::make_pair(1000, 560));
+  const std::string top = slurp(dir / "figures" / "top.svg");
+  EXPECT_NE(top.find("<svg"), std::string::npos);
+  EXPECT_NE(top.find("Top view"), std::string::npos);
+  EXPECT_NE(top.find("planned path"), std::string::npos);
+  EXPECT_NE(top.find("reference trajectory"), std::string::npos);
+  EXPECT_NE(top.find("tracking error [m]"), std::string::npos);
+  // The error figure names the RMSE of the synthetic lag 0.25 sin(pi k/300) over its 301
+  // samples: 0.25 sqrt(150/301) = 0.176 m, and its maximum 0.25 m.
+  const std::string error = slurp(dir / "figures" / "error.svg");
+  EXPECT_NE(error.find("RMSE 0.176 m, max 0.25 m"), std::string::npos);
+  // Nothing but the six figures is left in the folder.
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir / "figures")) ++entries;
+  EXPECT_EQ(entries, 6);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Figures, ComparisonChartWithNumericXIsALinePerGroupAveragedOverRepeats) {
+  const auto dir = freshTestDir("chart_lines");
+  std::ofstream(dir / "results.csv") << "job,planner.name,resolution,planning_time_ms,status\n"
+                                        "1,astar,0.5,10,ok\n2,astar,0.5,14,ok\n3,astar,1.0,4,ok\n"
+                                        "4,theta_star,0.5,20,ok\n5,theta_star,1.0,7,ok\n6,theta_star,1.0,,failed\n";
+  writeComparisonChart(dir / "results.csv", "resolution", "planning_time_ms", "planner.name", dir / "time");
+  EXPECT_EQ(pngSize(dir / "time.png"), std::make_pair(900, 500));
+  const std::string svg = slurp(dir / "time.svg");
+  EXPECT_NE(svg.find(">astar<"), std::string::npos);
+  EXPECT_NE(svg.find(">theta_star<"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Figures, ComparisonChartWithCategoricalXIsBars) {
+  const auto dir = freshTestDir("chart_bars");
+  std::ofstream(dir / "results.csv") << "planner,scenario,rmse_m\nastar,forest,0.1\nrrt_star,forest,0.2\n"
+                                        "astar,canyon,0.15\nrrt_star,canyon,0.3\n";
+  writeComparisonChart(dir / "results.csv", "planner", "rmse_m", "scenario", dir / "rmse");
+  const std::string svg = slurp(dir / "rmse.svg");
+  EXPECT_NE(svg.find(">forest<"), std::string::npos);
+  EXPECT_NE(svg.find(">canyon<"), std::string::npos);
+  EXPECT_NE(svg.find(">rrt_star<"), std::string::npos);  // a category on the x axis
+  EXPECT_GT(std::filesystem::file_size(dir / "rmse.png"), 5000u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Figures, ComparisonChartNamesAMissingColumn) {
+  const auto dir = freshTestDir("chart_bad");
+  std::ofstream(dir / "results.csv") << "planner,rmse_m\nastar,0.1\n";
+  try {
+    writeComparisonChart(dir / "results.csv", "planner", "max_error_m", "", dir / "x");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("max_error_m"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
+  std::filesystem::remove_all(dir);
+}

@@ -1,0 +1,77 @@
+// index.html opened in headless Chromium: every video and image loads.
+#include "render/html_report.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "render/json_flatten.h"
+#include "render/run_outputs.h"
+#include "render_test_scene.h"
+
+using namespace cosim;
+using namespace cosim::test;
+
+namespace {
+
+std::string chromium() {
+  for (const char* p : {"/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"})
+    if (std::filesystem::exists(p)) return p;
+  return "";
+}
+
+// The DOM after scripts ran, as Chromium saw it (empty if Chromium failed).
+std::string dumpDom(const std::string& browser, const std::filesystem::path& page) {
+  const auto dir = page.parent_path();
+  const std::filesystem::path profile = dir / "chromium-profile", out = dir / "dom.html";
+  const std::string cmd = browser +
+                          " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run"
+                          " --disable-background-networking --disable-component-update --disable-sync"
+                          " --autoplay-policy=no-user-gesture-required --user-data-dir=" + profile.string() +
+                          " --virtual-time-budget=20000 --dump-dom file://" + page.string() + " > " + out.string() +
+                          " 2> /dev/null";
+  if (std::system(cmd.c_str()) != 0) return "";
+  std::ifstream in(out);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+TEST(HtmlReport, FlattenedMetricsKeepDocumentOrderAndNesting) {
+  const auto f = flattenJson(R"({"a": 1.5, "b": {"c": "x\"y"}, "v": [{"d": true}, {"d": null}], "e": {}})");
+  ASSERT_EQ(f.size(), 4u);
+  EXPECT_EQ(f[0], std::make_pair(std::string("a"), std::string("1.5")));
+  EXPECT_EQ(f[1], std::make_pair(std::string("b.c"), std::string("x\"y")));
+  EXPECT_EQ(f[2], std::make_pair(std::string("v[0].d"), std::string("true")));
+  EXPECT_EQ(f[3], std::make_pair(std::string("v[1].d"), std::string("null")));
+  EXPECT_THROW(flattenJson("{\"a\": "), std::runtime_error);
+}
+
+TEST(HtmlReport, RunReportLoadsEveryVideoAndFigureInHeadlessChromium) {
+  const std::string browser = chromium();
+  if (browser.empty())
+    GTEST_SKIP() << "Chromium is not installed (Debian package 'chromium'); the report cannot be checked";
+  const auto dir = freshTestDir("report");
+  Scenario s = renderTestScenario(320, 180);
+  s.render.fps = 5;
+  s.render.cameras = {"top"};
+  const RunLog log = straightFlightLog(1.0);
+  const WorldModel world = WorldModel::build(s);
+  RunRenderRequest request;
+  const RenderedRun rendered = renderRunOutputs(world, s, log, dir, request);
+  EXPECT_EQ(rendered.videos, (std::vector<std::string>{"video.mp4", "video_top.mp4"}));
+  writeRunReport(dir, s, R"({"reached_goal": true, "rmse_m": 0.0123})", "", rendered);
+  const std::string dom = dumpDom(browser, dir / "index.html");
+  ASSERT_FALSE(dom.empty()) << "Chromium did not run";
+  EXPECT_NE(dom.find("data-media=\"loaded\""), std::string::npos) << dom.substr(0, 3000);
+  EXPECT_NE(dom.find("0.0123"), std::string::npos);  // the metrics table
+
+  // The check can fail: with a figure missing, the page reports it.
+  std::filesystem::remove(dir / "figures" / "side.png");
+  const std::string broken = dumpDom(browser, dir / "index.html");
+  EXPECT_NE(broken.find("data-media=\"failed: figures/side.png\""), std::string::npos) << broken.substr(0, 3000);
+  std::filesystem::remove_all(dir);
+}
