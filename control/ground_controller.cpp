@@ -6,7 +6,8 @@
 namespace cosim {
 
 void GroundMotionLimits::validate() const {
-  if (!(max_speed > 0) || !(max_acceleration > 0) || !(max_yaw_rate > 0) || !(max_yaw_acceleration > 0))
+  if (!(max_speed > 0) || !(max_acceleration > 0) || !(max_yaw_rate > 0) ||
+      !(max_yaw_acceleration > 0))
     throw std::invalid_argument("ground motion limits must be positive");
 }
 

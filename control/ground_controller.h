@@ -8,15 +8,15 @@ namespace cosim {
 struct PlanarState {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();  // m, world frame
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();  // m/s, world frame
-  double yaw = 0.0;                                     // rad
-  double yaw_rate = 0.0;                                // rad/s
+  double yaw = 0.0;                                    // rad
+  double yaw_rate = 0.0;                               // rad/s
 };
 
 struct PlanarReference {
   Eigen::Vector2d position = Eigen::Vector2d::Zero();
   Eigen::Vector2d velocity = Eigen::Vector2d::Zero();  // feed-forward
-  double yaw = 0.0;          // heading to hold (holonomic bases; differential drives ignore it)
-  bool final = false;        // the reference has come to rest at its last point
+  double yaw = 0.0;    // heading to hold (holonomic bases; differential drives ignore it)
+  bool final = false;  // the reference has come to rest at its last point
 };
 
 // Body-frame twist: forward (x), lateral (y, zero for a differential drive), yaw rate.
@@ -38,7 +38,8 @@ class GroundController {
  public:
   virtual ~GroundController() = default;
   virtual void reset() = 0;
-  virtual GroundCommand update(const PlanarState& state, const PlanarReference& reference, double dt) = 0;
+  virtual GroundCommand update(const PlanarState& state, const PlanarReference& reference,
+                               double dt) = 0;
 };
 
 // Wraps an angle to (-pi, pi].

@@ -11,16 +11,21 @@ GroundFeedbackLinearization::GroundFeedbackLinearization(GroundMotionLimits limi
     : limits_(limits), p_(params) {
   limits_.validate();
   if (!(p_.b > 0) || !(p_.k > 0) || !(p_.wheel_separation > 0))
-    throw std::invalid_argument("feedback linearisation: b, k and the wheel separation must be positive");
+    throw std::invalid_argument(
+        "feedback linearisation: b, k and the wheel separation must be positive");
 }
 
-void GroundFeedbackLinearization::reset() { v_ = w_ = 0.0; }
+void GroundFeedbackLinearization::reset() {
+  v_ = w_ = 0.0;
+}
 
-GroundCommand GroundFeedbackLinearization::update(const PlanarState& x, const PlanarReference& r, double dt) {
+GroundCommand GroundFeedbackLinearization::update(const PlanarState& x, const PlanarReference& r,
+                                                  double dt) {
   GroundCommand c;
   const Eigen::Vector2d heading(std::cos(x.yaw), std::sin(x.yaw));
   const double ref_speed = r.velocity.norm();
-  const Eigen::Vector2d ref_heading = ref_speed > 1e-6 ? Eigen::Vector2d(r.velocity / ref_speed) : heading;
+  const Eigen::Vector2d ref_heading =
+      ref_speed > 1e-6 ? Eigen::Vector2d(r.velocity / ref_speed) : heading;
   const Eigen::Vector2d b_point = x.position + p_.b * heading;
   const Eigen::Vector2d b_ref = r.position + p_.b * ref_heading;
   const Eigen::Vector2d u = r.velocity + p_.k * (b_ref - b_point);
@@ -30,7 +35,8 @@ GroundCommand GroundFeedbackLinearization::update(const PlanarState& x, const Pl
   // One common factor keeps the curvature w / v: speed, yaw rate, and each wheel's speed.
   double scale = 1.0;
   if (std::abs(v) > limits_.max_speed) scale = std::min(scale, limits_.max_speed / std::abs(v));
-  if (std::abs(w) > limits_.max_yaw_rate) scale = std::min(scale, limits_.max_yaw_rate / std::abs(w));
+  if (std::abs(w) > limits_.max_yaw_rate)
+    scale = std::min(scale, limits_.max_yaw_rate / std::abs(w));
   const double wheel = std::abs(v) + 0.5 * p_.wheel_separation * std::abs(w);
   if (wheel > limits_.max_speed) scale = std::min(scale, limits_.max_speed / wheel);
   c.saturated = scale < 1.0;

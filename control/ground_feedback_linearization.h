@@ -14,16 +14,18 @@
 namespace cosim {
 
 struct GroundFeedbackLinearizationParams {
-  double b = 0.08;        // m, the tracked point ahead of the axle (about half the robot's length)
-  double k = 2.0;         // 1/s, error decay rate of the tracked point
+  double b = 0.08;  // m, the tracked point ahead of the axle (about half the robot's length)
+  double k = 2.0;   // 1/s, error decay rate of the tracked point
   double wheel_separation = 0.16;  // m, for the wheel-speed limit |v| + |w| s / 2 <= max_speed
 };
 
 class GroundFeedbackLinearization : public GroundController {
  public:
-  GroundFeedbackLinearization(GroundMotionLimits limits, GroundFeedbackLinearizationParams params = {});
+  GroundFeedbackLinearization(GroundMotionLimits limits,
+                              GroundFeedbackLinearizationParams params = {});
   void reset() override;
-  GroundCommand update(const PlanarState& state, const PlanarReference& reference, double dt) override;
+  GroundCommand update(const PlanarState& state, const PlanarReference& reference,
+                       double dt) override;
 
  private:
   GroundMotionLimits limits_;

@@ -6,7 +6,8 @@
 
 namespace cosim {
 
-GroundVelocityTracker::GroundVelocityTracker(GroundMotionLimits limits, GroundVelocityTrackerGains gains)
+GroundVelocityTracker::GroundVelocityTracker(GroundMotionLimits limits,
+                                             GroundVelocityTrackerGains gains)
     : limits_(limits), gains_(gains) {
   limits_.validate();
   if (!(gains_.k_position > 0) || !(gains_.k_yaw > 0))
@@ -18,7 +19,8 @@ void GroundVelocityTracker::reset() {
   yaw_rate_ = 0.0;
 }
 
-GroundCommand GroundVelocityTracker::update(const PlanarState& x, const PlanarReference& r, double dt) {
+GroundCommand GroundVelocityTracker::update(const PlanarState& x, const PlanarReference& r,
+                                            double dt) {
   GroundCommand c;
   Eigen::Vector2d v = r.velocity + gains_.k_position * (r.position - x.position);
   if (v.norm() > limits_.max_speed) {
@@ -26,7 +28,8 @@ GroundCommand GroundVelocityTracker::update(const PlanarState& x, const PlanarRe
     c.saturated = true;
   }
   c.saturated |= stepTowards(velocity_, v, limits_.max_acceleration * dt);
-  double w = std::clamp(gains_.k_yaw * wrapAngle(r.yaw - x.yaw), -limits_.max_yaw_rate, limits_.max_yaw_rate);
+  double w = std::clamp(gains_.k_yaw * wrapAngle(r.yaw - x.yaw), -limits_.max_yaw_rate,
+                        limits_.max_yaw_rate);
   c.saturated |= stepTowards(yaw_rate_, w, limits_.max_yaw_acceleration * dt);
   const double cy = std::cos(x.yaw), sy = std::sin(x.yaw);
   c.forward = cy * velocity_.x() + sy * velocity_.y();

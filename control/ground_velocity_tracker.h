@@ -16,7 +16,8 @@ class GroundVelocityTracker : public GroundController {
  public:
   GroundVelocityTracker(GroundMotionLimits limits, GroundVelocityTrackerGains gains = {});
   void reset() override;
-  GroundCommand update(const PlanarState& state, const PlanarReference& reference, double dt) override;
+  GroundCommand update(const PlanarState& state, const PlanarReference& reference,
+                       double dt) override;
 
  private:
   GroundMotionLimits limits_;

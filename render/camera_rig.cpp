@@ -51,8 +51,9 @@ CameraPose CameraRig::chase(double t) const {
   const Eigen::Vector3d d = moved + 0.3 * toward;
   p.lookat = pos;
   p.azimuth = d.head<2>().norm() > 1e-9 ? std::atan2(d.y(), d.x()) / kDeg : 0.0;
-  p.elevation = -22.0;
-  p.distance = std::max(1.5, 18.0 * std::max(v.radius, 0.05));
+  // High enough to see over the obstacles next to the vehicle and the path ahead on the floor.
+  p.elevation = -30.0;
+  p.distance = std::max(1.5, 20.0 * std::max(v.radius, 0.05));
   return p;
 }
 
@@ -67,10 +68,10 @@ CameraPose CameraRig::pose(CameraKind kind, double t) const {
       if (!log_.vehicles.empty() && !log_.vehicles.front().samples.empty()) return chase(t);
       [[fallthrough]];
     case CameraKind::Overview:
-      p.lookat = {centre.x(), centre.y(), lo.z()};
+      p.lookat = {centre.x(), centre.y(), lo.z() + 0.2 * (hi.z() - lo.z())};
       p.azimuth = 225.0;  // from beyond the (max x, max y) corner, looking back at the start side
-      p.elevation = -42.0;
-      p.distance = 1.05 * extent;
+      p.elevation = -45.0;
+      p.distance = 0.88 * extent;
       return p;
     case CameraKind::Orbit: {
       // One revolution over the flight (at least 20 s per turn, so short flights do not spin).

@@ -213,8 +213,10 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
     if (v.reached_goal && v.arrival_time >= 0)
       error_marks << "set arrow from first " << num(v.arrival_time) << ", graph 0 to first " << num(v.arrival_time)
                   << ", graph 1 nohead dt (2,3) lw 1 lc rgb '#606060'\n"
-                  << "set label " << gnuplotString(" goal reached") << " at first " << num(v.arrival_time)
-                  << ", graph 0.95 left tc rgb '#404040' font ',9'\n";
+                  << "set label " << gnuplotString("goal reached ") << " at first " << num(v.arrival_time)
+                  << ", graph 0.5 right rotate by 90 offset -0.8,0 tc rgb '#404040' font ',9'\n";
+    error_marks << "set label " << gnuplotString("RMSE") << " at graph 0.005, first " << num(m.rmse_m)
+                << " left offset 0,0.6 tc rgb '" << colour << "' font ',9'\n";
   }
   const double scale = errorScaleMax(max_error);
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
@@ -223,7 +225,7 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
 
   std::ostringstream common;
   common << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid lc rgb '#dddddd' lw 1\n"
-         << "set tics out nomirror\nset key box lc rgb '#bbbbbb' opaque samplen 2.5 spacing 1.1 font ',10'\n";
+         << "set tics out nomirror\nset key box lc rgb '#bbbbbb' opaque samplen 2.5 spacing 1.1 font ',10' Left reverse\n";
 
   std::ostringstream error;
   error << common.str() << "set title " << gnuplotString("Tracking error against " + reference + " (" + planner + ")")
@@ -253,8 +255,12 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
        << num(hi.z()) << "]\nset key outside below horizontal center\n"
        << pathPlot(log, along, 2, against) << "\n";
 
+  // The top view keeps equal axes: the canvas height follows the world's aspect ratio (the
+  // plot is ~760 px wide; title, axes and key take ~190 px).
+  const double aspect = (hi.y() - lo.y()) / std::max(1e-9, hi.x() - lo.x());
+  const int top_height = 2 * static_cast<int>(std::clamp(95.0 + 380.0 * aspect, 250.0, 700.0));
   std::string script = plotBoth("error", 1000, 480, error.str()) + "reset\n" +
-                       plotBoth("top", 1000, 880, top.str()) + "reset\n" + plotBoth("side", 1000, 560, side.str());
+                       plotBoth("top", 1000, top_height, top.str()) + "reset\n" + plotBoth("side", 1000, 560, side.str());
   runGnuplot(script, work.path());
   const std::vector<std::string> names = {"error", "top", "side"};
   for (const auto& n : names)

@@ -61,9 +61,13 @@ void FrameAnnotations::legend(const std::vector<LegendEntry>& entries) {
   box(x, y0, w, h);
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const int y = y0 + h - pad_ - static_cast<int>(i + 1) * lineHeight();
-    const Eigen::Vector3f& c = entries[i].colour;
-    mjr_rectangle({x + pad_, y + con_->charHeight / 3, swatch, std::max(3, con_->charHeight / 3)}, c.x(),
-                  c.y(), c.z(), 1.0f);
+    const int sy = y + con_->charHeight / 3, sh = std::max(3, con_->charHeight / 3);
+    const int pieces = entries[i].gradient ? 8 : 1;
+    for (int k = 0; k < pieces; ++k) {
+      const Eigen::Vector3f c = entries[i].gradient ? errorColour((k + 0.5) / pieces) : entries[i].colour;
+      const int x0 = x + pad_ + swatch * k / pieces, x1 = x + pad_ + swatch * (k + 1) / pieces;
+      mjr_rectangle({x0, sy, x1 - x0, sh}, c.x(), c.y(), c.z(), 1.0f);
+    }
     text(entries[i].label, x + 2 * pad_ + swatch, y, kText);
   }
 }

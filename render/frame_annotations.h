@@ -13,6 +13,7 @@ namespace cosim {
 struct LegendEntry {
   std::string label;
   Eigen::Vector3f colour;
+  bool gradient = false;  // the swatch shows the error colour scale instead
 };
 
 class FrameAnnotations {

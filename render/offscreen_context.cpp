@@ -9,9 +9,8 @@
 namespace cosim {
 
 int fontScaleForHeight(int height) {
-  if (height >= 1000) return mjFONTSCALE_200;
-  if (height >= 600) return mjFONTSCALE_150;
-  if (height >= 350) return mjFONTSCALE_100;
+  if (height >= 1000) return mjFONTSCALE_150;
+  if (height >= 540) return mjFONTSCALE_100;
   return mjFONTSCALE_50;
 }
 

@@ -8,7 +8,8 @@
 
 namespace cosim {
 
-// mjFONTSCALE_* for a frame height: text stays about 2.5 % of the frame height.
+// mjFONTSCALE_* for a frame height: text about 2 % of the frame height (readable, and the
+// boxes leave the scene visible).
 int fontScaleForHeight(int height);
 
 class OffscreenContext {

@@ -6,6 +6,7 @@
 
 #include "render/frame_annotations.h"
 #include "render/log_lookup.h"
+#include "sim/ground_vehicle_handles.h"
 
 namespace cosim {
 
@@ -41,6 +42,8 @@ RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, cons
     for (double e : errors_.back()) max_error = std::max(max_error, e);
   }
   error_scale_ = errorScaleMax(max_error);
+  for (std::size_t i = 0; i < scenario.world.obstacles.size(); ++i)
+    obstacle_geoms_.push_back(mj_name2id(m, mjOBJ_GEOM, ("obstacle" + std::to_string(i)).c_str()));
 }
 
 RunRenderer::~RunRenderer() {
@@ -55,6 +58,11 @@ void RunRenderer::poseVehicles(double t) {
     const VehicleLog& vl = log_.vehicles[v];
     if (vl.samples.empty()) continue;
     const LogSample& s = vl.samples[sampleIndexAt(vl, t)];
+    if (world_.vehicles()[v].drive.planar_root) {  // a planar ground base: x, y, yaw joints
+      const Eigen::Matrix3d R = s.att.toRotationMatrix();
+      setPlanarPose(data_, world_.vehicles()[v], s.pos.head<2>(), std::atan2(R(1, 0), R(0, 0)));
+      continue;
+    }
     mjtNum* q = data_->qpos + world_.vehicles()[v].qpos_adr;
     q[0] = s.pos.x();
     q[1] = s.pos.y();
@@ -63,6 +71,14 @@ void RunRenderer::poseVehicles(double t) {
     q[4] = s.att.x();
     q[5] = s.att.y();
     q[6] = s.att.z();
+  }
+  // Moving obstacles (mocap bodies) where the log saw them.
+  for (const MovingObstacleLog& o : log_.moving_obstacles) {
+    const int body = mj_name2id(m, mjOBJ_BODY, o.name.c_str());
+    if (body < 0 || m->body_mocapid[body] < 0 || o.t.empty()) continue;
+    const auto it = std::upper_bound(o.t.begin(), o.t.end(), t);
+    const std::size_t k = it == o.t.begin() ? 0 : static_cast<std::size_t>(it - o.t.begin()) - 1;
+    for (int i = 0; i < 2; ++i) data_->mocap_pos[3 * m->body_mocapid[body] + i] = o.pos[k][i];
   }
   mj_kinematics(m, data_);
   mj_camlight(m, data_);
@@ -78,15 +94,36 @@ void RunRenderer::applyCamera(const CameraPose& pose) {
   line_radius_ = 0.5 * kLineWidthFraction * visible_height;
 }
 
-void RunRenderer::fadeObstacles() {
-  if (scenario_.render.obstacle_alpha >= 1.0) return;
+void RunRenderer::fadeObstacles(const CameraPose& pose, CameraKind camera, double t) {
   const mjModel* m = world_.model();
+  // Obstacles between the chase camera and its vehicle would hide it: they turn see-through.
+  std::vector<int> occluders;
+  if (camera == CameraKind::Chase && !log_.vehicles.empty() && !log_.vehicles[0].samples.empty()) {
+    const VehicleLog& v = log_.vehicles[0];
+    const Eigen::Vector3d eye = pose.eye(), target = v.samples[sampleIndexAt(v, t)].pos;
+    for (std::size_t i = 0; i < scenario_.world.obstacles.size(); ++i) {
+      const Obstacle& o = scenario_.world.obstacles[i];
+      // Sample the sight line up to the vehicle's bounding sphere (signedDistance is exact).
+      const int samples = 48;
+      for (int k = 0; k < samples; ++k) {
+        const Eigen::Vector3d p = eye + (target - eye) * (k / static_cast<double>(samples));
+        if ((p - target).norm() < v.radius) break;
+        if (o.signedDistance(p) < 0.5 * v.radius) {
+          occluders.push_back(obstacle_geoms_[i]);
+          break;
+        }
+      }
+    }
+  }
+  const float alpha = static_cast<float>(scenario_.render.obstacle_alpha);
+  if (alpha >= 1.0f && occluders.empty()) return;
   for (int i = 0; i < scene_.ngeom; ++i) {
     mjvGeom& g = scene_.geoms[i];
     // Static world geometry (body 0) except the floor: the scenario's obstacles and includes.
-    if (g.objtype == mjOBJ_GEOM && g.objid >= 0 && g.objid != world_.floorGeom() &&
-        m->geom_bodyid[g.objid] == 0)
-      g.rgba[3] = static_cast<float>(scenario_.render.obstacle_alpha);
+    if (g.objtype != mjOBJ_GEOM || g.objid < 0 || g.objid == world_.floorGeom() || m->geom_bodyid[g.objid] != 0)
+      continue;
+    const bool occluding = std::find(occluders.begin(), occluders.end(), g.objid) != occluders.end();
+    g.rgba[3] = std::min(alpha, occluding ? 0.3f : 1.0f);
   }
 }
 
@@ -155,7 +192,7 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
     addSphere(v.goal, 3.5 * line_radius_, several ? planned : kGoalColour, 0.95f);
     const Eigen::Vector3d floor(v.goal.x(), v.goal.y(), scenario_.world.bounds_min.z());
     addSegment(floor, v.goal - Eigen::Vector3d(0, 0, 3.0 * line_radius_), several ? planned : kGoalColour,
-               0.4 * line_radius_, 0.8f);
+               0.5 * line_radius_);
     if (v.samples.empty()) continue;
     // The reference trajectory (only when it is a trajectory; a waypoint reference is the
     // planned path itself): dashes along the whole flight.
@@ -212,7 +249,7 @@ void RunRenderer::annotate(double t) {
       legend.push_back({log_.vehicles[a].name + " planned", agentColour(a)});
   }
   if (against_trajectory_) legend.push_back({"reference trajectory (dashed)", kReferenceColour});
-  legend.push_back({"flown path (colour = error)", errorColour(0.6)});
+  legend.push_back({"flown path (colour = error)", errorColour(0.6), /*gradient=*/true});
   if (log_.vehicles.size() == 1) {
     legend.push_back({"start", kStartColour});
     legend.push_back({"goal", kGoalColour});
@@ -241,7 +278,17 @@ void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>&
       c.frustum_far = std::max(c.frustum_far, static_cast<float>(2.0 * pose.distance));
     }
   }
-  fadeObstacles();
+  if (camera == CameraKind::Top) {
+    // Straight down, the headlight meets the floor head-on and washes everything out: dim it
+    // so the sun's shading and shadows show the obstacles' shapes.
+    for (int i = 0; i < scene_.nlight; ++i)
+      if (scene_.lights[i].headlight)
+        for (int k = 0; k < 3; ++k) {
+          scene_.lights[i].diffuse[k] *= 0.3f;
+          scene_.lights[i].ambient[k] *= 0.75f;
+        }
+  }
+  fadeObstacles(pose, camera, t);
   addOverlays(t, camera);
   mjr_render(ctx_->viewport(), &scene_, ctx_->context());
   if (annotate_frame && !log_.vehicles.empty()) annotate(t);

@@ -46,7 +46,7 @@ class RunRenderer {
  private:
   void poseVehicles(double t);
   void applyCamera(const CameraPose& pose);
-  void fadeObstacles();
+  void fadeObstacles(const CameraPose& pose, CameraKind camera, double t);
   void addOverlays(double t, CameraKind camera);
   void addTrail(std::size_t vehicle, double t);
   void addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3f& rgb,
@@ -61,6 +61,7 @@ class RunRenderer {
   CameraRig rig_;
   bool against_trajectory_;
   std::vector<std::vector<double>> errors_;  // per vehicle, per sample
+  std::vector<int> obstacle_geoms_;          // geom id of each scenario obstacle (-1 if absent)
   double error_scale_ = 0.1;
   double end_time_ = 0.0;
   mjData* data_ = nullptr;

@@ -79,6 +79,15 @@ bool finite(const mjData* d, int nq) {
   return true;
 }
 
+// MuJoCo's answer to a NaN or huge number in the state or the controls is a warning and a reset of
+// the data (or zeroed controls): the vehicle would jump back to its start and the log go on as if
+// nothing happened.
+bool badNumberWarning(const mjData* d) {
+  for (int w : {mjWARN_BADQPOS, mjWARN_BADQVEL, mjWARN_BADQACC, mjWARN_BADCTRL})
+    if (d->warning[w].number > 0) return true;
+  return false;
+}
+
 }  // namespace
 
 RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
@@ -86,6 +95,15 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
   const mjModel* m = world.model();
   mjData* d = mj_makeData(m);
   mj_resetData(m, d);
+  // Vehicles start hovering: rotors already spinning at hover thrust (the motor lag would
+  // otherwise drop every vehicle for its first tens of milliseconds).
+  for (const VehicleHandles& v : world.vehicles()) {
+    const double hover = v.params.mass * v.params.gravity / 4.0;
+    for (int i = 0; i < 4; ++i) {
+      d->ctrl[v.actuators[i]] = hover;
+      d->act[v.actuators[i] - (m->nu - m->na)] = hover;
+    }
+  }
   mj_forward(m, d);
 
   const SimSettings& cfg = options.settings;
@@ -113,6 +131,9 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
   const bool disturbed = scenario.disturbances.any();
   const Eigen::Vector3d lo = scenario.world.bounds_min, hi = scenario.world.bounds_max;
   const double far = 10.0 * (hi - lo).norm();
+
+  // Since when each vehicle's mixer has been saturated without a break (negative: it is not).
+  std::vector<double> saturated_since(vehicles.size(), -1.0);
 
   const auto wall_start = std::chrono::steady_clock::now();
   long step = 0;
@@ -145,6 +166,13 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
         for (int i = 0; i < 4; ++i)
           x.rotor_thrust[i] = d->act[vehicles[v].actuators[i] - (m->nu - m->na)];
         x.saturated = out.saturated;
+        if (!out.saturated) {
+          saturated_since[v] = -1.0;
+        } else if (saturated_since[v] < 0.0) {
+          saturated_since[v] = d->time;
+        } else if (d->time - saturated_since[v] > options.max_saturated_time) {
+          log.end_reason = "saturated";
+        }
 
         // Arrival: on the final set-point and within the goal tolerance.
         if (!vl.reached_goal && pilots[v].reference->atFinalSetpoint() &&
@@ -158,7 +186,7 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
           log.end_reason = "diverged";
         }
       }
-      if (log.end_reason == "diverged") break;
+      if (log.end_reason == "diverged" || log.end_reason == "saturated") break;
       if (all_done) {
         log.end_reason = "goal";
         break;
@@ -169,6 +197,11 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
     contacts.update(d, log);
     if (!finite(d, m->nq)) {
       log.end_reason = "diverged";
+      ++step;
+      break;
+    }
+    if (badNumberWarning(d)) {
+      log.end_reason = "unstable";
       ++step;
       break;
     }

@@ -23,13 +23,17 @@ struct FlightOptions {
   SimSettings settings;
   double hold_after_arrival = 1.0;  // s of hovering at the goal before the run ends
   const std::atomic<bool>* interrupt = nullptr;  // set by SIGINT/SIGTERM handlers
+  // A vehicle whose mixer stays saturated this long without a break cannot follow its reference
+  // (absurd gains, too heavy, a reference beyond the airframe): the run ends as "saturated".
+  double max_saturated_time = 2.0;  // s
 };
 
 // The measured state of a vehicle's free body.
 VehicleState readVehicleState(const mjModel* m, const mjData* d, const VehicleHandles& v);
 
-// Runs until every vehicle has reached its goal and held it, or max_time, or an interrupt, or
-// the state diverges (NaN, far outside the world).
+// Runs until every vehicle has reached its goal and held it, or max_time, or an interrupt, or a
+// fault: end_reason "diverged" (NaN, far outside the world), "unstable" (MuJoCo found bad numbers
+// in the state or controls and would reset it) or "saturated" (see max_saturated_time).
 RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
                       std::vector<VehiclePilot>& pilots, const FlightOptions& options);
 

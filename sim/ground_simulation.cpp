@@ -31,7 +31,8 @@ namespace {
 
 Eigen::Quaterniond attitude(const mjData* d, const VehicleHandles& v) {
   const mjtNum* q = d->qpos + v.qpos_adr;
-  if (v.drive.planar_root) return Eigen::Quaterniond(Eigen::AngleAxisd(q[2], Eigen::Vector3d::UnitZ()));
+  if (v.drive.planar_root)
+    return Eigen::Quaterniond(Eigen::AngleAxisd(q[2], Eigen::Vector3d::UnitZ()));
   return Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized();
 }
 
@@ -54,7 +55,8 @@ void actuate(mjData* d, const VehicleHandles& v, const PlanarState& s, const Gro
 // steps is one event. Pairs (vehicle, other geom) in contact are kept between steps.
 class GroundContactBook {
  public:
-  GroundContactBook(const mjModel* m, const WorldModel& world) : m_(m), floor_(world.floorGeom()), owner_(m->ngeom, -1) {
+  GroundContactBook(const mjModel* m, const WorldModel& world)
+      : m_(m), floor_(world.floorGeom()), owner_(m->ngeom, -1) {
     for (std::size_t v = 0; v < world.vehicles().size(); ++v)
       for (int g : world.vehicles()[v].geoms) owner_[g] = static_cast<int>(v);
   }
@@ -68,7 +70,8 @@ class GroundContactBook {
         if (v < 0 || other == floor_ || owner_[other] == v) continue;
         if (now.insert({v, other}).second && !touching_.count({v, other})) {
           const char* name = mj_id2name(m_, mjOBJ_GEOM, other);
-          log.vehicles[v].collisions.push_back({d->time, name ? name : "geom" + std::to_string(other),
+          log.vehicles[v].collisions.push_back({d->time,
+                                                name ? name : "geom" + std::to_string(other),
                                                 Eigen::Vector3d(c.pos[0], c.pos[1], c.pos[2])});
         }
       }
@@ -85,8 +88,8 @@ class GroundContactBook {
 
 }  // namespace
 
-RunLog simulateGround(const WorldModel& world, const Scenario& scenario, std::vector<GroundPilot>& pilots,
-                      const GroundSimOptions& options) {
+RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
+                      std::vector<GroundPilot>& pilots, const GroundSimOptions& options) {
   const mjModel* m = world.model();
   mjData* d = mj_makeData(m);
   mj_resetData(m, d);
@@ -94,15 +97,18 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario, std::ve
   for (const auto& v : vehicles)
     if (v.drive.planar_root) setPlanarPose(d, v, v.drive.planar_origin, v.drive.start_yaw);
   const SimSettings& cfg = options.settings;
-  const int steps_per_control = std::max(1, static_cast<int>(std::lround(1.0 / (cfg.timestep * cfg.control_rate))));
+  const int steps_per_control =
+      std::max(1, static_cast<int>(std::lround(1.0 / (cfg.timestep * cfg.control_rate))));
   const double control_dt = steps_per_control * m->opt.timestep;
-  const int controls_per_log = std::max(1, static_cast<int>(std::ceil(1.0 / (options.log_rate * control_dt) - 1e-9)));
+  const int controls_per_log =
+      std::max(1, static_cast<int>(std::ceil(1.0 / (options.log_rate * control_dt) - 1e-9)));
   const long max_steps = static_cast<long>(std::ceil(cfg.max_time / m->opt.timestep));
 
   // Moving obstacles: mocap bodies placed from their trajectories.
-  auto obstacle_xy = options.obstacle_position
-                         ? options.obstacle_position
-                         : [&scenario](std::size_t i, double t) { return movingObstaclePosition(scenario.moving_obstacles[i], t); };
+  auto obstacle_xy =
+      options.obstacle_position ? options.obstacle_position : [&scenario](std::size_t i, double t) {
+        return movingObstaclePosition(scenario.moving_obstacles[i], t);
+      };
   std::vector<int> mocap;
   RunLog log;
   for (std::size_t i = 0; i < scenario.moving_obstacles.size(); ++i) {
@@ -161,11 +167,13 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario, std::ve
         // Height: the free base's z; a planar base rides at its fixed height (logged as 0).
         const double z = vehicles[v].drive.planar_root ? 0.0 : d->qpos[vehicles[v].qpos_adr + 2];
         const Eigen::Vector3d pos(s.position.x(), s.position.y(), z);
-        if (!vl.reached_goal && ref.final && (pos - pilots[v].goal).head<2>().norm() < cfg.goal_tolerance) {
+        if (!vl.reached_goal && ref.final &&
+            (pos - pilots[v].goal).head<2>().norm() < cfg.goal_tolerance) {
           vl.reached_goal = true;
           vl.arrival_time = d->time;
         }
-        all_done = all_done && vl.reached_goal && d->time >= vl.arrival_time + options.hold_after_arrival;
+        all_done =
+            all_done && vl.reached_goal && d->time >= vl.arrival_time + options.hold_after_arrival;
         diverged = diverged || !pos.allFinite();
         if (!record) continue;
         LogSample& x = vl.samples.emplace_back();
@@ -202,7 +210,8 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario, std::ve
     mj_step(m, d);
     contacts.update(d, log);
   }
-  log.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  log.wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
   log.sim_time = d->time;
   log.physics_steps = step;
   for (int i = 0; i < mjNWARNING; ++i) log.mujoco_warnings += d->warning[i].number;

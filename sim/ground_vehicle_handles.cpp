@@ -21,7 +21,8 @@ double horizontalReach(const mjModel* m, int g) {
   Eigen::Vector3d origin = pos;
   const int body = m->geom_bodyid[g];
   if (m->body_rootid[body] != body)  // a child body: add its offset from the base (one level)
-    origin += Eigen::Vector3d(m->body_pos[3 * body], m->body_pos[3 * body + 1], m->body_pos[3 * body + 2]);
+    origin += Eigen::Vector3d(m->body_pos[3 * body], m->body_pos[3 * body + 1],
+                              m->body_pos[3 * body + 2]);
   if (m->geom_type[g] == mjGEOM_BOX) {
     double reach = 0.0;
     for (int c = 0; c < 8; ++c) {
@@ -44,7 +45,8 @@ void readGroundVehicleHandles(const mjModel* m, const VehicleSpec& v, VehicleHan
   h.ground = true;
   if (h.body < 0 || !readGroundDrive(m, v.name, h.drive))
     throw InputError(file, "<robot>", "the composed model lacks the ground robot's base or drive");
-  const int root = mj_name2id(m, mjOBJ_JOINT, (p + (h.drive.planar_root ? "root_x" : "root")).c_str());
+  const int root =
+      mj_name2id(m, mjOBJ_JOINT, (p + (h.drive.planar_root ? "root_x" : "root")).c_str());
   if (root < 0) throw InputError(file, "<robot>", "the composed model lacks the base's root joint");
   h.qpos_adr = m->jnt_qposadr[root];
   h.qvel_adr = m->jnt_dofadr[root];
@@ -58,7 +60,8 @@ void readGroundVehicleHandles(const mjModel* m, const VehicleSpec& v, VehicleHan
   for (int i = 0; i < (holonomic ? 3 : 2); ++i) {
     h.actuators[i] = mj_name2id(m, mjOBJ_ACTUATOR, (p + names[i]).c_str());
     if (h.actuators[i] < 0)
-      throw InputError(file, "<robot>", std::string("the composed model lacks actuator ") + names[i]);
+      throw InputError(file, "<robot>",
+                       std::string("the composed model lacks actuator ") + names[i]);
   }
   QuadrotorParams& q = h.params;
   q.mass = m->body_subtreemass[h.body];

@@ -38,7 +38,9 @@ double movingObstacleFootprintRadius(const MovingObstacleSpec& o) {
   return o.type == ObstacleType::Box ? 0.5 * o.size.head<2>().norm() : o.radius;
 }
 
-std::string movingObstacleName(std::size_t i) { return "moving" + std::to_string(i); }
+std::string movingObstacleName(std::size_t i) {
+  return "moving" + std::to_string(i);
+}
 
 void addMovingObstacleBodies(tinyxml2::XMLDocument& doc, tinyxml2::XMLElement* worldbody,
                              const Scenario& s) {
@@ -59,8 +61,9 @@ void addMovingObstacleBodies(tinyxml2::XMLDocument& doc, tinyxml2::XMLElement* w
     g->SetAttribute("rgba", "0.85 0.2 0.25 1");
     if (o.type == ObstacleType::Box) {
       g->SetAttribute("type", "box");
-      g->SetAttribute("size", (fmt(0.5 * o.size.x()) + " " + fmt(0.5 * o.size.y()) + " " +
-                               fmt(0.5 * o.height)).c_str());
+      g->SetAttribute(
+          "size", (fmt(0.5 * o.size.x()) + " " + fmt(0.5 * o.size.y()) + " " + fmt(0.5 * o.height))
+                      .c_str());
     } else {
       g->SetAttribute("type", "cylinder");
       g->SetAttribute("size", (fmt(o.radius) + " " + fmt(0.5 * o.height)).c_str());

@@ -2,8 +2,9 @@
 // Moving obstacles in the simulation: where a scenario's moving obstacle is at time t (its centre
 // travels along its path at constant speed, back and forth or in a loop), and the MuJoCo mocap
 // bodies that carry them ("moving<i>", one geom of the same name, standing on the floor).
-#include <Eigen/Core>
 #include <tinyxml2.h>
+
+#include <Eigen/Core>
 
 #include "sim/scenario.h"
 

@@ -29,7 +29,9 @@ std::string fmt(double v) {
   s << v;
   return s.str();
 }
-std::string fmt3(double a, double b, double c) { return fmt(a) + " " + fmt(b) + " " + fmt(c); }
+std::string fmt3(double a, double b, double c) {
+  return fmt(a) + " " + fmt(b) + " " + fmt(c);
+}
 
 XMLElement* add(XMLDocument& doc, XMLElement* parent, const char* tag) {
   XMLElement* e = doc.NewElement(tag);
@@ -43,8 +45,12 @@ XMLElement* section(XMLDocument& doc, const char* tag) {
   return e ? e : add(doc, root, tag);
 }
 
-Eigen::Vector3d vec(const urdf::Vector3& v) { return {v.x, v.y, v.z}; }
-Eigen::Quaterniond quat(const urdf::Rotation& r) { return Eigen::Quaterniond(r.w, r.x, r.y, r.z); }
+Eigen::Vector3d vec(const urdf::Vector3& v) {
+  return {v.x, v.y, v.z};
+}
+Eigen::Quaterniond quat(const urdf::Rotation& r) {
+  return Eigen::Quaterniond(r.w, r.x, r.y, r.z);
+}
 Eigen::Isometry3d pose(const urdf::Pose& p) {
   Eigen::Isometry3d t = Eigen::Isometry3d::Identity();
   t.linear() = quat(p.rotation).normalized().toRotationMatrix();
@@ -64,7 +70,8 @@ class ParseMessages : public console_bridge::OutputHandler {
   ParseMessages() { console_bridge::useOutputHandler(this); }
   ~ParseMessages() override { console_bridge::restorePreviousOutputHandler(); }
   void log(const std::string& text, console_bridge::LogLevel level, const char*, int) override {
-    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR && first_error.empty()) first_error = text;
+    if (level >= console_bridge::CONSOLE_BRIDGE_LOG_ERROR && first_error.empty())
+      first_error = text;
   }
   std::string first_error;
 };
@@ -85,9 +92,10 @@ urdf::ModelInterfaceSharedPtr parseUrdf(const std::string& file) {
   ParseMessages messages;
   urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(text.str());
   if (!model)
-    throw InputError(file, "<robot>",
-                     "malformed URDF: " + (messages.first_error.empty() ? std::string("rejected by urdfdom")
-                                                                        : messages.first_error));
+    throw InputError(
+        file, "<robot>",
+        "malformed URDF: " + (messages.first_error.empty() ? std::string("rejected by urdfdom")
+                                                           : messages.first_error));
   return model;
 }
 
@@ -100,7 +108,10 @@ struct LinkMass {
 class UrdfConverter {
  public:
   UrdfConverter(XMLDocument& doc, const VehicleSpec& v)
-      : doc_(doc), v_(v), file_(v.model_file.string()), prefix_(v.name + "/"),
+      : doc_(doc),
+        v_(v),
+        file_(v.model_file.string()),
+        prefix_(v.name + "/"),
         dir_(v.model_file.parent_path()) {}
 
   void convert(XMLElement* worldbody, XMLElement* actuator, double floor_z) {
@@ -129,7 +140,8 @@ class UrdfConverter {
       if (origin.translation().head<2>().norm() > 1e-9)
         throw InputError(file_, "joint '" + planar->name + "' <origin>",
                          "a planar base joint must have its origin at x = y = 0");
-      body->SetAttribute("pos", fmt3(v_.start.x(), v_.start.y(), floor_z + origin.translation().z()).c_str());
+      body->SetAttribute(
+          "pos", fmt3(v_.start.x(), v_.start.y(), floor_z + origin.translation().z()).c_str());
       addJoint(body, "root_x", "slide", "1 0 0");
       addJoint(body, "root_y", "slide", "0 1 0");
       addJoint(body, "root_yaw", "hinge", "0 0 1");
@@ -165,17 +177,20 @@ class UrdfConverter {
     if (link.inertial) {
       const urdf::Inertial& i = *link.inertial;
       if (!(i.mass > 0.0))
-        throw InputError(file_, "link '" + link.name + "' <inertial> <mass>", "mass must be positive");
+        throw InputError(file_, "link '" + link.name + "' <inertial> <mass>",
+                         "mass must be positive");
       XMLElement* e = add(doc_, body, "inertial");
-      e->SetAttribute("pos", fmt3(i.origin.position.x, i.origin.position.y, i.origin.position.z).c_str());
+      e->SetAttribute("pos",
+                      fmt3(i.origin.position.x, i.origin.position.y, i.origin.position.z).c_str());
       e->SetAttribute("mass", fmt(i.mass).c_str());
       // MuJoCo takes a full inertia only in the body frame: rotate it there, I_b = R I R^T.
       Eigen::Matrix3d I;
       I << i.ixx, i.ixy, i.ixz, i.ixy, i.iyy, i.iyz, i.ixz, i.iyz, i.izz;
       const Eigen::Matrix3d R = quat(i.origin.rotation).normalized().toRotationMatrix();
       I = R * I * R.transpose();
-      e->SetAttribute("fullinertia",
-                      (fmt3(I(0, 0), I(1, 1), I(2, 2)) + " " + fmt3(I(0, 1), I(0, 2), I(1, 2))).c_str());
+      e->SetAttribute(
+          "fullinertia",
+          (fmt3(I(0, 0), I(1, 1), I(2, 2)) + " " + fmt3(I(0, 1), I(0, 2), I(1, 2))).c_str());
       const Eigen::Vector3d c = in_base * vec(i.origin.position);
       mass_.mass += i.mass;
       mass_.izz += i.izz + i.mass * c.head<2>().squaredNorm();
@@ -251,7 +266,8 @@ class UrdfConverter {
         std::string ext = path.extension().string();
         for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
         if (ext != ".stl" && ext != ".obj" && ext != ".msh")
-          throw InputError(file_, mesh_place, "unsupported mesh format '" + ext + "' (stl, obj, msh)");
+          throw InputError(file_, mesh_place,
+                           "unsupported mesh format '" + ext + "' (stl, obj, msh)");
         const std::string asset_name = prefix_ + "mesh" + std::to_string(mesh_count_++);
         XMLElement* a = add(doc_, section(doc_, "asset"), "mesh");
         a->SetAttribute("name", asset_name.c_str());
@@ -267,7 +283,8 @@ class UrdfConverter {
 
   // The base's horizontal rim radius: the farthest collision shape from the base's vertical axis
   // (bounding circles of boxes and cylinders, spheres).
-  void extendRadius(const Eigen::Isometry3d& in_base, const urdf::Pose& origin, const urdf::Geometry& g) {
+  void extendRadius(const Eigen::Isometry3d& in_base, const urdf::Pose& origin,
+                    const urdf::Geometry& g) {
     const Eigen::Isometry3d t = in_base * pose(origin);
     double r = 0.0;
     if (g.type == urdf::Geometry::BOX) {
@@ -284,7 +301,9 @@ class UrdfConverter {
 
   void addChild(XMLElement* parent, const urdf::Joint& j, const Eigen::Isometry3d& parent_in_base) {
     urdf::LinkConstSharedPtr link = model_->getLink(j.child_link_name);
-    if (!link) throw InputError(file_, "joint '" + j.name + "' <child>", "no link '" + j.child_link_name + "'");
+    if (!link)
+      throw InputError(file_, "joint '" + j.name + "' <child>",
+                       "no link '" + j.child_link_name + "'");
     XMLElement* body = add(doc_, parent, "body");
     body->SetAttribute("name", (prefix_ + link->name).c_str());
     setPose(body, j.parent_to_joint_origin_transform);
@@ -308,7 +327,8 @@ class UrdfConverter {
             throw InputError(file_, place + " <limit>", "lower must be below upper");
           // URDF angles are radians; the composed model reads angles in degrees.
           const double k = j.type == urdf::Joint::REVOLUTE ? 180.0 / M_PI : 1.0;
-          e->SetAttribute("range", (fmt(k * j.limits->lower) + " " + fmt(k * j.limits->upper)).c_str());
+          e->SetAttribute("range",
+                          (fmt(k * j.limits->lower) + " " + fmt(k * j.limits->upper)).c_str());
         }
         if (j.dynamics) {
           e->SetAttribute("damping", fmt(j.dynamics->damping).c_str());
@@ -317,8 +337,9 @@ class UrdfConverter {
         break;
       }
       default:
-        throw InputError(file_, place, "joint type not supported below the base (fixed, revolute, "
-                                       "continuous, prismatic)");
+        throw InputError(file_, place,
+                         "joint type not supported below the base (fixed, revolute, "
+                         "continuous, prismatic)");
     }
     if (j.type == urdf::Joint::CONTINUOUS) continuous_.push_back(&j);
     addLinkContents(body, *link, in_base);
@@ -337,21 +358,25 @@ class UrdfConverter {
 
   void requireLimit(const urdf::Joint& j) const {
     if (!j.limits || !(j.limits->effort > 0) || !(j.limits->velocity > 0))
-      throw InputError(file_, "joint '" + j.name + "' <limit>",
-                       "a driven joint needs <limit effort=\"...\" velocity=\"...\"> (both positive)");
+      throw InputError(
+          file_, "joint '" + j.name + "' <limit>",
+          "a driven joint needs <limit effort=\"...\" velocity=\"...\"> (both positive)");
   }
 
   void recordDrive(const GroundDrive& d) {
     XMLElement* n = add(doc_, section(doc_, "custom"), "numeric");
     n->SetAttribute("name", (prefix_ + "ground_drive").c_str());
-    n->SetAttribute("data", (fmt(d.kind == GroundDrive::Kind::Holonomic ? 0 : 1) + " " +
-                             fmt(d.planar_root ? 1 : 0) + " " + fmt3(d.max_speed, d.max_yaw_rate, d.wheel_radius) +
-                             " " + fmt(d.wheel_separation)).c_str());
+    n->SetAttribute(
+        "data",
+        (fmt(d.kind == GroundDrive::Kind::Holonomic ? 0 : 1) + " " + fmt(d.planar_root ? 1 : 0) +
+         " " + fmt3(d.max_speed, d.max_yaw_rate, d.wheel_radius) + " " + fmt(d.wheel_separation))
+            .c_str());
   }
 
   void addHolonomicDrive(XMLElement* actuator, const urdf::Joint& planar, const urdf::Link& base) {
     requireLimit(planar);
-    if (!base.inertial) throw InputError(file_, "link '" + base.name + "'", "the base needs an <inertial>");
+    if (!base.inertial)
+      throw InputError(file_, "link '" + base.name + "'", "the base needs an <inertial>");
     if (!(rim_radius_ > 0))
       throw InputError(file_, "link '" + base.name + "'", "the base needs a <collision> shape");
     const double force = planar.limits->effort, speed = planar.limits->velocity;
@@ -359,7 +384,8 @@ class UrdfConverter {
     addVelocityServo(actuator, "drive_y", "root_y", mass_.mass, force, speed);
     // The drive force acting at the rim turns the base; the rim moving at full speed bounds the
     // yaw rate.
-    addVelocityServo(actuator, "drive_yaw", "root_yaw", mass_.izz, force * rim_radius_, speed / rim_radius_);
+    addVelocityServo(actuator, "drive_yaw", "root_yaw", mass_.izz, force * rim_radius_,
+                     speed / rim_radius_);
     GroundDrive d;
     d.kind = GroundDrive::Kind::Holonomic;
     d.planar_root = true;
@@ -387,19 +413,23 @@ class UrdfConverter {
         if (c->geometry && c->geometry->type == urdf::Geometry::CYLINDER)
           radius = std::max(radius, static_cast<const urdf::Cylinder&>(*c->geometry).radius);
       if (!(radius > 0))
-        throw InputError(file_, "link '" + wheel->name + "' <collision>", "a wheel needs a cylinder collision shape");
+        throw InputError(file_, "link '" + wheel->name + "' <collision>",
+                         "a wheel needs a cylinder collision shape");
     }
     const Eigen::Vector3d l = vec(left->parent_to_joint_origin_transform.position);
     const Eigen::Vector3d r = vec(right->parent_to_joint_origin_transform.position);
     const double separation = (l - r).head<2>().norm();
     if (!(separation > 0))
-      throw InputError(file_, "joint '" + left->name + "' <origin>", "the wheels must not coincide");
+      throw InputError(file_, "joint '" + left->name + "' <origin>",
+                       "the wheels must not coincide");
     const urdf::Inertial& wi = *model_->getLink(left->child_link_name)->inertial;
     // Each wheel drives half the robot's mass plus its own spin inertia.
     const double inertia = 0.5 * mass_.mass * radius * radius + wi.iyy;
     const double speed = std::min(left->limits->velocity, right->limits->velocity);
-    addVelocityServo(actuator, "wheel_left", left->name, inertia, left->limits->effort, left->limits->velocity);
-    addVelocityServo(actuator, "wheel_right", right->name, inertia, right->limits->effort, right->limits->velocity);
+    addVelocityServo(actuator, "wheel_left", left->name, inertia, left->limits->effort,
+                     left->limits->velocity);
+    addVelocityServo(actuator, "wheel_right", right->name, inertia, right->limits->effort,
+                     right->limits->velocity);
     GroundDrive d;
     d.kind = GroundDrive::Kind::Differential;
     d.max_speed = speed * radius;

@@ -14,8 +14,9 @@
 // The robot's URDF frame lies on the floor (REP 120 base_footprint): its origin is placed at the
 // vehicle's start (x, y) on the floor.
 #include <mujoco/mujoco.h>
-#include <Eigen/Core>
 #include <tinyxml2.h>
+
+#include <Eigen/Core>
 
 #include "sim/scenario.h"
 
@@ -25,10 +26,10 @@ namespace cosim {
 struct GroundDrive {
   enum class Kind { Holonomic, Differential };
   Kind kind = Kind::Holonomic;
-  bool planar_root = false;  // root dofs: slide x, slide y, hinge yaw (else a free joint)
-  double max_speed = 0.0;       // m/s
-  double max_yaw_rate = 0.0;    // rad/s
-  double wheel_radius = 0.0;    // m (differential)
+  bool planar_root = false;       // root dofs: slide x, slide y, hinge yaw (else a free joint)
+  double max_speed = 0.0;         // m/s
+  double max_yaw_rate = 0.0;      // rad/s
+  double wheel_radius = 0.0;      // m (differential)
   double wheel_separation = 0.0;  // m (differential)
   // Planar root: the world (x, y) where root_x = root_y = 0, and the start heading (rad).
   Eigen::Vector2d planar_origin = Eigen::Vector2d::Zero();

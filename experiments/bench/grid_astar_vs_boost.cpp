@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "experiments/bench/thread_cpu_clock.h"
 #include "planning/grid/astar.h"
 #include "planning/grid/grid_distance.h"
 #include "planning/grid/movingai.h"
@@ -19,13 +20,8 @@
 namespace cosim::bench {
 namespace {
 
-// Thread CPU time, not wall time: the machine is shared, and a preempted query would otherwise
-// count the other processes' time.
-double cpuMs() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
-}
+// Thread CPU time, not wall time: the machine is shared.
+double cpuMs() { return threadCpuMs(); }
 
 struct Query {
   Cell start, goal;

@@ -45,16 +45,6 @@ Section benchPhysicsLoop(bool quick) {
   const Scenario s = benchScenario(seconds);
   const WorldModel world = WorldModel::build(s);
   const mjModel* m = world.model();
-  const long steps = static_cast<long>(seconds / m->opt.timestep);
-
-  // Bare engine: the same model, hover thrust held constant.
-  mjData* d = mj_makeData(m);
-  const double hover = world.vehicles()[0].params.mass * 9.81 / 4.0;
-  for (int i = 0; i < 4; ++i) d->ctrl[world.vehicles()[0].actuators[i]] = hover;
-  const auto t0 = std::chrono::steady_clock::now();
-  for (long k = 0; k < steps; ++k) mj_step(m, d);
-  const double bare_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  mj_deleteData(d);
 
   // Full loop: controller at 500 Hz, logging, contacts.
   CascadeController controller(world.vehicles()[0].params, CascadeGains{});
@@ -69,6 +59,26 @@ Section benchPhysicsLoop(bool quick) {
   options.settings = s.sim;
   options.hold_after_arrival = 1e9;  // fly for exactly max_time
   const RunLog log = simulateFlight(world, s, pilots, options);
+
+  // Bare engine: the same model replaying the same rotor commands, so it integrates the same
+  // motion (same contacts, same work per step) with no controller, logging or bookkeeping.
+  mjData* d = mj_makeData(m);
+  const auto& v = world.vehicles()[0];
+  const auto& samples = log.vehicles[0].samples;
+  const int per_control = static_cast<int>(std::lround(1.0 / (s.sim.timestep * s.sim.control_rate)));
+  const double hover = v.params.mass * v.params.gravity / 4.0;
+  for (int i = 0; i < 4; ++i) d->act[v.actuators[i] - (m->nu - m->na)] = hover;
+  const long steps = log.physics_steps;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (long k = 0; k < steps; ++k) {
+    if (k % per_control == 0) {
+      const auto& cmd = samples[std::min<std::size_t>(k / per_control, samples.size() - 1)].rotor_cmd;
+      for (int i = 0; i < 4; ++i) d->ctrl[v.actuators[i]] = cmd[i];
+    }
+    mj_step(m, d);
+  }
+  const double bare_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  mj_deleteData(d);
 
   Section out;
   out.name = "physics_loop";

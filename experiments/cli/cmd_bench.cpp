@@ -7,6 +7,8 @@
 #include "experiments/bench/grid_astar_vs_boost.h"
 #include "experiments/bench/mapf_planners.h"
 #include "experiments/bench/physics_loop.h"
+#include "experiments/bench/render_pipeline.h"
+#include "experiments/bench/sweep_throughput.h"
 #include "experiments/bench/trajectory_generation.h"
 #include "experiments/cli/command.h"
 #include "planning/input_error.h"
@@ -23,10 +25,12 @@ struct NamedSection {
 const std::vector<NamedSection>& sections() {
   static const std::vector<NamedSection> list = {
       {"physics_loop", bench::benchPhysicsLoop},
+      {"render_pipeline", bench::benchRenderPipeline},
       {"trajectory_generation", bench::benchTrajectoryGeneration},
       {"mapf_planners", bench::benchMapfPlanners},
       {"ant_planners", bench::benchAntPlanners},
       {"grid_astar_vs_boost", bench::benchGridAStarVsBoost},
+      {"sweep_throughput", bench::benchSweepThroughput},
   };
   return list;
 }

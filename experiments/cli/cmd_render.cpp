@@ -82,8 +82,10 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
     if (a->fps) s.render.fps = a->fps;
     if (a->speedup > 0) s.render.speedup = a->speedup;
     RunLog log;
-    readPathCsv((dir / "path.csv").string(), log);
+    // The time series first: it names the vehicles, and a single vehicle's path.csv has no
+    // vehicle column (its rows belong to the first vehicle).
     readTimeseriesCsv((dir / "timeseries.csv").string(), log);
+    readPathCsv((dir / "path.csv").string(), log);
     const WorldModel world = WorldModel::build(s);  // its off-screen buffer fits the frame size
     for (std::size_t v = 0; v < log.vehicles.size() && v < s.vehicles.size(); ++v) {
       log.vehicles[v].goal = s.vehicles[v].goal();

@@ -20,6 +20,7 @@ std::string seed000Msac(const Options& options);
 std::string seed000Sacodm(const Options& options);
 std::string seed000Rna(const Options& options);
 std::string seed003Flight(const Options& options);
+std::string trackingAcceptance(const Options& options);
 }  // namespace cosim::reproduce
 
 namespace cosim::cli {
@@ -28,6 +29,8 @@ namespace {
 // The reproductions, by name.
 const std::vector<reproduce::Entry>& reproductions() {
   static const std::vector<reproduce::Entry> entries = {
+      {"tracking", "issue 6: every bundled 3D world, quad_1500g at 3 m/s and cf2 at 1 m/s, tracking errors",
+       reproduce::trackingAcceptance},
       {"seed003-flight", "seed 003 Sec. 4.2: Theta* and RRT*FN paths on map 3 flown four ways in MuJoCo",
        reproduce::seed003Flight},
       {"seed000-msac", "seed 000 Tabs. 6.1-6.7: MSAC tabu tables, post-processing, ants, MAX",

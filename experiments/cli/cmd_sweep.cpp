@@ -45,11 +45,13 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
       "Run an experiment grid headless: every scenario (or generated world) of SWEEP.yaml times\n"
       "every combination of its `vary:` values is one job, run as a separate `cosim run` process,\n"
       "--jobs at a time. Writes DIR/jobs/<id>/ (each job's files and result.json), then\n"
-      "DIR/results.csv (one row per job, by job id), DIR/summary.csv (mean, sd, median, 95% CI per\n"
+      "DIR/results.csv (one row per job, by job id), DIR/summary.csv (mean, sd, median, 95% CI "
+      "per\n"
       "group of seeds) and DIR/figure.png. Re-running skips finished jobs. Scenario paths in the\n"
       "sweep file are relative to its folder, else to the current directory. Exit 0 when every\n"
       "job (of the shard) has a result, whatever its status; 1 if interrupted or, with\n"
-      "--merge-only, if jobs are missing; 2 for bad input. Format: experiments/sweeps/example.yaml (commented).");
+      "--merge-only, if jobs are missing; 2 for bad input. Format: experiments/sweeps/example.yaml "
+      "(commented).");
   struct Args {
     std::string sweep, out, shard = "1/1";
     int jobs = 0;
@@ -67,9 +69,10 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_flag("--quiet", a->quiet, "no progress lines");
   cmd->callback([a, &ctx] {
     const SweepSpec spec = loadSweepSpec(a->sweep);
-    const SweepShard shard =
-        parseSweepShard(a->shard, [](const char* name) -> const char* { return std::getenv(name); });
-    const std::filesystem::path out = prepareOutputDir(a->out.empty() ? "out/sweep-" + spec.name : a->out, "sweep");
+    const SweepShard shard = parseSweepShard(
+        a->shard, [](const char* name) -> const char* { return std::getenv(name); });
+    const std::filesystem::path out =
+        prepareOutputDir(a->out.empty() ? "out/sweep-" + spec.name : a->out, "sweep");
     const std::vector<SweepJob> jobs = expandSweepJobs(spec, out);
     // A copy of the sweep file beside its results (same text from every shard).
     const std::string text = fileText(spec.file);
@@ -106,10 +109,13 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
       }
     }
     const SweepOutputs merged = writeSweepOutputs(spec, jobs, out);
-    std::cout << "sweep: " << out.string() << "\n  results.csv: " << merged.rows << " of " << jobs.size()
-              << " jobs" << (merged.unfinished ? " (" + std::to_string(merged.unfinished) + " unfinished)" : "")
+    std::cout << "sweep: " << out.string() << "\n  results.csv: " << merged.rows << " of "
+              << jobs.size() << " jobs"
+              << (merged.unfinished ? " (" + std::to_string(merged.unfinished) + " unfinished)"
+                                    : "")
               << "\n";
-    if (!merged.figure_problem.empty()) std::cerr << "sweep: no figure.png: " << merged.figure_problem << "\n";
+    if (!merged.figure_problem.empty())
+      std::cerr << "sweep: no figure.png: " << merged.figure_problem << "\n";
     if (a->merge_only && merged.unfinished > 0) status = 1;
     ctx.status = status;
   });

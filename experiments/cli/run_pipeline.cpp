@@ -1,5 +1,6 @@
 #include "experiments/cli/run_pipeline.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -60,6 +61,32 @@ JsonObject metricsJson(const FlightMetrics& m) {
       .add("energy_proxy", m.energy_proxy)
       .add("max_speed_mps", m.max_speed_mps);
   return j;
+}
+
+// Why a flight that planned fine did not succeed, from the simulation's end_reason.
+std::string runFailureMessage(const std::string& end_reason) {
+  if (end_reason == "diverged") return "the simulation diverged (NaN or runaway state)";
+  if (end_reason == "unstable")
+    return "the simulation became unstable (MuJoCo found bad numbers in the state or controls)";
+  if (end_reason == "saturated")
+    return "the rotors stayed saturated for over 2 s: the vehicle cannot follow its reference "
+           "(check controller gains, trajectory limits, the model's mass and thrust)";
+  if (end_reason != "goal") return "goal not reached within sim.max_time";
+  return "collision";
+}
+
+// The longest stretch of continuous mixer saturation of any vehicle, in seconds.
+double longestSaturation(const RunLog& log) {
+  double longest = 0.0;
+  for (const auto& v : log.vehicles) {
+    double since = -1.0;
+    for (const auto& x : v.samples) {
+      if (!x.saturated) since = -1.0;
+      else if (since < 0.0) since = x.t;
+      else longest = std::max(longest, x.t - since);
+    }
+  }
+  return longest;
 }
 
 void progressLine(bool enabled, const std::string& text) {
@@ -158,9 +185,10 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
     if (!trajectory_failure.empty()) summary.message = trajectory_failure;
   }
   if (all_planned && !ok)
-    summary.message = log.end_reason == "diverged" ? "the simulation diverged (NaN or runaway state)"
-                      : log.end_reason != "goal"   ? "goal not reached within sim.max_time"
-                                                   : "collision";
+    summary.message = runFailureMessage(log.end_reason);
+  if (log.mujoco_warnings > 0)
+    std::cerr << "cosim: warning: MuJoCo reported " << log.mujoco_warnings
+              << " warning(s); see mujoco_warnings in metrics.json\n";
   summary.status = ok ? 0 : 1;
 
   // 5. Write the run's files (each atomically).
@@ -199,6 +227,11 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
       .add("wall_time_s", log.wall_time)
       .add("end_reason", log.end_reason)
       .add("mujoco_warnings", log.mujoco_warnings)
+      .add("fault", log.end_reason == "diverged" || log.end_reason == "unstable" ||
+                            log.end_reason == "saturated"
+                        ? log.end_reason
+                        : std::string("none"))
+      .add("longest_saturation_s", longestSaturation(log))
       .add("status", summary.status)
       .add("message", summary.message)
       .add("planner_counters", plans.front().counters)

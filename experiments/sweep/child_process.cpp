@@ -24,7 +24,8 @@ ChildProcess ChildProcess::start(const std::string& program, const std::vector<s
   const std::string log = log_file.string();
 
   const pid_t pid = ::fork();
-  if (pid < 0) throw std::runtime_error(std::string("cannot start a job: fork: ") + std::strerror(errno));
+  if (pid < 0)
+    throw std::runtime_error(std::string("cannot start a job: fork: ") + std::strerror(errno));
   if (pid == 0) {
     ::setpgid(0, 0);
     const int in = ::open("/dev/null", O_RDONLY);

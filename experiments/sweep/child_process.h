@@ -12,8 +12,9 @@ namespace cosim {
 
 class ChildProcess {
  public:
-  // Starts `program args...` (looked up in PATH if it has no slash) with stdin from /dev/null and stdout+stderr into `log_file`.
-  // Throws std::runtime_error if fork fails (exec failures show as exit status 127).
+  // Starts `program args...` (looked up in PATH if it has no slash) with stdin from /dev/null and
+  // stdout+stderr into `log_file`. Throws std::runtime_error if fork fails (exec failures show as
+  // exit status 127).
   static ChildProcess start(const std::string& program, const std::vector<std::string>& args,
                             const std::filesystem::path& log_file);
 

@@ -8,11 +8,10 @@ namespace cosim {
 
 double studentT975(std::size_t df) {
   // Exact table for small samples (the usual case: a handful of seeds per group).
-  static const double table[] = {12.7062, 4.30265, 3.18245, 2.77645, 2.57058, 2.44691, 2.36462,
-                                 2.30600, 2.26216, 2.22814, 2.20099, 2.17881, 2.16037, 2.14479,
-                                 2.13145, 2.11991, 2.10982, 2.10092, 2.09302, 2.08596, 2.07961,
-                                 2.07387, 2.06866, 2.06390, 2.05954, 2.05553, 2.05183, 2.04841,
-                                 2.04523, 2.04227};
+  static const double table[] = {
+      12.7062, 4.30265, 3.18245, 2.77645, 2.57058, 2.44691, 2.36462, 2.30600, 2.26216, 2.22814,
+      2.20099, 2.17881, 2.16037, 2.14479, 2.13145, 2.11991, 2.10982, 2.10092, 2.09302, 2.08596,
+      2.07961, 2.07387, 2.06866, 2.06390, 2.05954, 2.05553, 2.05183, 2.04841, 2.04523, 2.04227};
   if (df == 0) return std::numeric_limits<double>::quiet_NaN();
   if (df <= 30) return table[df - 1];
   // Cornish-Fisher expansion about the normal quantile (Abramowitz & Stegun 26.7.5); error

@@ -10,11 +10,16 @@ namespace cosim {
 
 const char* jobStatusName(JobStatus s) {
   switch (s) {
-    case JobStatus::Ok: return "ok";
-    case JobStatus::Failed: return "failed";
-    case JobStatus::Timeout: return "timeout";
-    case JobStatus::Crashed: return "crashed";
-    case JobStatus::BadInput: return "bad_input";
+    case JobStatus::Ok:
+      return "ok";
+    case JobStatus::Failed:
+      return "failed";
+    case JobStatus::Timeout:
+      return "timeout";
+    case JobStatus::Crashed:
+      return "crashed";
+    case JobStatus::BadInput:
+      return "bad_input";
   }
   return "crashed";
 }
@@ -23,10 +28,14 @@ JobStatus classifyJobExit(int wait_status, bool timed_out) {
   if (timed_out) return JobStatus::Timeout;
   if (wait_status == -1 || !WIFEXITED(wait_status)) return JobStatus::Crashed;
   switch (WEXITSTATUS(wait_status)) {
-    case 0: return JobStatus::Ok;
-    case 1: return JobStatus::Failed;
-    case 2: return JobStatus::BadInput;
-    default: return JobStatus::Crashed;  // 3 internal error, 127 cannot exec, ...
+    case 0:
+      return JobStatus::Ok;
+    case 1:
+      return JobStatus::Failed;
+    case 2:
+      return JobStatus::BadInput;
+    default:
+      return JobStatus::Crashed;  // 3 internal error, 127 cannot exec, ...
   }
 }
 

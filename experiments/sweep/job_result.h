@@ -19,8 +19,8 @@ struct JobResult {
   std::size_t job = 0;
   std::string fingerprint;
   std::string scenario;
-  std::string status;     // jobStatusName
-  int exit_code = -1;     // -1 when ended by a signal
+  std::string status;  // jobStatusName
+  int exit_code = -1;  // -1 when ended by a signal
   int signal = 0;
   double wall_time_s = 0.0;
 };

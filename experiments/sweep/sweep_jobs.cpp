@@ -16,7 +16,8 @@ namespace cosim {
 
 namespace {
 
-std::string readText(const std::filesystem::path& p, const std::string& place, const std::filesystem::path& sweep) {
+std::string readText(const std::filesystem::path& p, const std::string& place,
+                     const std::filesystem::path& sweep) {
   std::ifstream in(p, std::ios::binary);
   if (!in) throw InputError(sweep.string(), place, "cannot read scenario file " + p.string());
   std::ostringstream s;
@@ -25,7 +26,8 @@ std::string readText(const std::filesystem::path& p, const std::string& place, c
 }
 
 // FNV-1a, 64 bit: a stable content hash (std::hash is not stable across builds).
-std::string fingerprint(const std::string& scenario_text, const std::vector<std::string>& overrides) {
+std::string fingerprint(const std::string& scenario_text,
+                        const std::vector<std::string>& overrides) {
   std::uint64_t h = 1469598103934665603ull;
   const auto mix = [&h](const std::string& s) {
     for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
@@ -55,7 +57,8 @@ struct ScenarioSource {
 }  // namespace
 
 std::string sweepJobDirName(std::size_t id, std::size_t job_count) {
-  const std::size_t width = std::max<std::size_t>(4, std::to_string(job_count > 0 ? job_count - 1 : 0).size());
+  const std::size_t width =
+      std::max<std::size_t>(4, std::to_string(job_count > 0 ? job_count - 1 : 0).size());
   std::string s = std::to_string(id);
   return std::string(width > s.size() ? width - s.size() : 0, '0') + s;
 }
@@ -126,13 +129,23 @@ void validateSweepJobs(const SweepSpec& spec, const std::vector<SweepJob>& jobs)
       std::string place = "job " + std::to_string(job.id);
       for (const auto& [k, value] : spec.fixed)
         if (placeNamesKey(e.place(), k)) place = "key set." + k;
+      bool located = false;
       for (const auto& v : spec.vary)
-        if (placeNamesKey(e.place(), v.key)) place = v.place;
+        if (placeNamesKey(e.place(), v.key)) place = v.place, located = true;
+      // A scenario's planner parameter unknown to a varied planner: the planner name is the cause.
+      std::string hint;
+      for (const auto& v : spec.vary)
+        if (!located && v.key == "planner.name" && placeNamesKey(e.place(), "planner")) {
+          place = v.place;
+          hint =
+              "; to compare planners with different parameters, vary whole planner sections: "
+              "planner: [{name: astar, resolution: 0.5}, {name: rrt_star, step: 2}]";
+        }
       std::string with;
       for (std::size_t k = 0; k < spec.vary.size(); ++k)
         with += (k ? ", " : " with ") + spec.vary[k].key + "=" + job.values[k];
       throw InputError(spec.file.string(), place,
-                       "scenario " + job.scenario + with + ": " + e.what());
+                       "scenario " + job.scenario + with + ": " + e.what() + hint);
     }
   }
 }

@@ -13,10 +13,10 @@ namespace cosim {
 
 struct SweepJob {
   std::size_t id = 0;
-  std::string scenario;                    // the results' scenario column
+  std::string scenario;  // the results' scenario column
   std::filesystem::path scenario_path;
-  std::vector<std::string> values;         // one per SweepSpec::vary entry, same order
-  std::vector<std::string> overrides;      // "key=value" for `cosim run --set`: fixed, then varied
+  std::vector<std::string> values;     // one per SweepSpec::vary entry, same order
+  std::vector<std::string> overrides;  // "key=value" for `cosim run --set`: fixed, then varied
   // Hash of the scenario text and the overrides: a finished result only counts for the job it was
   // made for (a changed scenario file or sweep file reruns the jobs it affects).
   std::string fingerprint;

@@ -23,7 +23,8 @@ SweepOutputs writeSweepOutputs(const SweepSpec& spec, const std::vector<SweepJob
   for (const auto& v : spec.vary)
     if (series.empty() && !isSeedKey(v.key)) series = v.key;
   try {
-    writeComparisonChart(out_dir / "results.csv", "scenario", spec.figure_metric, series, out_dir / "figure");
+    writeComparisonChart(out_dir / "results.csv", "scenario", spec.figure_metric, series,
+                         out_dir / "figure");
   } catch (const std::exception& e) {
     o.figure_problem = e.what();  // the figure is a convenience; the tables are the results
   }

@@ -17,10 +17,13 @@ using Fields = std::vector<std::pair<std::string, std::string>>;
 
 void flatten(const YAML::Node& n, const std::string& prefix, Fields& out) {
   if (n.IsMap()) {
-    for (const auto& kv : n) flatten(kv.second, prefix.empty() ? kv.first.Scalar() : prefix + "." + kv.first.Scalar(), out);
+    for (const auto& kv : n)
+      flatten(kv.second, prefix.empty() ? kv.first.Scalar() : prefix + "." + kv.first.Scalar(),
+              out);
   } else if (n.IsSequence()) {
     if (prefix == "vehicles" && n.size() == 1) return;
-    for (std::size_t i = 0; i < n.size(); ++i) flatten(n[i], prefix + "[" + std::to_string(i) + "]", out);
+    for (std::size_t i = 0; i < n.size(); ++i)
+      flatten(n[i], prefix + "[" + std::to_string(i) + "]", out);
   } else if (n.IsScalar()) {
     out.emplace_back(prefix, n.Scalar());
   } else {
@@ -84,7 +87,8 @@ SweepTable mergeSweepResults(const SweepSpec& spec, const std::vector<SweepJob>&
   for (auto& r : rows) {
     std::vector<std::string> cells = r.fixed;
     cells.resize(t.header.size());
-    for (const auto& [name, value] : r.metrics) cells[t.first_metric_column + metric_index[name]] = value;
+    for (const auto& [name, value] : r.metrics)
+      cells[t.first_metric_column + metric_index[name]] = value;
     cells.back() = r.wall;
     t.rows.push_back(std::move(cells));
   }

@@ -17,24 +17,30 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+double secondsSince(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
 
 struct RunningJob {
   const SweepJob* job = nullptr;
   std::filesystem::path dir;
   ChildProcess child;
   Clock::time_point started;
-  bool timed_out = false;     // the runner sent SIGTERM for the time limit
-  bool stopped = false;       // the runner sent SIGTERM because the sweep was interrupted
+  bool timed_out = false;  // the runner sent SIGTERM for the time limit
+  bool stopped = false;    // the runner sent SIGTERM because the sweep was interrupted
   Clock::time_point signalled;
   bool killed = false;
 };
 
 std::string duration(double s) {
   char buf[32];
-  if (s < 60) std::snprintf(buf, sizeof buf, "%.0fs", s);
-  else if (s < 3600) std::snprintf(buf, sizeof buf, "%dm%02ds", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
-  else std::snprintf(buf, sizeof buf, "%dh%02dm", static_cast<int>(s) / 3600, static_cast<int>(s) / 60 % 60);
+  if (s < 60)
+    std::snprintf(buf, sizeof buf, "%.0fs", s);
+  else if (s < 3600)
+    std::snprintf(buf, sizeof buf, "%dm%02ds", static_cast<int>(s) / 60, static_cast<int>(s) % 60);
+  else
+    std::snprintf(buf, sizeof buf, "%dh%02dm", static_cast<int>(s) / 3600,
+                  static_cast<int>(s) / 60 % 60);
   return buf;
 }
 
@@ -53,8 +59,8 @@ RunningJob startJob(const SweepJob& job, const SweepRunOptions& o, std::size_t j
   std::filesystem::remove_all(r.dir, ec);
   std::filesystem::create_directories(r.dir, ec);
   if (ec) throw std::runtime_error("cannot create " + r.dir.string() + ": " + ec.message());
-  std::vector<std::string> args = {"run", std::filesystem::absolute(job.scenario_path).string(), "--out",
-                                   r.dir.string(), "--quiet"};
+  std::vector<std::string> args = {"run", std::filesystem::absolute(job.scenario_path).string(),
+                                   "--out", r.dir.string(), "--quiet"};
   if (!o.video) args.push_back("--no-video");
   for (const auto& ov : job.overrides) {
     args.push_back("--set");
@@ -95,7 +101,8 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
   const int parallel = std::max(1, o.jobs);
   if (o.progress)
     std::cerr << tag << ": " << report.in_shard << " jobs, " << report.already_finished
-              << " already finished, " << pending.size() << " to run, " << parallel << " at a time\n";
+              << " already finished, " << pending.size() << " to run, " << parallel
+              << " at a time\n";
 
   std::vector<RunningJob> running;
   std::size_t next = 0;
@@ -124,7 +131,8 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
       RunningJob& r = running[i];
       int wait_status = 0;
       if (r.child.finished(wait_status)) {
-        const bool exited_by_itself = !r.stopped || (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0);
+        const bool exited_by_itself =
+            !r.stopped || (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0);
         if (r.stopped && !exited_by_itself) {
           ++report.unfinished;  // no result.json: a later invocation runs it again
         } else {
@@ -133,7 +141,8 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
           res.fingerprint = r.job->fingerprint;
           res.scenario = r.job->scenario;
           res.status = jobStatusName(classifyJobExit(wait_status, r.timed_out));
-          res.exit_code = wait_status != -1 && WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
+          res.exit_code =
+              wait_status != -1 && WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
           res.signal = wait_status != -1 && WIFSIGNALED(wait_status) ? WTERMSIG(wait_status) : 0;
           res.wall_time_s = secondsSince(r.started);
           writeJobResult(r.dir, res);
@@ -141,18 +150,21 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
           ++report.statuses[res.status];
           if (o.progress) {
             if (res.status != "ok" && res.status != "failed")
-              std::cerr << tag << ": job " << sweepJobDirName(r.job->id, jobs.size()) << " (" << describe(*r.job)
-                        << ") " << res.status << "; log: " << (r.dir / "log.txt").string() << "\n";
+              std::cerr << tag << ": job " << sweepJobDirName(r.job->id, jobs.size()) << " ("
+                        << describe(*r.job) << ") " << res.status
+                        << "; log: " << (r.dir / "log.txt").string() << "\n";
             const std::size_t done = report.already_finished + report.ran;
             const double elapsed = secondsSince(t0);
             const double per_job = elapsed / static_cast<double>(report.ran);
             const std::size_t left = report.in_shard - done;
             std::string counts;
-            for (const auto& [name, n] : report.statuses) counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + name;
+            for (const auto& [name, n] : report.statuses)
+              counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + name;
             char rate[64];
             std::snprintf(rate, sizeof rate, "%.1f jobs/min", 60.0 / per_job);
-            std::cerr << tag << ": " << done << "/" << report.in_shard << " done (" << counts << "), " << rate
-                      << ", ETA " << duration(per_job * static_cast<double>(left)) << "\n";
+            std::cerr << tag << ": " << done << "/" << report.in_shard << " done (" << counts
+                      << "), " << rate << ", ETA " << duration(per_job * static_cast<double>(left))
+                      << "\n";
           }
         }
         running.erase(running.begin() + static_cast<long>(i));
@@ -171,11 +183,13 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
       }
       ++i;
     }
-    if (!running.empty() || next < pending.size()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    if (!running.empty() || next < pending.size())
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   report.wall_time_s = secondsSince(t0);
   if (o.progress && !report.interrupted)
-    std::cerr << tag << ": finished " << report.ran << " job(s) in " << duration(report.wall_time_s) << "\n";
+    std::cerr << tag << ": finished " << report.ran << " job(s) in " << duration(report.wall_time_s)
+              << "\n";
   return report;
 }
 

@@ -17,22 +17,22 @@
 namespace cosim {
 
 struct SweepRunOptions {
-  std::filesystem::path out_dir;         // jobs go to out_dir/jobs/<id>/
-  int jobs = 1;                          // parallel processes
+  std::filesystem::path out_dir;  // jobs go to out_dir/jobs/<id>/
+  int jobs = 1;                   // parallel processes
   SweepShard shard;
   std::string program = "/proc/self/exe";  // the cosim binary that runs each job
   bool video = false;
   double job_timeout_s = 600.0;
   double kill_grace_s = 5.0;
-  bool progress = true;                  // progress lines on stderr
+  bool progress = true;  // progress lines on stderr
   const std::atomic<bool>* interrupt = nullptr;
 };
 
 struct SweepRunReport {
   std::size_t in_shard = 0;
-  std::size_t already_finished = 0;      // skipped: finished by an earlier invocation
-  std::size_t ran = 0;                   // finished now
-  std::size_t unfinished = 0;            // left for a later invocation (interrupt)
+  std::size_t already_finished = 0;             // skipped: finished by an earlier invocation
+  std::size_t ran = 0;                          // finished now
+  std::size_t unfinished = 0;                   // left for a later invocation (interrupt)
   std::map<std::string, std::size_t> statuses;  // of the jobs finished now
   bool interrupted = false;
   double wall_time_s = 0.0;

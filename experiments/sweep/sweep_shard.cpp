@@ -27,7 +27,8 @@ SweepShard parseSweepShard(const std::string& text,
     const char* min = env("SLURM_ARRAY_TASK_MIN");
     const char* n = env("SLURM_ARRAY_TASK_COUNT");
     long task = 0, first = 0;
-    if (!parsePositive(id, task) || !n || !parsePositive(n, count) || (min && !parsePositive(min, first)))
+    if (!parsePositive(id, task) || !n || !parsePositive(n, count) ||
+        (min && !parsePositive(min, first)))
       throw InputError("environment", "--shard auto",
                        "SLURM_ARRAY_TASK_ID/MIN/COUNT are not whole numbers");
     index = task - first + 1;

@@ -47,7 +47,8 @@ template <typename T, typename Read>
 std::vector<T> oneOrMany(const YAML::Node& n, const std::string& key, Read read) {
   std::vector<T> out;
   if (n.IsSequence()) {
-    for (std::size_t i = 0; i < n.size(); ++i) out.push_back(read(n[i], key + "[" + std::to_string(i) + "]"));
+    for (std::size_t i = 0; i < n.size(); ++i)
+      out.push_back(read(n[i], key + "[" + std::to_string(i) + "]"));
   } else {
     out.push_back(read(n, key));
   }
@@ -76,19 +77,22 @@ GeneratorSpec readGenerator(const YamlReader& r, const YAML::Node& n, const std:
   }
   g.densities = {default_density};
   if (n["density"])
-    g.densities = oneOrMany<double>(n["density"], key + ".density", [&](const YAML::Node& v, const std::string& k) {
-      return r.number(v, k, 0.0, max_density);
-    });
+    g.densities = oneOrMany<double>(n["density"], key + ".density",
+                                    [&](const YAML::Node& v, const std::string& k) {
+                                      return r.number(v, k, 0.0, max_density);
+                                    });
   g.seeds = {1};
   if (n["seed"])
-    g.seeds = oneOrMany<long>(n["seed"], key + ".seed", [&](const YAML::Node& v, const std::string& k) {
-      return r.integer(v, k, 0, 2147483647L);
-    });
-  if (g.densities.empty() || g.seeds.empty()) r.fail(n, key, "density and seed lists must not be empty");
+    g.seeds = oneOrMany<long>(
+        n["seed"], key + ".seed",
+        [&](const YAML::Node& v, const std::string& k) { return r.integer(v, k, 0, 2147483647L); });
+  if (g.densities.empty() || g.seeds.empty())
+    r.fail(n, key, "density and seed lists must not be empty");
   if (n["size"]) {
     const Eigen::Vector3d s = r.vec3(n["size"], key + ".size");
     for (int i = 0; i < 3; ++i) {
-      if (s[i] < 3.0 || s[i] > 10000.0) r.fail(n["size"], key + ".size", "each size must be in [3, 10000] m");
+      if (s[i] < 3.0 || s[i] > 10000.0)
+        r.fail(n["size"], key + ".size", "each size must be in [3, 10000] m");
       g.size[i] = s[i];
     }
   }
@@ -122,9 +126,11 @@ SweepSpec parseSweepSpec(const std::string& text, const std::filesystem::path& f
   try {
     root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
-    throw InputError(file.string(), "line " + std::to_string(e.mark.line + 1), "malformed YAML: " + e.msg);
+    throw InputError(file.string(), "line " + std::to_string(e.mark.line + 1),
+                     "malformed YAML: " + e.msg);
   }
-  if (!root.IsMap()) throw InputError(file.string(), "", "a sweep file is a mapping (scenarios:, vary:, ...)");
+  if (!root.IsMap())
+    throw InputError(file.string(), "", "a sweep file is a mapping (scenarios:, vary:, ...)");
   r.checkKeys(root, "", {"name", "scenarios", "generators", "vary", "set", "output", "limits"});
 
   SweepSpec s;
@@ -132,7 +138,8 @@ SweepSpec parseSweepSpec(const std::string& text, const std::filesystem::path& f
   s.name = root["name"] ? r.text(root["name"], "name") : file.stem().string();
   if (root["scenarios"]) {
     const YAML::Node list = root["scenarios"];
-    if (!list.IsSequence() && !list.IsScalar()) r.fail(list, "scenarios", "must be a list of scenario files");
+    if (!list.IsSequence() && !list.IsScalar())
+      r.fail(list, "scenarios", "must be a list of scenario files");
     const auto written = oneOrMany<std::pair<std::string, std::string>>(
         list, "scenarios", [&](const YAML::Node& v, const std::string& k) {
           return std::make_pair(r.text(v, k), r.place(v, k));
@@ -140,16 +147,18 @@ SweepSpec parseSweepSpec(const std::string& text, const std::filesystem::path& f
     for (const auto& [w, place] : written) {
       SweepScenarioFile f{w, resolveSweepScenarioPath(w, file), place};
       if (f.path.empty())
-        throw InputError(file.string(), place,
-                         "scenario file not found: '" + w + "' (looked in " +
-                             (file.parent_path().empty() ? std::string(".") : file.parent_path().string()) +
-                             " and in the current directory)");
+        throw InputError(
+            file.string(), place,
+            "scenario file not found: '" + w + "' (looked in " +
+                (file.parent_path().empty() ? std::string(".") : file.parent_path().string()) +
+                " and in the current directory)");
       s.scenarios.push_back(f);
     }
   }
   if (root["generators"]) {
     const YAML::Node list = root["generators"];
-    if (!list.IsSequence()) r.fail(list, "generators", "must be a list of {type: ..., density: ..., seed: ...}");
+    if (!list.IsSequence())
+      r.fail(list, "generators", "must be a list of {type: ..., density: ..., seed: ...}");
     for (std::size_t i = 0; i < list.size(); ++i)
       s.generators.push_back(readGenerator(r, list[i], "generators[" + std::to_string(i) + "]"));
   }
@@ -198,8 +207,10 @@ SweepSpec parseSweepSpec(const std::string& text, const std::filesystem::path& f
   if (root["limits"]) {
     const YAML::Node l = root["limits"];
     r.checkKeys(l, "limits", {"job_timeout_s", "kill_grace_s"});
-    if (l["job_timeout_s"]) s.job_timeout_s = r.number(l["job_timeout_s"], "limits.job_timeout_s", 0.1, 1e7);
-    if (l["kill_grace_s"]) s.kill_grace_s = r.number(l["kill_grace_s"], "limits.kill_grace_s", 0.0, 600.0);
+    if (l["job_timeout_s"])
+      s.job_timeout_s = r.number(l["job_timeout_s"], "limits.job_timeout_s", 0.1, 1e7);
+    if (l["kill_grace_s"])
+      s.kill_grace_s = r.number(l["kill_grace_s"], "limits.kill_grace_s", 0.0, 600.0);
   }
   return s;
 }

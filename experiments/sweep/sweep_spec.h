@@ -10,12 +10,12 @@ namespace cosim {
 
 // One world generator entry; lists of seeds/densities expand to one world each.
 struct GeneratorSpec {
-  std::string type;                 // forest | city | maze
+  std::string type;  // forest | city | maze
   std::vector<double> densities;
   std::vector<long> seeds;
   double size[3] = {50, 50, 10};
-  double cell = 3.0;                // maze only: m per maze cell
-  std::string place;                // "line 7, key generators[0]" for messages
+  double cell = 3.0;  // maze only: m per maze cell
+  std::string place;  // "line 7, key generators[0]" for messages
 };
 
 struct SweepVariable {
@@ -25,14 +25,14 @@ struct SweepVariable {
 };
 
 struct SweepScenarioFile {
-  std::string as_written;           // the results' `scenario` column
-  std::filesystem::path path;       // resolved (see resolveSweepScenarioPath)
+  std::string as_written;      // the results' `scenario` column
+  std::filesystem::path path;  // resolved (see resolveSweepScenarioPath)
   std::string place;
 };
 
 struct SweepSpec {
   std::filesystem::path file;
-  std::string name;                 // the file's stem unless `name:` says otherwise
+  std::string name;  // the file's stem unless `name:` says otherwise
   std::vector<SweepScenarioFile> scenarios;
   std::vector<GeneratorSpec> generators;
   std::vector<SweepVariable> vary;  // in file order: the first key varies slowest
@@ -40,7 +40,7 @@ struct SweepSpec {
   bool video = false;
   std::string figure_metric = "planned_length_m";
   double job_timeout_s = 600.0;
-  double kill_grace_s = 5.0;        // SIGTERM -> SIGKILL delay for a job past its time limit
+  double kill_grace_s = 5.0;  // SIGTERM -> SIGKILL delay for a job past its time limit
 };
 
 // Reads a sweep file. Throws InputError (file, line and key, problem) on any defect, including

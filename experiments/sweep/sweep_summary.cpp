@@ -98,9 +98,9 @@ std::string sweepSummaryCsv(const SweepSummary& s) {
   out += "metric,jobs,n,mean,sd,median,ci95_low,ci95_high\n";
   for (const auto& r : s.rows) {
     for (const auto& g : r.group) out += csvField(g) + ",";
-    out += csvField(r.metric) + "," + std::to_string(r.jobs) + "," + std::to_string(r.stats.n) + "," +
-           number(r.stats.mean) + "," + number(r.stats.sd) + "," + number(r.stats.median) + "," +
-           number(r.stats.ci95_low) + "," + number(r.stats.ci95_high) + "\n";
+    out += csvField(r.metric) + "," + std::to_string(r.jobs) + "," + std::to_string(r.stats.n) +
+           "," + number(r.stats.mean) + "," + number(r.stats.sd) + "," + number(r.stats.median) +
+           "," + number(r.stats.ci95_low) + "," + number(r.stats.ci95_high) + "\n";
   }
   return out;
 }

@@ -15,7 +15,7 @@ namespace cosim {
 struct SummaryRow {
   std::vector<std::string> group;  // values of SweepSummary::group_columns
   std::string metric;
-  std::size_t jobs = 0;            // finished jobs in the group
+  std::size_t jobs = 0;  // finished jobs in the group
   Descriptive stats;
 };
 

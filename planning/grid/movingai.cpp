@@ -122,7 +122,8 @@ std::vector<MovingAIScenarioLine> parseMovingAIScenario(const std::string& text,
         (in >> extra))
       throw InputError(file, lineRef(i),
                        "expected 9 fields: bucket map width height start_x start_y goal_x goal_y "
-                       "optimal_length");
+                       "optimal_length (all but map and optimal_length whole numbers that fit an "
+                       "int)");
     char* end = nullptr;
     s.optimal_length = std::strtod(optimal.c_str(), &end);
     if (end == optimal.c_str() || *end != '\0' || !std::isfinite(s.optimal_length))

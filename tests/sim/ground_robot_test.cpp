@@ -9,27 +9,32 @@
 #include "control/ground_velocity_tracker.h"
 #include "planning/input_error.h"
 #include "sim/ground_simulation.h"
+#include "sim/ground_vehicle_handles.h"
 #include "sim/world_model.h"
 
 namespace cosim {
 namespace {
 
 std::string scenarioText(const std::string& vehicles, const std::string& extra_world = "") {
-  return "world:\n  bounds: {min: [0, 0, 0], max: [6, 6, 2]}\n" + extra_world + "vehicles:\n" + vehicles +
-         "sim: {timestep: 0.002, control_rate: 50, max_time: 12}\n";
+  return "world:\n  bounds: {min: [0, 0, 0], max: [6, 6, 2]}\n" + extra_world + "vehicles:\n" +
+         vehicles + "sim: {timestep: 0.002, control_rate: 50, max_time: 12}\n";
 }
 
 std::filesystem::path tempDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("cosim-ground-" + name + "-" + std::to_string(::getpid()));
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("cosim-ground-" + name + "-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   return dir;
 }
 
-void writeFile(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }
+void writeFile(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+}
 
 TEST(GroundRobotModel, DiffDriveBecomesFreeBaseWithTurtleBot3WheelGeometry) {
-  const Scenario s = parseScenario(scenarioText("  - {name: tb, model: diff_drive, start: [1, 1, 0], goal: [4, 4, 0]}\n"),
-                                   "test.yaml");
+  const Scenario s = parseScenario(
+      scenarioText("  - {name: tb, model: diff_drive, start: [1, 1, 0], goal: [4, 4, 0]}\n"),
+      "test.yaml");
   ASSERT_TRUE(s.vehicles[0].ground);
   const WorldModel w = WorldModel::build(s);
   const VehicleHandles& h = w.vehicles()[0];
@@ -48,7 +53,9 @@ TEST(GroundRobotModel, DiffDriveBecomesFreeBaseWithTurtleBot3WheelGeometry) {
 
 TEST(GroundRobotModel, OmniBaseBecomesPlanarBaseFacingItsStartYaw) {
   const Scenario s = parseScenario(
-      scenarioText("  - {name: om, model: omni_base, start: [1, 1, 0], goal: [4, 4, 0], yaw: 90}\n"), "test.yaml");
+      scenarioText(
+          "  - {name: om, model: omni_base, start: [1, 1, 0], goal: [4, 4, 0], yaw: 90}\n"),
+      "test.yaml");
   const WorldModel w = WorldModel::build(s);
   const VehicleHandles& h = w.vehicles()[0];
   EXPECT_EQ(h.drive.kind, GroundDrive::Kind::Holonomic);
@@ -56,19 +63,25 @@ TEST(GroundRobotModel, OmniBaseBecomesPlanarBaseFacingItsStartYaw) {
   EXPECT_NEAR(h.drive.max_speed, 0.6, 1e-12);
   EXPECT_NEAR(h.params.mass, 4.0, 1e-12);
   EXPECT_NEAR(h.params.radius, 0.15, 1e-9);
+  EXPECT_NEAR(h.drive.start_yaw, M_PI / 2, 1e-12);
   mjData* d = mj_makeData(w.model());
   mj_resetData(w.model(), d);
+  setPlanarPose(d, h, {2.5, 0.5}, 0.3);
+  mj_kinematics(w.model(), d);
   const PlanarState st = readPlanarState(d, h);
-  EXPECT_NEAR(st.position.x(), 1.0, 1e-12);
-  EXPECT_NEAR(st.yaw, M_PI / 2, 1e-12);
+  EXPECT_NEAR(st.position.x(), 2.5, 1e-12);
+  EXPECT_NEAR(st.position.y(), 0.5, 1e-12);
+  EXPECT_NEAR(st.yaw, 0.3, 1e-12);
+  EXPECT_NEAR(d->xpos[3 * h.body], 2.5, 1e-12);  // the body really is there
   mj_deleteData(d);
 }
 
 TEST(GroundRobotModel, MalformedUrdfNamesFileAndLine) {
   const auto dir = tempDir("malformed");
   writeFile(dir / "bad.urdf", "<robot name=\"x\">\n  <link name=\"a\">\n</robot>\n");
-  const Scenario s = parseScenario(scenarioText("  - {model: bad.urdf, start: [1, 1, 0], goal: [4, 4, 0]}\n"),
-                                   (dir / "s.yaml").string());
+  const Scenario s =
+      parseScenario(scenarioText("  - {model: bad.urdf, start: [1, 1, 0], goal: [4, 4, 0]}\n"),
+                    (dir / "s.yaml").string());
   try {
     WorldModel::build(s);
     FAIL() << "expected InputError";
@@ -82,10 +95,12 @@ TEST(GroundRobotModel, MalformedUrdfNamesFileAndLine) {
 TEST(GroundRobotModel, UrdfJointWithUnknownLinkIsRejectedByUrdfdom) {
   const auto dir = tempDir("badjoint");
   writeFile(dir / "r.urdf",
-            "<robot name=\"r\"><link name=\"base\"/><joint name=\"j\" type=\"fixed\"><parent link=\"base\"/>"
+            "<robot name=\"r\"><link name=\"base\"/><joint name=\"j\" type=\"fixed\"><parent "
+            "link=\"base\"/>"
             "<child link=\"ghost\"/></joint></robot>\n");
-  const Scenario s = parseScenario(scenarioText("  - {model: r.urdf, start: [1, 1, 0], goal: [4, 4, 0]}\n"),
-                                   (dir / "s.yaml").string());
+  const Scenario s =
+      parseScenario(scenarioText("  - {model: r.urdf, start: [1, 1, 0], goal: [4, 4, 0]}\n"),
+                    (dir / "s.yaml").string());
   try {
     WorldModel::build(s);
     FAIL() << "expected InputError";
@@ -99,11 +114,13 @@ TEST(GroundRobotModel, UrdfJointWithUnknownLinkIsRejectedByUrdfdom) {
 TEST(GroundRobotModel, MissingMeshNamesLinkAndMeshElement) {
   const auto dir = tempDir("mesh");
   writeFile(dir / "m.urdf",
-            "<robot name=\"m\"><link name=\"base\"><inertial><mass value=\"1\"/><inertia ixx=\"0.01\" ixy=\"0\" "
+            "<robot name=\"m\"><link name=\"base\"><inertial><mass value=\"1\"/><inertia "
+            "ixx=\"0.01\" ixy=\"0\" "
             "ixz=\"0\" iyy=\"0.01\" iyz=\"0\" izz=\"0.01\"/></inertial><collision><geometry>"
             "<mesh filename=\"meshes/shell.stl\"/></geometry></collision></link></robot>\n");
-  const Scenario s = parseScenario(scenarioText("  - {model: m.urdf, start: [1, 1, 0], goal: [4, 4, 0]}\n"),
-                                   (dir / "s.yaml").string());
+  const Scenario s =
+      parseScenario(scenarioText("  - {model: m.urdf, start: [1, 1, 0], goal: [4, 4, 0]}\n"),
+                    (dir / "s.yaml").string());
   try {
     WorldModel::build(s);
     FAIL() << "expected InputError";
@@ -117,12 +134,14 @@ TEST(GroundRobotModel, MissingMeshNamesLinkAndMeshElement) {
 }
 
 // Drives one robot along a timed path and returns the log.
-RunLog drive(const std::string& model, const GroundTimedPath& path, double yaw_deg = 0.0) {
-  const Scenario s = parseScenario(scenarioText("  - {name: r, model: " + model + ", start: [1, 1, 0], goal: [" +
-                                                std::to_string(path.points().back().x()) + ", " +
-                                                std::to_string(path.points().back().y()) + ", 0], yaw: " +
-                                                std::to_string(yaw_deg) + "}\n"),
-                                   "test.yaml");
+RunLog drive(const std::string& model, const GroundTimedPath& path, double speed,
+             double yaw_deg = 0.0) {
+  const Scenario s =
+      parseScenario(scenarioText("  - {name: r, model: " + model + ", start: [1, 1, 0], goal: [" +
+                                 std::to_string(path.points().back().x()) + ", " +
+                                 std::to_string(path.points().back().y()) +
+                                 ", 0], yaw: " + std::to_string(yaw_deg) + "}\n"),
+                    "test.yaml");
   const WorldModel w = WorldModel::build(s);
   const VehicleHandles& h = w.vehicles()[0];
   GroundMotionLimits limits;
@@ -132,8 +151,10 @@ RunLog drive(const std::string& model, const GroundTimedPath& path, double yaw_d
   if (h.drive.kind == GroundDrive::Kind::Holonomic)
     c = std::make_unique<GroundVelocityTracker>(limits);
   else
-    c = std::make_unique<GroundFeedbackLinearization>(limits, GroundFeedbackLinearizationParams{0.08, 2.0, h.drive.wheel_separation});
+    c = std::make_unique<GroundFeedbackLinearization>(
+        limits, GroundFeedbackLinearizationParams{0.08, 2.0, h.drive.wheel_separation});
   GroundTimedPath p = path;
+  p.setSmoothing(speed / limits.max_acceleration);
   GroundPilot pilot;
   pilot.controller = c.get();
   pilot.path = &p;
@@ -149,7 +170,10 @@ double maxDeviation(const RunLog& log) {
   double e = 0.0;
   for (const auto& x : log.vehicles[0].samples) {
     e = std::max(e, (x.pos - x.ref_pos).head<2>().norm());
-    if (getenv("DBG")) printf("%.2f ref %.3f %.3f pos %.3f %.3f v %.3f %.3f cmd %.3f %.3f %.3f f %.2f %.2f\n", x.t, x.ref_pos.x(), x.ref_pos.y(), x.pos.x(), x.pos.y(), x.vel.x(), x.vel.y(), x.rotor_cmd[0], x.rotor_cmd[1], x.rotor_cmd[2], x.rotor_thrust[0], x.rotor_thrust[1]);
+    if (getenv("DBG"))
+      printf("%.2f ref %.3f %.3f pos %.3f %.3f v %.3f %.3f cmd %.3f %.3f %.3f f %.2f %.2f\n", x.t,
+             x.ref_pos.x(), x.ref_pos.y(), x.pos.x(), x.pos.y(), x.vel.x(), x.vel.y(),
+             x.rotor_cmd[0], x.rotor_cmd[1], x.rotor_cmd[2], x.rotor_thrust[0], x.rotor_thrust[1]);
   }
   return e;
 }
@@ -159,10 +183,11 @@ TEST(GroundRobotDrive, OmniBaseFollowsLShapedTimedPathWithinFiveCentimetres) {
   path.append(0.2, {1, 1});
   path.append(3.2, {2.2, 1});    // 0.4 m/s
   path.append(6.2, {2.2, 2.2});  // a right-angle corner
-  const RunLog log = drive("omni_base", path, 30.0);
+  const RunLog log = drive("omni_base", path, 0.4, 30.0);
   EXPECT_EQ(log.end_reason, "goal");
   ASSERT_TRUE(log.vehicles[0].reached_goal);
-  EXPECT_LT(log.vehicles[0].arrival_time, 6.6);
+  EXPECT_LT(log.vehicles[0].arrival_time,
+            6.6 + 0.1);  // the smoothed reference rests at 6.2 + 0.4 s
   EXPECT_LT(maxDeviation(log), 0.05);
   EXPECT_TRUE(log.vehicles[0].collisions.empty());
   // The base held its start heading of 30 degrees.
@@ -173,22 +198,26 @@ TEST(GroundRobotDrive, OmniBaseFollowsLShapedTimedPathWithinFiveCentimetres) {
 TEST(GroundRobotDrive, DiffDriveOnWheelsFollowsLShapedTimedPath) {
   GroundTimedPath path;
   path.append(0.2, {1, 1});
-  path.append(5.2, {1.8, 1});    // 0.16 m/s
+  path.append(5.2, {1.8, 1});  // 0.16 m/s
   path.append(10.2, {1.8, 1.8});
-  const RunLog log = drive("diff_drive", path);
+  const RunLog log = drive("diff_drive", path, 0.16);
   EXPECT_EQ(log.end_reason, "goal");
   ASSERT_TRUE(log.vehicles[0].reached_goal);
-  // Wheels on the floor, not collisions; the corner is turned within 0.1 m of the plan.
+  // Wheels on the floor are not collisions. At the corner the robot must turn in place while
+  // the reference moves on, and falls behind by up to about 0.13 m; it catches up after.
   EXPECT_TRUE(log.vehicles[0].collisions.empty());
-  EXPECT_LT(maxDeviation(log), 0.1);
-  EXPECT_GT(maxDeviation(log), 0.005);  // a real vehicle lags a little at the corner
+  EXPECT_LT(maxDeviation(log), 0.15);
+  EXPECT_GT(maxDeviation(log), 0.05);
+  const LogSample& last = log.vehicles[0].samples.back();
+  EXPECT_LT((last.pos - last.ref_pos).head<2>().norm(), 0.02);
 }
 
 TEST(GroundRobotDrive, MovingObstacleDrivenIntoRobotIsBookedAsContact) {
   // A cylinder sweeps across the resting robot's position.
   const Scenario s = parseScenario(
       scenarioText("  - {name: r, model: omni_base, start: [3, 3, 0], goal: [3, 3, 0]}\n",
-                   "  moving_obstacles:\n    - {type: cylinder, radius: 0.2, height: 1, path: [[1, 3], [5, 3]], speed: 1.0}\n"),
+                   "  moving_obstacles:\n    - {type: cylinder, radius: 0.2, height: 1, path: [[1, "
+                   "3], [5, 3]], speed: 1.0}\n"),
       "test.yaml");
   const WorldModel w = WorldModel::build(s);
   GroundMotionLimits limits;
@@ -210,7 +239,8 @@ TEST(GroundRobotDrive, MovingObstacleDrivenIntoRobotIsBookedAsContact) {
   // Contact begins when the centres are 0.35 m apart: at t = (2 - 0.35) / 1 = 1.65 s.
   EXPECT_NEAR(log.vehicles[0].collisions.front().t, 1.65, 0.05);
   ASSERT_EQ(log.moving_obstacles.size(), 1u);
-  EXPECT_NEAR(log.moving_obstacles[0].pos.back().x(), 1.0 + 1.0 * log.moving_obstacles[0].t.back(), 1e-9);
+  EXPECT_NEAR(log.moving_obstacles[0].pos.back().x(), 1.0 + 1.0 * log.moving_obstacles[0].t.back(),
+              1e-9);
 }
 
 }  // namespace

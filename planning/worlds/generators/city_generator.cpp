@@ -9,14 +9,16 @@ namespace cosim {
 GeneratedWorld generateCity(const CityOptions& o) {
   checkWorldGeneratorOptions(o.world, 1.0, "city");
   const Eigen::Vector3d size = o.world.size;
-  if (!(o.street > 0 && o.pitch > o.street && o.min_height_fraction > 0 && o.min_height_fraction <= 1 &&
-        o.min_footprint_fraction > 0 && o.min_footprint_fraction <= 1))
+  if (!(o.street > 0 && o.pitch > o.street && o.min_height_fraction > 0 &&
+        o.min_height_fraction <= 1 && o.min_footprint_fraction > 0 &&
+        o.min_footprint_fraction <= 1))
     throw InputError("", "generator city", "pitch, street or fractions out of range");
   // Lots per axis, and the offset that centres the street grid in the world.
   const int nx = static_cast<int>(std::floor((size.x() - o.street) / o.pitch));
   const int ny = static_cast<int>(std::floor((size.y() - o.street) / o.pitch));
   if (nx < 1 || ny < 1 || size.z() < 3)
-    throw InputError("", "generator city", "world too small for one lot between streets (and 3 m of height)");
+    throw InputError("", "generator city",
+                     "world too small for one lot between streets (and 3 m of height)");
   const double ox = (size.x() - (nx * o.pitch + o.street)) / 2;
   const double oy = (size.y() - (ny * o.pitch + o.street)) / 2;
 
@@ -42,7 +44,8 @@ GeneratedWorld generateCity(const CityOptions& o) {
       if (!built) continue;
       Obstacle b;
       b.type = ObstacleType::Box;
-      b.pos = {ox + i * o.pitch + o.street + lot / 2 + dx, oy + j * o.pitch + o.street + lot / 2 + dy, h / 2};
+      b.pos = {ox + i * o.pitch + o.street + lot / 2 + dx,
+               oy + j * o.pitch + o.street + lot / 2 + dy, h / 2};
       b.size = {ex, ey, h};
       g.world.obstacles.push_back(b);
     }

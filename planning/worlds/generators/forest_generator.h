@@ -9,9 +9,9 @@ namespace cosim {
 
 struct ForestOptions {
   WorldGeneratorOptions world;
-  double min_radius = 0.3, max_radius = 0.6;          // m
-  double min_height_fraction = 0.5;                   // of the world's height; trees reach up to it
-  double clearing = 2.5;                              // m, free radius around start and goal
+  double min_radius = 0.3, max_radius = 0.6;  // m
+  double min_height_fraction = 0.5;           // of the world's height; trees reach up to it
+  double clearing = 2.5;                      // m, free radius around start and goal
 };
 
 // Throws InputError for sizes or densities out of range (density in [0, 0.5]).

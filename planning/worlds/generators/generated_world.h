@@ -23,7 +23,9 @@ struct GeneratedWorld {
 };
 
 // A uniform draw in [0, 1) from the top 53 bits (portable across standard libraries).
-inline double unitDraw(std::mt19937_64& rng) { return static_cast<double>(rng() >> 11) * 0x1.0p-53; }
+inline double unitDraw(std::mt19937_64& rng) {
+  return static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
 inline double uniformDraw(std::mt19937_64& rng, double lo, double hi) {
   return lo + (hi - lo) * unitDraw(rng);
 }

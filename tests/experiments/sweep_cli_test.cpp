@@ -1,0 +1,214 @@
+// `cosim sweep` end to end on an 8-job sweep of small generated worlds: one row per job in id
+// order, nothing re-run on a second invocation, shards that merge to the same table as one run
+// (with a different --jobs), located bad-input errors (exit 2), and a clean stop on SIGINT that a
+// re-run completes without duplicated or truncated rows.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <thread>
+
+#include "cli_test_support.h"
+
+namespace cosim {
+namespace {
+
+namespace fs = std::filesystem;
+using test::runCosim;
+using test::slurp;
+
+const char* kSweep = R"(# 2 worlds x 2 planners x 2 seeds
+generators:
+  - {type: city, density: 0.5, size: [16, 16, 5], seed: 1}
+  - {type: maze, density: 1.0, size: [12, 12, 3], cell: 3, seed: 2}
+vary:
+  planner.name: [astar, theta_star]
+  sim.seed: [1, 2]
+set: {sim.max_time: 30}
+output: {video: false}
+limits: {job_timeout_s: 120}
+)";
+
+// RFC 4180 fields of one CSV line (quoted fields may hold commas).
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+      out.back() += '"', ++i;
+    else if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+      out.emplace_back();
+    else
+      out.back() += c;
+  }
+  return out;
+}
+
+std::vector<std::vector<std::string>> readCsv(const fs::path& p) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(slurp(p));
+  for (std::string line; std::getline(in, line);) rows.push_back(csvFields(line));
+  return rows;
+}
+
+// Columns measured by a clock differ between runs; everything else must match.
+bool wallClockColumn(const std::string& name) {
+  return name.find("time_ms") != std::string::npos || name.find("wall") != std::string::npos ||
+         name == "sim_speed_x";
+}
+
+class SweepCommandTest : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    root_ = new fs::path(test::freshDir("sweep-cli"));
+    fs::create_directories(*root_);
+    std::ofstream(*root_ / "small.yaml") << kSweep;
+    first_ = new test::CommandResult(runCosim("sweep " + (*root_ / "small.yaml").string() +
+                                              " --jobs 2 --out " + (*root_ / "a").string()));
+  }
+  static void TearDownTestSuite() {
+    fs::remove_all(*root_);
+    delete root_;
+    delete first_;
+  }
+  static fs::path* root_;
+  static test::CommandResult* first_;
+};
+fs::path* SweepCommandTest::root_ = nullptr;
+test::CommandResult* SweepCommandTest::first_ = nullptr;
+
+TEST_F(SweepCommandTest, RunsEveryJobAndWritesOneRowPerJobInIdOrder) {
+  ASSERT_EQ(first_->status, 0) << first_->err;
+  const auto rows = readCsv(*root_ / "a/results.csv");
+  ASSERT_EQ(rows.size(), 9u);
+  const std::vector<std::string> start(rows[0].begin(), rows[0].begin() + 6);
+  EXPECT_EQ(start, (std::vector<std::string>{"job", "scenario", "planner.name", "sim.seed",
+                                             "status", "reached_goal"}));
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].size(), rows[0].size());
+    EXPECT_EQ(rows[i][0], std::to_string(i - 1));
+    EXPECT_EQ(rows[i][4], "ok") << "job " << i - 1 << ": "
+                                << slurp(*root_ /
+                                         ("a/jobs/000" + std::to_string(i - 1) + "/log.txt"));
+  }
+  EXPECT_EQ(rows[1][1], "worlds/city-d0.5-s1-16x16x5.yaml");
+  EXPECT_EQ(rows[8][1], "worlds/maze-d1-s2-12x12x3.yaml");
+  EXPECT_EQ(rows[8][2], "theta_star");
+  EXPECT_EQ(rows[8][3], "2");
+  // summary.csv: 2 worlds x 2 planners, seeds pooled; ok_rate first.
+  const auto summary = readCsv(*root_ / "a/summary.csv");
+  int ok_rows = 0;
+  for (const auto& r : summary)
+    if (r.size() > 4 && r[2] == "ok_rate") {
+      ++ok_rows;
+      EXPECT_EQ(r[3], "2");  // jobs
+      EXPECT_EQ(r[5], "1");  // mean
+    }
+  EXPECT_EQ(ok_rows, 4);
+  EXPECT_TRUE(fs::exists(*root_ / "a/figure.png"));
+  EXPECT_NE(first_->err.find("8/8 done (8 ok)"), std::string::npos) << first_->err;
+}
+
+TEST_F(SweepCommandTest, ASecondInvocationDoesNoWork) {
+  const std::string before = slurp(*root_ / "a/results.csv");
+  const auto again =
+      runCosim("sweep " + (*root_ / "small.yaml").string() + " --out " + (*root_ / "a").string());
+  EXPECT_EQ(again.status, 0) << again.err;
+  EXPECT_NE(again.err.find("8 jobs, 8 already finished, 0 to run"), std::string::npos) << again.err;
+  EXPECT_EQ(slurp(*root_ / "a/results.csv"), before);
+}
+
+TEST_F(SweepCommandTest, TwoShardsMergedEqualOneRunRowForRow) {
+  const std::string sweep = (*root_ / "small.yaml").string(), out = (*root_ / "b").string();
+  for (const char* shard : {"1/2", "2/2"}) {
+    const auto r = runCosim("sweep " + sweep + " --jobs 1 --shard " + shard + " --out " + out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("4 jobs, 0 already finished, 4 to run"), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(*root_ / "b/results.csv"));  // shards leave the merge to --merge-only
+  const auto merged = runCosim("sweep " + sweep + " --merge-only --out " + out);
+  ASSERT_EQ(merged.status, 0) << merged.err;
+  const auto a = readCsv(*root_ / "a/results.csv"), b = readCsv(*root_ / "b/results.csv");
+  ASSERT_EQ(a.size(), b.size());
+  ASSERT_EQ(a[0], b[0]);
+  int compared = 0;
+  for (std::size_t i = 1; i < a.size(); ++i)
+    for (std::size_t c = 0; c < a[0].size(); ++c) {
+      if (wallClockColumn(a[0][c])) continue;
+      EXPECT_EQ(a[i][c], b[i][c]) << "row " << i << ", column " << a[0][c];
+      ++compared;
+    }
+  EXPECT_GT(compared, 8 * 30);
+}
+
+TEST_F(SweepCommandTest, AMalformedSweepFileOrAnUnknownKeyExitsTwoNamingFileLineAndKey) {
+  const fs::path bad = *root_ / "bad.yaml";
+  std::ofstream(bad) << "generators: [{type: city, size: [16, 16, 5]}]\nvary:\n  planner.name: "
+                        "[astar]\n  sim.sed: [1]\n";
+  auto r = runCosim("sweep " + bad.string() + " --out " + (*root_ / "bad").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(
+      r.err.rfind("cosim: " + bad.string() + ": line 4, key vary.sim.sed: scenario worlds/", 0), 0u)
+      << r.err;
+  EXPECT_NE(r.err.find("unknown key 'sed'"), std::string::npos) << r.err;
+  std::ofstream(bad) << "generators: [{type: city}]\nvary: {planner.name: [astar}\n";
+  r = runCosim("sweep " + bad.string() + " --out " + (*root_ / "bad").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err.rfind("cosim: " + bad.string() + ": line 2: malformed YAML", 0), 0u) << r.err;
+  r = runCosim("sweep " + (*root_ / "small.yaml").string() + " --shard 3/2 --out " +
+               (*root_ / "bad").string());
+  EXPECT_EQ(r.status, 2);
+}
+
+TEST_F(SweepCommandTest, AnInterruptedSweepResumesWithoutDuplicatedOrTruncatedRows) {
+  const fs::path out = *root_ / "c";
+  const std::string sweep = (*root_ / "small.yaml").string();
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string log = (*root_ / "c.log").string();
+    std::freopen(log.c_str(), "w", stderr);
+    std::freopen("/dev/null", "w", stdout);
+    ::execl(COSIM_BINARY, COSIM_BINARY, "sweep", sweep.c_str(), "--jobs", "1", "--out", out.c_str(),
+            static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  // Interrupt once the first job has finished and the second is under way.
+  const auto t0 = std::chrono::steady_clock::now();
+  while (!fs::exists(out / "jobs/0001/log.txt") &&
+         std::chrono::steady_clock::now() - t0 < std::chrono::seconds(90))
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1) << slurp(*root_ / "c.log");
+  EXPECT_NE(slurp(*root_ / "c.log").find("interrupted"), std::string::npos);
+  auto rows = readCsv(out / "results.csv");
+  ASSERT_GE(rows.size(), 2u);  // the first job, at least
+  EXPECT_LT(rows.size(), 9u);  // not all of them
+  for (const auto& r : rows) EXPECT_EQ(r.size(), rows[0].size());
+
+  const auto resumed = runCosim("sweep " + sweep + " --jobs 2 --out " + out.string());
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  rows = readCsv(out / "results.csv");
+  ASSERT_EQ(rows.size(), 9u);
+  std::set<std::string> ids;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i].size(), rows[0].size());
+    EXPECT_EQ(rows[i][4], "ok");
+    ids.insert(rows[i][0]);
+  }
+  EXPECT_EQ(ids.size(), 8u);
+}
+
+}  // namespace
+}  // namespace cosim
