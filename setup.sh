@@ -31,6 +31,8 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 JOBS=$(nproc 2>/dev/null || echo 2)
+# ccache keys on paths relative to the checkout, so another clone of the project reuses the cache.
+export CCACHE_BASEDIR="$PWD"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j"$JOBS"
 

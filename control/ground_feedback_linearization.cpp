@@ -44,6 +44,13 @@ GroundCommand GroundFeedbackLinearization::update(const PlanarState& x, const Pl
   w *= scale;
   c.saturated |= stepTowards(v_, v, limits_.max_acceleration * dt);
   c.saturated |= stepTowards(w_, w, limits_.max_yaw_acceleration * dt);
+  // The rate limits move v and w separately; the wheels must still stay within their speed.
+  const double wheels = std::abs(v_) + 0.5 * p_.wheel_separation * std::abs(w_);
+  if (wheels > limits_.max_speed) {
+    v_ *= limits_.max_speed / wheels;
+    w_ *= limits_.max_speed / wheels;
+    c.saturated = true;
+  }
   c.forward = v_;
   c.yaw_rate = w_;
   return c;

@@ -94,6 +94,18 @@ std::string ParamSet::getString(const std::string& name, const std::string& fall
   return v;
 }
 
+std::vector<std::string> ParamSet::requireAllUsedExcept(
+    const std::string& owner, const std::vector<std::string>& tolerated) const {
+  std::vector<std::string> ignored;
+  for (const auto& [name, entry] : values_) {
+    if (used_.count(name)) continue;
+    if (std::find(tolerated.begin(), tolerated.end(), name) == tolerated.end())
+      fail(name, "unknown parameter '" + name + "' for " + owner);
+    ignored.push_back(name);
+  }
+  return ignored;
+}
+
 void ParamSet::requireAllUsed(const std::string& owner) const {
   for (const auto& [name, entry] : values_) {
     if (!used_.count(name)) fail(name, "unknown parameter '" + name + "' for " + owner);

@@ -27,6 +27,10 @@ class ParamSet {
   // Throws InputError naming the first parameter that was set but never asked for.
   // `owner` names the consumer in the message, e.g. "planner 'astar'".
   void requireAllUsed(const std::string& owner) const;
+  // As requireAllUsed, but parameters named in `tolerated` are not errors: they are returned
+  // (for a note to the user) instead.
+  std::vector<std::string> requireAllUsedExcept(const std::string& owner,
+                                                const std::vector<std::string>& tolerated) const;
 
   // Every parameter asked for, with the value in force (set or default), for plan.json.
   const std::map<std::string, std::string>& effective() const { return effective_; }

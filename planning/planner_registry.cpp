@@ -1,5 +1,7 @@
 #include "planning/planner_registry.h"
 
+#include <algorithm>
+
 #include "planning/grid/grid_planners.h"
 #include "planning/grid/grid_world_planner.h"
 #include "planning/input_error.h"
@@ -68,10 +70,28 @@ std::unique_ptr<GridPlanner> makeGridPlanner(const std::string& name, ParamSet& 
   return planner;
 }
 
+const std::vector<std::string>& allPlannerParameterNames() {
+  // Each factory asks for its parameters by name with defaults: building every planner once
+  // from an empty set lists them all.
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all;
+    for (const auto& e : PlannerRegistry::instance().entries()) {
+      ParamSet probe("probe");
+      e.make(probe);
+      for (const auto& [k, v] : probe.effective())
+        if (std::find(all.begin(), all.end(), k) == all.end()) all.push_back(k);
+    }
+    return all;
+  }();
+  return names;
+}
+
 std::unique_ptr<Planner> makePlanner(const std::string& name, ParamSet& params,
-                                     const std::string& place) {
+                                     const std::string& place, std::vector<std::string>* ignored) {
   auto planner = findOrThrow(name, params, place, false).make(params);
-  params.requireAllUsed("planner '" + name + "'");
+  const auto unused =
+      params.requireAllUsedExcept("planner '" + name + "'", allPlannerParameterNames());
+  if (ignored) ignored->insert(ignored->end(), unused.begin(), unused.end());
   return planner;
 }
 

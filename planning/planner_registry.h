@@ -43,7 +43,14 @@ class PlannerRegistry {
 // Throws InputError (from params.file()) for an unknown name or unknown/invalid parameters.
 std::unique_ptr<GridPlanner> makeGridPlanner(const std::string& name, ParamSet& params,
                                              const std::string& place = "--planner");
+// A parameter that some other registered planner takes (e.g. a grid's `resolution` when a sweep
+// switches to rrt_star) is not an error: its name is added to `ignored`, if given. A name no
+// planner takes is an error (a misspelling).
 std::unique_ptr<Planner> makePlanner(const std::string& name, ParamSet& params,
-                                     const std::string& place = "key planner.name");
+                                     const std::string& place = "key planner.name",
+                                     std::vector<std::string>* ignored = nullptr);
+
+// Every parameter name some registered planner reads.
+const std::vector<std::string>& allPlannerParameterNames();
 
 }  // namespace cosim

@@ -6,6 +6,7 @@
 
 #include "render/frame_annotations.h"
 #include "render/log_lookup.h"
+#include "render/trail_decimation.h"
 #include "sim/ground_vehicle_handles.h"
 
 namespace cosim {
@@ -13,8 +14,8 @@ namespace cosim {
 namespace {
 // Geoms added per frame are capped: software rendering pays per triangle, and a capsule is a
 // few hundred. The trail and the reference are decimated to stay within these budgets.
-constexpr int kTrailSegmentBudget = 400;
-constexpr int kReferenceDashBudget = 150;
+constexpr int kTrailSegmentBudget = 250;
+constexpr int kReferenceDashBudget = 60;
 // Lines are about this fraction of the visible height thick at the camera's focus
 // (about 4 px in a 720-line frame).
 constexpr double kLineWidthFraction = 0.0055;
@@ -158,20 +159,35 @@ Eigen::Vector3f RunRenderer::plannedColour(std::size_t vehicle) const {
 }
 
 void RunRenderer::addTrail(std::size_t vehicle, double t) {
+  if (trail_line_radius_ != line_radius_) {
+    // Vertices within a fraction of the line width of the logged positions look smooth; a
+    // segment budget bounds the frame cost on long, winding flights.
+    trail_vertices_.clear();
+    for (std::size_t a = 0; a < log_.vehicles.size(); ++a) {
+      TrailDecimation o;
+      o.tolerance = 0.3 * line_radius_;
+      o.max_segment = std::max(40.0 * line_radius_, 0.5);
+      o.max_error_step = 0.06 * error_scale_;
+      std::vector<std::size_t> kept = decimateTrail(log_.vehicles[a].samples, errors_[a], o);
+      while (kept.size() > static_cast<std::size_t>(kTrailSegmentBudget)) {
+        o.tolerance *= 2.0;
+        o.max_segment *= 2.0;
+        o.max_error_step *= 2.0;
+        kept = decimateTrail(log_.vehicles[a].samples, errors_[a], o);
+      }
+      trail_vertices_.push_back(std::move(kept));
+    }
+    trail_line_radius_ = line_radius_;
+  }
   const VehicleLog& v = log_.vehicles[vehicle];
   const std::vector<double>& err = errors_[vehicle];
+  const std::vector<std::size_t>& kept = trail_vertices_[vehicle];
   const std::size_t last = sampleIndexAt(v, t);
-  // Decimated by distance: a vertex every ~1.5 line widths, or coarser if the flight is long
-  // (a fixed segment budget keeps the frame cost bounded).
-  double length = 0.0;
-  for (std::size_t i = 1; i < v.samples.size(); ++i) length += (v.samples[i].pos - v.samples[i - 1].pos).norm();
-  const double spacing = std::max(3.0 * line_radius_, length / kTrailSegmentBudget);
   std::size_t from = 0;
-  for (std::size_t i = 1; i <= last; ++i) {
-    const Eigen::Vector3d& p = v.samples[i].pos;
-    if ((p - v.samples[from].pos).norm() < spacing && i != last) continue;
-    const double e = 0.5 * (err[from] + err[i]);
-    addSegment(v.samples[from].pos, p, errorColour(e / error_scale_), line_radius_);
+  for (std::size_t k = 1; k < kept.size() && from < last; ++k) {
+    const std::size_t i = std::min(kept[k], last);  // the trail ends at the vehicle
+    addSegment(v.samples[from].pos, v.samples[i].pos, errorColour(0.5 * (err[from] + err[i]) / error_scale_),
+               line_radius_);
     from = i;
   }
 }

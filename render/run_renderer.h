@@ -62,6 +62,10 @@ class RunRenderer {
   bool against_trajectory_;
   std::vector<std::vector<double>> errors_;  // per vehicle, per sample
   std::vector<int> obstacle_geoms_;          // geom id of each scenario obstacle (-1 if absent)
+  // Kept trail vertices per vehicle, for the line width they were decimated for (recomputed
+  // when the camera changes it).
+  std::vector<std::vector<std::size_t>> trail_vertices_;
+  double trail_line_radius_ = -1.0;
   double error_scale_ = 0.1;
   double end_time_ = 0.0;
   mjData* data_ = nullptr;

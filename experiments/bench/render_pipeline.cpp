@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 
+#include "render/camera_rig.h"
 #include "render/offscreen_context.h"
 #include "render/run_outputs.h"
 #include "render/run_renderer.h"
@@ -98,7 +99,7 @@ Section benchRenderPipeline(bool quick) {
   double best_bare = 1e300, best_full = 1e300;
   for (int round = 0; round < rounds; ++round) {
     {
-      // Bare: the engine's renderer alone, the same model and a moving overview camera.
+      // Bare: the engine's renderer alone on the same model, camera path and frame size.
       OffscreenContext ctx(m, width, height);
       mjData* d = mj_makeData(m);
       mj_forward(m, d);
@@ -110,14 +111,16 @@ Section benchRenderPipeline(bool quick) {
       mjv_defaultCamera(&cam);
       mjv_defaultOption(&opt);
       cam.type = mjCAMERA_FREE;
-      cam.lookat[0] = 20;
-      cam.lookat[1] = 15;
-      cam.distance = 50;
-      cam.elevation = -40;
+      const CameraRig rig(s, log, static_cast<double>(width) / height);
       std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * height * 3);
       const auto t0 = std::chrono::steady_clock::now();
       for (int k = 0; k < frames; ++k) {
-        cam.azimuth = 225 + k;
+        // The same chase camera poses as the full pipeline below.
+        const CameraPose pose = rig.pose(CameraKind::Chase, k / 30.0 + 10.0);
+        for (int i = 0; i < 3; ++i) cam.lookat[i] = pose.lookat[i];
+        cam.azimuth = pose.azimuth;
+        cam.elevation = pose.elevation;
+        cam.distance = pose.distance;
         mjv_updateScene(m, d, &opt, nullptr, &cam, mjCAT_ALL, &scene);
         mjr_render(ctx.viewport(), &scene, ctx.context());
         mjr_readPixels(rgb.data(), nullptr, ctx.viewport(), ctx.context());

@@ -109,6 +109,9 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
     const double radius = request.plan_as_point_mass ? 0.0 : world.vehicles()[v].params.radius;
     if (request.plan_as_point_mass) scenario.planner_margin = 0.0;
     plans.push_back(planVehicle(scenario, scenario.vehicles[v], radius, scenario.planner_params));
+    for (const auto& name : plans.back().ignored_params)
+      progressLine(request.progress, "note: planner." + name + " does not apply to " +
+                                         scenario.planner_name + " (ignored)");
   }
 
   // 2. Reference and controller per vehicle.

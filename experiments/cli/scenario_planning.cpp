@@ -16,7 +16,7 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle,
     return plan;
   }
   const double time_limit = params.getDouble("time_limit", 30.0, 0.001, 86400.0);
-  auto planner = makePlanner(scenario.planner_name, params);
+  auto planner = makePlanner(scenario.planner_name, params, "key planner.name", &plan.ignored_params);
   plan.params = params.effective();
   plan.params["margin"] = std::to_string(scenario.planner_margin);
 

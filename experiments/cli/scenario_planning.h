@@ -3,6 +3,7 @@
 // segment: start -> waypoint 1 -> ... -> goal), or the given waypoints when there is none.
 #include <map>
 #include <string>
+#include <vector>
 
 #include "planning/path.h"
 #include "sim/scenario.h"
@@ -17,7 +18,8 @@ struct VehiclePlan {
   std::map<std::string, std::string> params;  // the planner's parameters in force
   std::string message;
   double inflation = 0.0;  // vehicle radius + margin the planner kept clear
-  std::map<std::string, double> trajectory_counters;  // from the minimum-snap fit, if any
+  std::map<std::string, double> trajectory_counters;
+  std::vector<std::string> ignored_params;  // taken by other planners, not by this one  // from the minimum-snap fit, if any
 };
 
 // planner_params is consumed (parameters are marked used); `vehicle_radius` comes from the model.

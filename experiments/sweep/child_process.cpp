@@ -1,6 +1,7 @@
 #include "experiments/sweep/child_process.h"
 
 #include <fcntl.h>
+#include <sys/prctl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -23,11 +24,16 @@ ChildProcess ChildProcess::start(const std::string& program, const std::vector<s
   argv.push_back(nullptr);
   const std::string log = log_file.string();
 
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0)
     throw std::runtime_error(std::string("cannot start a job: fork: ") + std::strerror(errno));
   if (pid == 0) {
     ::setpgid(0, 0);
+    // If the sweep runner itself is killed (SIGKILL, out of memory), its jobs die with it rather
+    // than write into folders a resumed sweep is reusing.
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(127);
     const int in = ::open("/dev/null", O_RDONLY);
     const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (in >= 0) ::dup2(in, STDIN_FILENO);

@@ -1,0 +1,48 @@
+#include "render/trail_decimation.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cosim {
+
+namespace {
+
+// Distance from p to the segment a-b.
+double segmentDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double s = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + s * ab)).norm();
+}
+
+}  // namespace
+
+std::vector<std::size_t> decimateTrail(const std::vector<LogSample>& samples, const std::vector<double>& values,
+                                       const TrailDecimation& o) {
+  std::vector<std::size_t> kept;
+  if (samples.empty()) return kept;
+  kept.push_back(0);
+  std::size_t from = 0;
+  while (from + 1 < samples.size()) {
+    // Extend the chord from `from` while every sample it skips stays within the tolerance.
+    std::size_t good = from + 1;
+    for (std::size_t i = from + 2; i < samples.size(); ++i) {
+      const Eigen::Vector3d& a = samples[from].pos;
+      const Eigen::Vector3d& b = samples[i].pos;
+      if ((b - a).norm() > o.max_segment || std::abs(values[i] - values[from]) > o.max_error_step) break;
+      bool within = true;
+      // Checking every skipped sample is quadratic in the segment's samples; a stride keeps it
+      // cheap (the samples are 2 ms apart, far denser than the tolerance matters).
+      const std::size_t stride = std::max<std::size_t>(1, (i - from) / 24);
+      for (std::size_t j = from + 1; j < i && within; j += stride)
+        within = segmentDistance(samples[j].pos, a, b) <= o.tolerance;
+      if (!within) break;
+      good = i;
+    }
+    kept.push_back(good);
+    from = good;
+  }
+  return kept;
+}
+
+}  // namespace cosim
