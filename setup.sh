@@ -16,6 +16,7 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libompl-dev libboost-graph-dev libnanoflann-dev   # peers for the benchmarks, k-d tree
   gnuplot-nox                         # figures
+  chromium                            # the HTML report test opens the report headless
 )
 
 missing=()

@@ -25,7 +25,9 @@ CameraKind cameraKind(const std::string& name) {
   throw std::invalid_argument("unknown camera '" + name + "' (" + cameraNames() + ")");
 }
 
-const char* cameraNames() { return "chase, orbit, top, overview or fixed"; }
+const char* cameraNames() {
+  return "chase, orbit, top, overview or fixed";
+}
 
 Eigen::Vector3d CameraPose::eye() const {
   const double a = azimuth * kDeg, e = elevation * kDeg;

@@ -64,7 +64,8 @@ CsvTable parseCsvTable(const std::string& text, const std::string& file) {
       field += c;
     }
   }
-  if (quoted) throw InputError(file, "line " + std::to_string(row_line), "unterminated quoted field");
+  if (quoted)
+    throw InputError(file, "line " + std::to_string(row_line), "unterminated quoted field");
   if (any) endRow();
   if (t.header.empty()) throw InputError(file, "", "empty CSV file (no header row)");
   return t;

@@ -62,21 +62,25 @@ std::string num(double v) {
 std::string errorPalette(double scale) {
   std::ostringstream s;
   s << "set palette defined (";
-  for (int i = 0; i <= 8; ++i) s << (i ? ", " : "") << i / 8.0 << " '" << hexColour(errorColour(i / 8.0)) << "'";
+  for (int i = 0; i <= 8; ++i)
+    s << (i ? ", " : "") << i / 8.0 << " '" << hexColour(errorColour(i / 8.0)) << "'";
   s << ")\nset cbrange [0:" << num(scale) << "]\nset cblabel 'tracking error [m]'\n";
   return s.str();
 }
 
 // One series file per vehicle: t x y z ref_x ref_y ref_z error (decimated evenly in time).
-void writeVehicleData(const VehicleLog& v, const std::vector<double>& err, const std::filesystem::path& file) {
+void writeVehicleData(const VehicleLog& v, const std::vector<double>& err,
+                      const std::filesystem::path& file) {
   std::ostringstream s;
   const std::size_t step = std::max<std::size_t>(1, v.samples.size() / kMaxPlotRows);
-  for (std::size_t i = 0; i < v.samples.size(); i = (i + 1 < v.samples.size() && i + step >= v.samples.size())
-                                                         ? v.samples.size() - 1  // always end with the last sample
-                                                         : i + step) {
+  for (std::size_t i = 0; i < v.samples.size();
+       i = (i + 1 < v.samples.size() && i + step >= v.samples.size())
+               ? v.samples.size() - 1  // always end with the last sample
+               : i + step) {
     const LogSample& x = v.samples[i];
     s << num(x.t) << ' ' << num(x.pos.x()) << ' ' << num(x.pos.y()) << ' ' << num(x.pos.z()) << ' '
-      << num(x.ref_pos.x()) << ' ' << num(x.ref_pos.y()) << ' ' << num(x.ref_pos.z()) << ' ' << num(err[i]) << '\n';
+      << num(x.ref_pos.x()) << ' ' << num(x.ref_pos.y()) << ' ' << num(x.ref_pos.z()) << ' '
+      << num(err[i]) << '\n';
   }
   writeText(file, s.str());
 }
@@ -92,15 +96,16 @@ void writePathData(const std::vector<Eigen::Vector3d>& path, const std::filesyst
 std::string obstacleObjects(const World& world, int horizontal, int vertical) {
   std::ostringstream s;
   int id = 1;
-  const std::string style = " fc rgb '" + std::string(kObstacleFill) + "' fillstyle transparent solid 0.55 border lc rgb '" +
-                            kObstacleEdge + "' lw 0.8 back\n";
+  const std::string style = " fc rgb '" + std::string(kObstacleFill) +
+                            "' fillstyle transparent solid 0.55 border lc rgb '" + kObstacleEdge +
+                            "' lw 0.8 back\n";
   for (const Obstacle& o : world.obstacles) {
     const double c = std::cos(o.yaw_deg * M_PI / 180.0), sn = std::sin(o.yaw_deg * M_PI / 180.0);
-    if (o.type == ObstacleType::Sphere ||
-        (o.type == ObstacleType::Cylinder && vertical != 2)) {
+    if (o.type == ObstacleType::Sphere || (o.type == ObstacleType::Cylinder && vertical != 2)) {
       // A circle from above (spheres, and cylinders standing on z).
-      s << "set object " << id++ << " ellipse at " << num(o.pos[horizontal]) << "," << num(o.pos[vertical])
-        << " size " << num(2 * o.radius) << "," << num(2 * o.radius) << " units xy" << style;
+      s << "set object " << id++ << " ellipse at " << num(o.pos[horizontal]) << ","
+        << num(o.pos[vertical]) << " size " << num(2 * o.radius) << "," << num(2 * o.radius)
+        << " units xy" << style;
     } else if (o.type == ObstacleType::Cylinder || vertical == 2) {
       // From the side: the horizontal extent of the (rotated) footprint, the full height.
       double half_h;
@@ -112,8 +117,8 @@ std::string obstacleObjects(const World& world, int horizontal, int vertical) {
       }
       const double half_v = 0.5 * (o.type == ObstacleType::Cylinder ? o.height : o.size.z());
       s << "set object " << id++ << " rectangle from " << num(o.pos[horizontal] - half_h) << ","
-        << num(o.pos[2] - half_v) << " to " << num(o.pos[horizontal] + half_h) << "," << num(o.pos[2] + half_v)
-        << style;
+        << num(o.pos[2] - half_v) << " to " << num(o.pos[horizontal] + half_h) << ","
+        << num(o.pos[2] + half_v) << style;
     } else {
       // A box from above: its rotated footprint.
       s << "set object " << id++ << " polygon";
@@ -139,7 +144,9 @@ std::string dataFile(char kind, std::size_t vehicle) {
   return name;
 }
 
-std::string axisName(int axis) { return axis == 0 ? "x" : axis == 1 ? "y" : "z"; }
+std::string axisName(int axis) {
+  return axis == 0 ? "x" : axis == 1 ? "y" : "z";
+}
 
 // The paths over the obstacles along two world axes (top: x,y; side: x or y, z).
 std::string pathPlot(const RunLog& log, int h, int v, bool against_trajectory) {
@@ -161,8 +168,9 @@ std::string pathPlot(const RunLog& log, int h, int v, bool against_trajectory) {
     if (!vl.samples.empty()) {
       if (against_trajectory) {
         sep();
-        p << "'v" << id << ".dat' using " << rh << ":" << rv << " with lines lw 1.2 dt (6,4) lc rgb '"
-          << hexColour(kReferenceColour) << "' title " << gnuplotString(a == 0 ? "reference trajectory" : "");
+        p << "'v" << id << ".dat' using " << rh << ":" << rv
+          << " with lines lw 1.2 dt (6,4) lc rgb '" << hexColour(kReferenceColour) << "' title "
+          << gnuplotString(a == 0 ? "reference trajectory" : "");
       }
       sep();
       p << "'v" << id << ".dat' using " << hc << ":" << vc << ":8 with lines lw 3 lc palette title "
@@ -170,15 +178,18 @@ std::string pathPlot(const RunLog& log, int h, int v, bool against_trajectory) {
     }
     if (vl.planned_path.size() > 1) {
       sep();
-      p << "'p" << id << ".dat' using " << h + 1 << ":" << v + 1 << " with linespoints lw 1.8 pt 7 ps 0.5 lc rgb '"
-        << planned << "' title " << gnuplotString(who + "planned path");
+      p << "'p" << id << ".dat' using " << h + 1 << ":" << v + 1
+        << " with linespoints lw 1.8 pt 7 ps 0.5 lc rgb '" << planned << "' title "
+        << gnuplotString(who + "planned path");
     }
     sep();
-    p << "'p" << id << ".dat' every ::0::0 using " << h + 1 << ":" << v + 1 << " with points pt 7 ps 1.6 lc rgb '"
-      << hexColour(several ? agentColour(a) : kStartColour) << "' title " << gnuplotString(a == 0 ? "start" : "");
+    p << "'p" << id << ".dat' every ::0::0 using " << h + 1 << ":" << v + 1
+      << " with points pt 7 ps 1.6 lc rgb '" << hexColour(several ? agentColour(a) : kStartColour)
+      << "' title " << gnuplotString(a == 0 ? "start" : "");
     sep();
-    p << "'g" << id << ".dat' using " << h + 1 << ":" << v + 1 << " with points pt 5 ps 1.6 lc rgb '"
-      << hexColour(several ? agentColour(a) : kGoalColour) << "' title " << gnuplotString(a == 0 ? "goal" : "");
+    p << "'g" << id << ".dat' using " << h + 1 << ":" << v + 1
+      << " with points pt 5 ps 1.6 lc rgb '" << hexColour(several ? agentColour(a) : kGoalColour)
+      << "' title " << gnuplotString(a == 0 ? "goal" : "");
   }
   return p.str();
 }
@@ -204,41 +215,50 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
     writePathData(planned, work.path() / dataFile('p', a));
     writePathData({v.goal}, work.path() / dataFile('g', a));
     const bool several = log.vehicles.size() > 1;
-    const std::string colour = hexColour(several ? agentColour(a) : Eigen::Vector3f(0.13f, 0.35f, 0.65f));
+    const std::string colour =
+        hexColour(several ? agentColour(a) : Eigen::Vector3f(0.13f, 0.35f, 0.65f));
     const FlightMetrics m = computeFlightMetrics(v, world, against);
-    error_plot << (a ? ", \\\n     " : "") << "'v" << a << ".dat' using 1:8 with lines lw 2 lc rgb '" << colour
-               << "' title " << gnuplotString((several ? v.name + ": " : std::string()) + "RMSE " + num(std::round(m.rmse_m * 1000) / 1000) + " m, max " + num(std::round(m.max_error_m * 1000) / 1000) + " m");
-    error_marks << "set arrow from graph 0, first " << num(m.rmse_m) << " to graph 1, first " << num(m.rmse_m)
-                << " nohead dt (4,4) lw 1 lc rgb '" << colour << "'\n";
+    error_plot << (a ? ", \\\n     " : "") << "'v" << a
+               << ".dat' using 1:8 with lines lw 2 lc rgb '" << colour << "' title "
+               << gnuplotString((several ? v.name + ": " : std::string()) + "RMSE " +
+                                num(std::round(m.rmse_m * 1000) / 1000) + " m, max " +
+                                num(std::round(m.max_error_m * 1000) / 1000) + " m");
+    error_marks << "set arrow from graph 0, first " << num(m.rmse_m) << " to graph 1, first "
+                << num(m.rmse_m) << " nohead dt (4,4) lw 1 lc rgb '" << colour << "'\n";
     if (v.reached_goal && v.arrival_time >= 0)
-      error_marks << "set arrow from first " << num(v.arrival_time) << ", graph 0 to first " << num(v.arrival_time)
-                  << ", graph 1 nohead dt (2,3) lw 1 lc rgb '#606060'\n"
-                  << "set label " << gnuplotString("goal reached ") << " at first " << num(v.arrival_time)
+      error_marks << "set arrow from first " << num(v.arrival_time) << ", graph 0 to first "
+                  << num(v.arrival_time) << ", graph 1 nohead dt (2,3) lw 1 lc rgb '#606060'\n"
+                  << "set label " << gnuplotString("goal reached ") << " at first "
+                  << num(v.arrival_time)
                   << ", graph 0.5 right rotate by 90 offset -0.8,0 tc rgb '#404040' font ',9'\n";
-    error_marks << "set label " << gnuplotString("RMSE") << " at graph 0.005, first " << num(m.rmse_m)
-                << " left offset 0,0.6 tc rgb '" << colour << "' font ',9'\n";
+    error_marks << "set label " << gnuplotString("RMSE") << " at graph 0.005, first "
+                << num(m.rmse_m) << " left offset 0,0.6 tc rgb '" << colour << "' font ',9'\n";
   }
   const double scale = errorScaleMax(max_error);
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
-  const std::string planner = scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
+  const std::string planner =
+      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
   const std::string reference = against ? "the reference trajectory" : "the planned path";
 
   std::ostringstream common;
   common << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid lc rgb '#dddddd' lw 1\n"
-         << "set tics out nomirror\nset key box lc rgb '#bbbbbb' opaque samplen 2.5 spacing 1.1 font ',10' Left reverse\n";
+         << "set tics out nomirror\nset key box lc rgb '#bbbbbb' opaque samplen 2.5 spacing 1.1 "
+            "font ',10' Left reverse\n";
 
   std::ostringstream error;
-  error << common.str() << "set title " << gnuplotString("Tracking error against " + reference + " (" + planner + ")")
-        << "\nset xlabel 'time [s]'\nset ylabel 'position error [m]'\nset yrange [0:*]\nset xrange [0:*]\n"
+  error << common.str() << "set title "
+        << gnuplotString("Tracking error against " + reference + " (" + planner + ")")
+        << "\nset xlabel 'time [s]'\nset ylabel 'position error [m]'\nset yrange [0:*]\nset xrange "
+           "[0:*]\n"
         << "set key top right\n"
         << error_marks.str() << error_plot.str() << "\n";
 
   std::ostringstream top;
-  top << common.str() << errorPalette(scale) << obstacleObjects(world, 0, 1)
-      << "set title " << gnuplotString("Top view: planned vs flown path (" + planner + ")") << "\n"
+  top << common.str() << errorPalette(scale) << obstacleObjects(world, 0, 1) << "set title "
+      << gnuplotString("Top view: planned vs flown path (" + planner + ")") << "\n"
       << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
-      << "set xrange [" << num(lo.x()) << ":" << num(hi.x()) << "]\nset yrange [" << num(lo.y()) << ":"
-      << num(hi.y()) << "]\nset key outside below horizontal center\n"
+      << "set xrange [" << num(lo.x()) << ":" << num(hi.x()) << "]\nset yrange [" << num(lo.y())
+      << ":" << num(hi.y()) << "]\nset key outside below horizontal center\n"
       << pathPlot(log, 0, 1, against) << "\n";
 
   // Side view along the axis the flight crosses most (the other horizontal axis is depth).
@@ -248,11 +268,12 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
     along = std::abs(d.y()) > std::abs(d.x()) ? 1 : 0;
   }
   std::ostringstream side;
-  side << common.str() << errorPalette(scale) << obstacleObjects(world, along, 2)
-       << "set title " << gnuplotString("Side view (looking along " + axisName(1 - along) + "; height exaggerated)") << "\n"
+  side << common.str() << errorPalette(scale) << obstacleObjects(world, along, 2) << "set title "
+       << gnuplotString("Side view (looking along " + axisName(1 - along) + "; height exaggerated)")
+       << "\n"
        << "set xlabel '" << axisName(along) << " [m]'\nset ylabel 'z [m]'\nset size ratio 0.42\n"
-       << "set xrange [" << num(lo[along]) << ":" << num(hi[along]) << "]\nset yrange [" << num(lo.z()) << ":"
-       << num(hi.z()) << "]\nset key outside below horizontal center\n"
+       << "set xrange [" << num(lo[along]) << ":" << num(hi[along]) << "]\nset yrange ["
+       << num(lo.z()) << ":" << num(hi.z()) << "]\nset key outside below horizontal center\n"
        << pathPlot(log, along, 2, against) << "\n";
 
   // The top view keeps equal axes: the canvas height follows the world's aspect ratio (the
@@ -260,7 +281,8 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
   const double aspect = (hi.y() - lo.y()) / std::max(1e-9, hi.x() - lo.x());
   const int top_height = 2 * static_cast<int>(std::clamp(95.0 + 380.0 * aspect, 250.0, 700.0));
   std::string script = plotBoth("error", 1000, 480, error.str()) + "reset\n" +
-                       plotBoth("top", 1000, top_height, top.str()) + "reset\n" + plotBoth("side", 1000, 560, side.str());
+                       plotBoth("top", 1000, top_height, top.str()) + "reset\n" +
+                       plotBoth("side", 1000, 560, side.str());
   runGnuplot(script, work.path());
   const std::vector<std::string> names = {"error", "top", "side"};
   for (const auto& n : names)
@@ -292,7 +314,8 @@ void writeComparisonChart(const std::filesystem::path& csv_path, const std::stri
     if (std::find(xs.begin(), xs.end(), x) == xs.end()) xs.push_back(x);
     cells[{g, x}].push_back(y);
   }
-  if (cells.empty()) throw InputError(file, "column " + y_column, "no row has a numeric value to chart");
+  if (cells.empty())
+    throw InputError(file, "column " + y_column, "no row has a numeric value to chart");
   if (numeric_x)
     std::stable_sort(xs.begin(), xs.end(), [](const std::string& a, const std::string& b) {
       return std::strtod(a.c_str(), nullptr) < std::strtod(b.c_str(), nullptr);
@@ -302,16 +325,20 @@ void writeComparisonChart(const std::filesystem::path& csv_path, const std::stri
     for (double x : v) mean += x;
     mean /= static_cast<double>(v.size());
     for (double x : v) var += (x - mean) * (x - mean);
-    return std::make_pair(mean, v.size() > 1 ? std::sqrt(var / static_cast<double>(v.size() - 1)) : 0.0);
+    return std::make_pair(mean,
+                          v.size() > 1 ? std::sqrt(var / static_cast<double>(v.size() - 1)) : 0.0);
   };
 
-  const std::filesystem::path out_dir = out_base.has_parent_path() ? out_base.parent_path() : std::filesystem::path(".");
+  const std::filesystem::path out_dir =
+      out_base.has_parent_path() ? out_base.parent_path() : std::filesystem::path(".");
   WorkDir work(out_dir);
   std::ostringstream data, body;
   body << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid ytics lc rgb '#dddddd'\n"
        << "set tics out nomirror\nset key outside right top box lc rgb '#bbbbbb' font ',10'\n"
-       << "set datafile missing '?'\nset title " << gnuplotString(y_column + " by " + x_column) << "\n"
-       << "set xlabel " << gnuplotString(x_column) << "\nset ylabel " << gnuplotString(y_column) << "\n";
+       << "set datafile missing '?'\nset title " << gnuplotString(y_column + " by " + x_column)
+       << "\n"
+       << "set xlabel " << gnuplotString(x_column) << "\nset ylabel " << gnuplotString(y_column)
+       << "\n";
   // Colours: the agents' palette, distinguishable for colour-blind readers.
   if (numeric_x) {
     for (std::size_t g = 0; g < groups.size(); ++g) {
@@ -326,8 +353,8 @@ void writeComparisonChart(const std::filesystem::path& csv_path, const std::stri
     body << "plot ";
     for (std::size_t g = 0; g < groups.size(); ++g)
       body << (g ? ", \\\n     " : "") << "'chart.dat' index " << g
-           << " using 1:2:3 with yerrorlines lw 2 pt 7 ps 0.8 lc rgb '" << hexColour(agentColour(g + 4)) << "' title "
-           << gnuplotString(groups[g]);
+           << " using 1:2:3 with yerrorlines lw 2 pt 7 ps 0.8 lc rgb '"
+           << hexColour(agentColour(g + 4)) << "' title " << gnuplotString(groups[g]);
     body << "\n";
   } else {
     for (const auto& x : xs) {
@@ -352,8 +379,8 @@ void writeComparisonChart(const std::filesystem::path& csv_path, const std::stri
     body << "plot ";
     for (std::size_t g = 0; g < groups.size(); ++g)
       body << (g ? ", \\\n     " : "") << "'chart.dat' using " << 2 + 2 * g << ":" << 3 + 2 * g
-           << (g == 0 ? ":xtic(1)" : "") << " lc rgb '" << hexColour(agentColour(g + 4)) << "' title "
-           << gnuplotString(groups[g]);
+           << (g == 0 ? ":xtic(1)" : "") << " lc rgb '" << hexColour(agentColour(g + 4))
+           << "' title " << gnuplotString(groups[g]);
     body << "\n";
   }
   writeText(work.path() / "chart.dat", data.str());

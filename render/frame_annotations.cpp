@@ -16,11 +16,14 @@ FrameAnnotations::FrameAnnotations(mjrContext* con, mjrRect viewport)
 
 int FrameAnnotations::textWidth(const std::string& s) const {
   int w = 0;
-  for (unsigned char c : s) w += c < 127 ? con_->charWidth[c] : con_->charWidth[static_cast<int>('?')];
+  for (unsigned char c : s)
+    w += c < 127 ? con_->charWidth[c] : con_->charWidth[static_cast<int>('?')];
   return w;
 }
 
-int FrameAnnotations::lineHeight() const { return con_->charHeight + pad_ / 2; }
+int FrameAnnotations::lineHeight() const {
+  return con_->charHeight + pad_ / 2;
+}
 
 void FrameAnnotations::box(int x, int y, int w, int h) {
   mjr_rectangle({x, y, w, h}, 1.0f, 1.0f, 1.0f, 0.78f);
@@ -64,7 +67,8 @@ void FrameAnnotations::legend(const std::vector<LegendEntry>& entries) {
     const int sy = y + con_->charHeight / 3, sh = std::max(3, con_->charHeight / 3);
     const int pieces = entries[i].gradient ? 8 : 1;
     for (int k = 0; k < pieces; ++k) {
-      const Eigen::Vector3f c = entries[i].gradient ? errorColour((k + 0.5) / pieces) : entries[i].colour;
+      const Eigen::Vector3f c =
+          entries[i].gradient ? errorColour((k + 0.5) / pieces) : entries[i].colour;
       const int x0 = x + pad_ + swatch * k / pieces, x1 = x + pad_ + swatch * (k + 1) / pieces;
       mjr_rectangle({x0, sy, x1 - x0, sh}, c.x(), c.y(), c.z(), 1.0f);
     }

@@ -37,13 +37,15 @@ void runGnuplot(const std::string& script, const std::filesystem::path& work_dir
     out << script;
     if (!out) throw std::runtime_error("cannot write " + script_file.string());
   }
-  const std::string cmd = "cd " + shellQuote(work_dir.string()) + " && gnuplot plot.gp > plot.log 2>&1";
+  const std::string cmd =
+      "cd " + shellQuote(work_dir.string()) + " && gnuplot plot.gp > plot.log 2>&1";
   const int status = std::system(cmd.c_str());
   if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::ifstream in(log_file);
     std::ostringstream msg;
     msg << in.rdbuf();
-    throw std::runtime_error("gnuplot failed (is gnuplot-nox installed?): " + msg.str().substr(0, 600));
+    throw std::runtime_error("gnuplot failed (is gnuplot-nox installed?): " +
+                             msg.str().substr(0, 600));
   }
 }
 

@@ -14,12 +14,23 @@ std::string htmlEscape(const std::string& s) {
   std::string r;
   for (char c : s) {
     switch (c) {
-      case '&': r += "&amp;"; break;
-      case '<': r += "&lt;"; break;
-      case '>': r += "&gt;"; break;
-      case '"': r += "&quot;"; break;
-      case '\'': r += "&#39;"; break;
-      default: r += c;
+      case '&':
+        r += "&amp;";
+        break;
+      case '<':
+        r += "&lt;";
+        break;
+      case '>':
+        r += "&gt;";
+        break;
+      case '"':
+        r += "&quot;";
+        break;
+      case '\'':
+        r += "&#39;";
+        break;
+      default:
+        r += c;
     }
   }
   return r;
@@ -28,7 +39,9 @@ std::string htmlEscape(const std::string& s) {
 namespace {
 
 // URL paths: the report's files are ours (no spaces or specials), but escape for attributes.
-std::string attr(const std::string& s) { return htmlEscape(s); }
+std::string attr(const std::string& s) {
+  return htmlEscape(s);
+}
 
 const char* kStyle = R"(
 body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 24px auto; max-width: 1320px; color: #1c1c22; }
@@ -76,29 +89,34 @@ const char* kLoadCheck = R"(
 
 void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& r) {
   std::ostringstream h;
-  h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << htmlEscape(r.title)
-    << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<h1>" << htmlEscape(r.title) << "</h1>\n";
+  h << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>"
+    << htmlEscape(r.title) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<h1>"
+    << htmlEscape(r.title) << "</h1>\n";
   if (!r.subtitle.empty()) h << "<p class=\"sub\">" << htmlEscape(r.subtitle) << "</p>\n";
   if (!r.videos.empty()) {
     h << "<h2>Video</h2>\n";
     for (const auto& v : r.videos)
-      h << "<figure><video src=\"" << attr(v) << "\" controls muted preload=\"auto\" width=\"960\"></video>"
-        << "<figcaption><a href=\"" << attr(v) << "\">" << htmlEscape(v) << "</a></figcaption></figure>\n";
+      h << "<figure><video src=\"" << attr(v)
+        << "\" controls muted preload=\"auto\" width=\"960\"></video>"
+        << "<figcaption><a href=\"" << attr(v) << "\">" << htmlEscape(v)
+        << "</a></figcaption></figure>\n";
   }
   if (!r.figures.empty() || !r.images.empty()) {
     h << "<h2>Figures</h2>\n";
     for (const auto& f : r.figures)
       h << "<figure><img src=\"" << attr(f) << ".png\" alt=\"" << attr(f) << "\" width=\"640\">"
-        << "<figcaption>" << htmlEscape(f) << " (<a href=\"" << attr(f) << ".png\">PNG</a>, <a href=\"" << attr(f)
-        << ".svg\">SVG</a>)</figcaption></figure>\n";
+        << "<figcaption>" << htmlEscape(f) << " (<a href=\"" << attr(f)
+        << ".png\">PNG</a>, <a href=\"" << attr(f) << ".svg\">SVG</a>)</figcaption></figure>\n";
     for (const auto& i : r.images)
-      h << "<figure><img src=\"" << attr(i) << "\" alt=\"" << attr(i) << "\" width=\"640\"><figcaption><a href=\""
-        << attr(i) << "\">" << htmlEscape(i) << "</a></figcaption></figure>\n";
+      h << "<figure><img src=\"" << attr(i) << "\" alt=\"" << attr(i)
+        << "\" width=\"640\"><figcaption><a href=\"" << attr(i) << "\">" << htmlEscape(i)
+        << "</a></figcaption></figure>\n";
   }
   if (!r.metrics_json.empty()) {
     h << "<h2>Metrics</h2>\n<table>\n<tr><th>metric</th><th>value</th></tr>\n";
     for (const auto& [k, v] : flattenJson(r.metrics_json))
-      h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"v\">" << htmlEscape(v) << "</td></tr>\n";
+      h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"v\">" << htmlEscape(v)
+        << "</td></tr>\n";
     h << "</table>\n";
   }
   h << "<script>" << kLoadCheck << "</script>\n</body>\n</html>\n";

@@ -11,11 +11,12 @@ namespace cosim {
 
 struct HtmlReport {
   std::string title;
-  std::string subtitle;               // one line under the title (e.g. the run's status)
-  std::vector<std::string> videos;    // paths relative to the report
-  std::vector<std::string> images;    // PNGs shown as they are (e.g. final.png)
-  std::vector<std::string> figures;   // base paths relative to the report: <base>.png is shown, <base>.svg linked
-  std::string metrics_json;           // shown flattened as a key/value table (may be empty)
+  std::string subtitle;             // one line under the title (e.g. the run's status)
+  std::vector<std::string> videos;  // paths relative to the report
+  std::vector<std::string> images;  // PNGs shown as they are (e.g. final.png)
+  std::vector<std::string>
+      figures;  // base paths relative to the report: <base>.png is shown, <base>.svg linked
+  std::string metrics_json;  // shown flattened as a key/value table (may be empty)
 };
 
 // Writes dir/index.html atomically. Throws std::runtime_error if metrics_json is malformed.

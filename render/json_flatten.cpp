@@ -43,11 +43,21 @@ class Flattener {
         if (i_ >= s_.size()) fail("bad escape");
         const char e = s_[i_++];
         switch (e) {
-          case 'n': c = '\n'; break;
-          case 't': c = '\t'; break;
-          case 'r': c = '\r'; break;
-          case 'b': c = '\b'; break;
-          case 'f': c = '\f'; break;
+          case 'n':
+            c = '\n';
+            break;
+          case 't':
+            c = '\t';
+            break;
+          case 'r':
+            c = '\r';
+            break;
+          case 'b':
+            c = '\b';
+            break;
+          case 'f':
+            c = '\f';
+            break;
           case 'u': {
             if (i_ + 4 > s_.size()) fail("bad \\u escape");
             const unsigned code = static_cast<unsigned>(std::stoul(s_.substr(i_, 4), nullptr, 16));
@@ -55,7 +65,8 @@ class Flattener {
             c = code < 0x80 ? static_cast<char>(code) : '?';  // metrics are ASCII
             break;
           }
-          default: c = e;
+          default:
+            c = e;
         }
       }
       r += c;

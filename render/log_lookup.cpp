@@ -16,8 +16,9 @@ std::vector<double> trackingErrors(const VehicleLog& v, bool against_trajectory)
   std::vector<double> e;
   e.reserve(v.samples.size());
   for (const LogSample& s : v.samples)
-    e.push_back(against_trajectory || v.planned_path.size() < 2 ? (s.pos - s.ref_pos).norm()
-                                                                 : distanceToPolyline(s.pos, v.planned_path));
+    e.push_back(against_trajectory || v.planned_path.size() < 2
+                    ? (s.pos - s.ref_pos).norm()
+                    : distanceToPolyline(s.pos, v.planned_path));
   return e;
 }
 

@@ -26,7 +26,8 @@ Eigen::Vector3f errorColour(double fraction) {
       Eigen::Vector3f{0.267f, 0.005f, 0.329f}, Eigen::Vector3f{0.230f, 0.322f, 0.546f},
       Eigen::Vector3f{0.128f, 0.567f, 0.551f}, Eigen::Vector3f{0.369f, 0.789f, 0.383f},
       Eigen::Vector3f{0.993f, 0.906f, 0.144f}};
-  const double f = std::clamp(std::isfinite(fraction) ? fraction : 1.0, 0.0, 1.0) * (stops.size() - 1);
+  const double f =
+      std::clamp(std::isfinite(fraction) ? fraction : 1.0, 0.0, 1.0) * (stops.size() - 1);
   const std::size_t i = std::min(static_cast<std::size_t>(f), stops.size() - 2);
   const float w = static_cast<float>(f - i);
   return (1.0f - w) * stops[i] + w * stops[i + 1];
@@ -34,7 +35,9 @@ Eigen::Vector3f errorColour(double fraction) {
 
 std::string hexColour(const Eigen::Vector3f& rgb) {
   char buf[8];
-  const auto byte = [](float c) { return static_cast<int>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255)); };
+  const auto byte = [](float c) {
+    return static_cast<int>(std::lround(std::clamp(c, 0.0f, 1.0f) * 255));
+  };
   std::snprintf(buf, sizeof buf, "#%02x%02x%02x", byte(rgb.x()), byte(rgb.y()), byte(rgb.z()));
   return buf;
 }

@@ -8,7 +8,9 @@
 namespace cosim {
 
 ProgressBar::ProgressBar(std::string label, int total, bool enabled)
-    : label_(std::move(label)), total_(std::max(1, total)), active_(enabled && isatty(STDERR_FILENO)) {}
+    : label_(std::move(label)),
+      total_(std::max(1, total)),
+      active_(enabled && isatty(STDERR_FILENO)) {}
 
 void ProgressBar::update(int done) {
   if (!active_) return;
@@ -17,8 +19,9 @@ void ProgressBar::update(int done) {
   drawn_percent_ = percent;
   constexpr int kWidth = 40;
   const int filled = kWidth * percent / 100;
-  std::fprintf(stderr, "\rcosim: %s [%s%s] %3d%% (%d/%d)", label_.c_str(), std::string(filled, '#').c_str(),
-               std::string(kWidth - filled, '.').c_str(), percent, std::min(done, total_), total_);
+  std::fprintf(stderr, "\rcosim: %s [%s%s] %3d%% (%d/%d)", label_.c_str(),
+               std::string(filled, '#').c_str(), std::string(kWidth - filled, '.').c_str(), percent,
+               std::min(done, total_), total_);
   if (done >= total_) std::fprintf(stderr, "\n");
   std::fflush(stderr);
 }

@@ -14,7 +14,8 @@ namespace cosim {
 int videoFrameCount(double duration, const RenderSettings& settings) {
   // The small tolerance keeps a flight of exactly k frame periods at k + 1 frames despite
   // rounding in the logged times.
-  return std::max(1, static_cast<int>(std::floor(duration / settings.speedup * settings.fps + 1e-6)) + 1);
+  return std::max(
+      1, static_cast<int>(std::floor(duration / settings.speedup * settings.fps + 1e-6)) + 1);
 }
 
 int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
@@ -80,9 +81,10 @@ void writeRunReport(const std::filesystem::path& dir, const Scenario& scenario,
                     const std::string& metrics_json, const std::string& failure,
                     const RenderedRun& rendered) {
   HtmlReport r;
-  const std::string planner = scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
-  r.title = "cosim run: " + std::filesystem::path(scenario.file).stem().string() + " (" + planner + ", " +
-            scenario.controller_name + " controller)";
+  const std::string planner =
+      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
+  r.title = "cosim run: " + std::filesystem::path(scenario.file).stem().string() + " (" + planner +
+            ", " + scenario.controller_name + " controller)";
   r.subtitle = failure.empty() ? "Every vehicle reached its goal without a collision."
                                : "The run failed its task: " + failure;
   r.videos = rendered.videos;

@@ -29,9 +29,9 @@ std::vector<std::string> videoCameras(const RenderSettings& settings);
 std::string videoFileName(const RenderSettings& settings, const std::string& camera);
 
 struct RunRenderRequest {
-  bool images = true;    // final.png and the figures
-  bool video = true;     // the videos
-  bool progress = false; // progress lines and bars on stderr
+  bool images = true;     // final.png and the figures
+  bool video = true;      // the videos
+  bool progress = false;  // progress lines and bars on stderr
 };
 
 // Files written, relative to the run folder.

@@ -33,8 +33,10 @@ RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, cons
   ctx_ = std::make_unique<OffscreenContext>(m, width, height);
   data_ = mj_makeData(m);
   mjv_defaultScene(&scene_);
-  mjv_makeScene(m, &scene_, m->ngeom + 64 + static_cast<int>(log.vehicles.size()) *
-                                               (kTrailSegmentBudget + kReferenceDashBudget + 64));
+  mjv_makeScene(m, &scene_,
+                m->ngeom + 64 +
+                    static_cast<int>(log.vehicles.size()) *
+                        (kTrailSegmentBudget + kReferenceDashBudget + 64));
   mjv_defaultCamera(&camera_);
   mjv_defaultOption(&option_);
   double max_error = 0.0;
@@ -121,9 +123,11 @@ void RunRenderer::fadeObstacles(const CameraPose& pose, CameraKind camera, doubl
   for (int i = 0; i < scene_.ngeom; ++i) {
     mjvGeom& g = scene_.geoms[i];
     // Static world geometry (body 0) except the floor: the scenario's obstacles and includes.
-    if (g.objtype != mjOBJ_GEOM || g.objid < 0 || g.objid == world_.floorGeom() || m->geom_bodyid[g.objid] != 0)
+    if (g.objtype != mjOBJ_GEOM || g.objid < 0 || g.objid == world_.floorGeom() ||
+        m->geom_bodyid[g.objid] != 0)
       continue;
-    const bool occluding = std::find(occluders.begin(), occluders.end(), g.objid) != occluders.end();
+    const bool occluding =
+        std::find(occluders.begin(), occluders.end(), g.objid) != occluders.end();
     g.rgba[3] = std::min(alpha, occluding ? 0.3f : 1.0f);
   }
 }
@@ -186,8 +190,8 @@ void RunRenderer::addTrail(std::size_t vehicle, double t) {
   std::size_t from = 0;
   for (std::size_t k = 1; k < kept.size() && from < last; ++k) {
     const std::size_t i = std::min(kept[k], last);  // the trail ends at the vehicle
-    addSegment(v.samples[from].pos, v.samples[i].pos, errorColour(0.5 * (err[from] + err[i]) / error_scale_),
-               line_radius_);
+    addSegment(v.samples[from].pos, v.samples[i].pos,
+               errorColour(0.5 * (err[from] + err[i]) / error_scale_), line_radius_);
     from = i;
   }
 }
@@ -207,8 +211,8 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
     addSphere(start, 3.0 * line_radius_, several ? planned : kStartColour, 0.95f);
     addSphere(v.goal, 3.5 * line_radius_, several ? planned : kGoalColour, 0.95f);
     const Eigen::Vector3d floor(v.goal.x(), v.goal.y(), scenario_.world.bounds_min.z());
-    addSegment(floor, v.goal - Eigen::Vector3d(0, 0, 3.0 * line_radius_), several ? planned : kGoalColour,
-               0.5 * line_radius_);
+    addSegment(floor, v.goal - Eigen::Vector3d(0, 0, 3.0 * line_radius_),
+               several ? planned : kGoalColour, 0.5 * line_radius_);
     if (v.samples.empty()) continue;
     // The reference trajectory (only when it is a trajectory; a waypoint reference is the
     // planned path itself): dashes along the whole flight.
@@ -221,7 +225,9 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
       bool draw = true;
       for (std::size_t i = 1; i < v.samples.size(); ++i) {
         if ((v.samples[i].ref_pos - v.samples[from].ref_pos).norm() < dash) continue;
-        if (draw) addSegment(v.samples[from].ref_pos, v.samples[i].ref_pos, kReferenceColour, 0.35 * line_radius_);
+        if (draw)
+          addSegment(v.samples[from].ref_pos, v.samples[i].ref_pos, kReferenceColour,
+                     0.35 * line_radius_);
         draw = !draw;
         from = i;
       }
@@ -230,8 +236,8 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
     // Where the vehicle is, for views where it is a few pixels small (and to tell agents apart).
     if (camera != CameraKind::Chase || several) {
       const LogSample& s = v.samples[sampleIndexAt(v, t)];
-      addSphere(s.pos, std::max(1.6 * v.radius, 5.0 * line_radius_), several ? planned : Eigen::Vector3f(1, 1, 1),
-                0.35f);
+      addSphere(s.pos, std::max(1.6 * v.radius, 5.0 * line_radius_),
+                several ? planned : Eigen::Vector3f(1, 1, 1), 0.35f);
     }
   }
 }
@@ -254,7 +260,8 @@ void RunRenderer::annotate(double t) {
     lines.emplace_back(who + error_name, buf);
     if (lines.size() > 9) break;  // many agents: the first few; the figures have all
   }
-  lines.emplace_back("planner", scenario_.planner_name.empty() ? "given waypoints" : scenario_.planner_name);
+  lines.emplace_back("planner",
+                     scenario_.planner_name.empty() ? "given waypoints" : scenario_.planner_name);
   ann.stateBox(lines);
 
   std::vector<LegendEntry> legend;
@@ -274,7 +281,8 @@ void RunRenderer::annotate(double t) {
   ann.errorScale(error_scale_, "tracking error [m]");
 }
 
-void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>& rgb, bool annotate_frame) {
+void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>& rgb,
+                         bool annotate_frame) {
   const mjModel* m = world_.model();
   poseVehicles(t);
   const CameraPose pose = rig_.pose(camera, t);
@@ -283,7 +291,8 @@ void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>&
   if (std::abs(pose.fovy_deg - m->vis.global.fovy) > 1e-9) {
     // A narrower lens than the model's: shrink the frustum at the near plane (the eye and its
     // direction are already set from the pose).
-    const double k = std::tan(0.5 * pose.fovy_deg * M_PI / 180.0) / std::tan(0.5 * m->vis.global.fovy * M_PI / 180.0);
+    const double k = std::tan(0.5 * pose.fovy_deg * M_PI / 180.0) /
+                     std::tan(0.5 * m->vis.global.fovy * M_PI / 180.0);
     for (auto& c : scene_.camera) {
       // The eye is far away: move the near plane out too (same view, finer depth resolution).
       const float q = std::max(1.0f, static_cast<float>(0.3 * pose.distance) / c.frustum_near);

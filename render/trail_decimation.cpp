@@ -8,7 +8,8 @@ namespace cosim {
 namespace {
 
 // Distance from p to the segment a-b.
-double segmentDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+double segmentDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                       const Eigen::Vector3d& b) {
   const Eigen::Vector3d ab = b - a;
   const double len2 = ab.squaredNorm();
   const double s = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
@@ -17,7 +18,8 @@ double segmentDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a, const
 
 }  // namespace
 
-std::vector<std::size_t> decimateTrail(const std::vector<LogSample>& samples, const std::vector<double>& values,
+std::vector<std::size_t> decimateTrail(const std::vector<LogSample>& samples,
+                                       const std::vector<double>& values,
                                        const TrailDecimation& o) {
   std::vector<std::size_t> kept;
   if (samples.empty()) return kept;
@@ -29,7 +31,8 @@ std::vector<std::size_t> decimateTrail(const std::vector<LogSample>& samples, co
     for (std::size_t i = from + 2; i < samples.size(); ++i) {
       const Eigen::Vector3d& a = samples[from].pos;
       const Eigen::Vector3d& b = samples[i].pos;
-      if ((b - a).norm() > o.max_segment || std::abs(values[i] - values[from]) > o.max_error_step) break;
+      if ((b - a).norm() > o.max_segment || std::abs(values[i] - values[from]) > o.max_error_step)
+        break;
       bool within = true;
       // Checking every skipped sample is quadratic in the segment's samples; a stride keeps it
       // cheap (the samples are 2 ms apart, far denser than the tolerance matters).

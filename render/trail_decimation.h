@@ -12,14 +12,15 @@
 namespace cosim {
 
 struct TrailDecimation {
-  double tolerance = 0.01;   // m, largest distance of a skipped sample from its chord
-  double max_segment = 1.0;  // m, longest segment (keeps colour gradients smooth)
+  double tolerance = 0.01;       // m, largest distance of a skipped sample from its chord
+  double max_segment = 1.0;      // m, longest segment (keeps colour gradients smooth)
   double max_error_step = 0.05;  // largest change of the colour value between vertices
 };
 
 // Indices of the kept samples, ascending, starting with 0 and ending with the last sample.
 // `values` (one per sample) is what colours the trail.
-std::vector<std::size_t> decimateTrail(const std::vector<LogSample>& samples, const std::vector<double>& values,
+std::vector<std::size_t> decimateTrail(const std::vector<LogSample>& samples,
+                                       const std::vector<double>& values,
                                        const TrailDecimation& options);
 
 }  // namespace cosim

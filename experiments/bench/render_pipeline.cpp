@@ -60,7 +60,8 @@ RunLog benchLog(const Scenario& s) {
   v.name = "uav1";
   v.radius = 0.35;
   v.goal = s.vehicles[0].goal();
-  v.planned_path = {{2, 2, 2}, {7.6, 6.2, 7.2}, {12.7, 8.7, 7.2}, {20.2, 12.7, 6.2}, {31.6, 21.2, 4.3}, {36, 26, 3}};
+  v.planned_path = {{2, 2, 2},         {7.6, 6.2, 7.2},   {12.7, 8.7, 7.2},
+                    {20.2, 12.7, 6.2}, {31.6, 21.2, 4.3}, {36, 26, 3}};
   const int n = 15000;
   for (int k = 0; k <= n; ++k) {
     const double f = static_cast<double>(k) / n;
@@ -69,7 +70,8 @@ RunLog benchLog(const Scenario& s) {
     LogSample sample;
     sample.t = 30.0 * f;
     sample.ref_pos = v.planned_path[i] + (x - i) * (v.planned_path[i + 1] - v.planned_path[i]);
-    sample.pos = sample.ref_pos + Eigen::Vector3d(0.05 * std::sin(7 * f), 0.04 * std::cos(5 * f), 0.02);
+    sample.pos =
+        sample.ref_pos + Eigen::Vector3d(0.05 * std::sin(7 * f), 0.04 * std::cos(5 * f), 0.02);
     sample.vel = Eigen::Vector3d(1.2, 0.8, 0.0);
     v.samples.push_back(sample);
   }
@@ -93,8 +95,8 @@ Section benchRenderPipeline(bool quick) {
   const RunLog log = benchLog(s);
   const WorldModel world = WorldModel::build(s);
   const mjModel* m = world.model();
-  const std::filesystem::path video =
-      std::filesystem::temp_directory_path() / ("cosim_bench_render_" + std::to_string(getpid()) + ".mp4");
+  const std::filesystem::path video = std::filesystem::temp_directory_path() /
+                                      ("cosim_bench_render_" + std::to_string(getpid()) + ".mp4");
 
   double best_bare = 1e300, best_full = 1e300;
   for (int round = 0; round < rounds; ++round) {
@@ -152,7 +154,8 @@ Section benchRenderPipeline(bool quick) {
                  {"full_pipeline_fps", full_fps, "1/s"},
                  {"ratio_full_to_bare", full_fps / bare_fps, "x"}};
   out.note = std::to_string(width) + "x" + std::to_string(height) + ", " + std::to_string(frames) +
-             " frames, best of " + std::to_string(rounds) + " rounds, wall clock; target ratio >= 0.70: " +
+             " frames, best of " + std::to_string(rounds) +
+             " rounds, wall clock; target ratio >= 0.70: " +
              (full_fps / bare_fps >= 0.7 ? "met" : "NOT met");
   return out;
 }

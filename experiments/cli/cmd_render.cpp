@@ -26,7 +26,8 @@ std::string recordedScenarioFile(const std::filesystem::path& dir) {
   const std::string json = readText(dir / "run.json");
   const std::string key = "\"scenario_file\": \"";
   const auto at = json.find(key);
-  if (at == std::string::npos) throw InputError((dir / "run.json").string(), "scenario_file", "missing");
+  if (at == std::string::npos)
+    throw InputError((dir / "run.json").string(), "scenario_file", "missing");
   const auto end = json.find('"', at + key.size());
   return json.substr(at + key.size(), end - at - key.size());
 }
@@ -51,14 +52,21 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
                   "chase, orbit, top, overview or fixed (fixed needs render.fixed_camera in the "
                   "scenario; default: the scenario's render.camera)");
   cmd->add_option("--out", a->out,
-                  "output file (default: RUN_DIR/video_<camera>.mp4, or RUN_DIR/frames_<camera>/ with --frames)");
-  cmd->add_flag("--frames", a->frames, "write PNG frames (00001.png, ...) into a folder instead of a video");
-  cmd->add_option("--at", a->at, "with --out FILE.png: the frame at this simulated time (s)")->check(CLI::Range(0.0, 1e9));
-  cmd->add_option("--speedup", a->speedup, "simulated seconds per video second (default: the scenario's)")
+                  "output file (default: RUN_DIR/video_<camera>.mp4, or RUN_DIR/frames_<camera>/ "
+                  "with --frames)");
+  cmd->add_flag("--frames", a->frames,
+                "write PNG frames (00001.png, ...) into a folder instead of a video");
+  cmd->add_option("--at", a->at, "with --out FILE.png: the frame at this simulated time (s)")
+      ->check(CLI::Range(0.0, 1e9));
+  cmd->add_option("--speedup", a->speedup,
+                  "simulated seconds per video second (default: the scenario's)")
       ->check(CLI::Range(0.01, 1000.0));
-  cmd->add_option("--fps", a->fps, "frames per second (default: the scenario's)")->check(CLI::Range(1, 240));
-  cmd->add_option("--width", a->width, "frame width in pixels, even (default: the scenario's)")->check(CLI::Range(64, 3840));
-  cmd->add_option("--height", a->height, "frame height in pixels, even (default: the scenario's)")->check(CLI::Range(64, 2160));
+  cmd->add_option("--fps", a->fps, "frames per second (default: the scenario's)")
+      ->check(CLI::Range(1, 240));
+  cmd->add_option("--width", a->width, "frame width in pixels, even (default: the scenario's)")
+      ->check(CLI::Range(64, 3840));
+  cmd->add_option("--height", a->height, "frame height in pixels, even (default: the scenario's)")
+      ->check(CLI::Range(64, 2160));
   cmd->add_flag("--quiet", a->quiet, "no progress bar");
   cmd->callback([a, &ctx] {
     const std::filesystem::path dir = a->dir;
@@ -72,7 +80,8 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
       }
       if (a->camera == "fixed" && !s.render.has_fixed_camera)
         throw InputError("command line", "--camera",
-                         "'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]} in the scenario");
+                         "'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]} "
+                         "in the scenario");
       s.render.camera = a->camera;
     }
     if (a->width) s.render.width = a->width;
@@ -100,8 +109,9 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
       renderer.render(a->at >= 0 ? a->at : renderer.endTime(), camera, rgb);
       writePng(out, rgb, renderer.width(), renderer.height());
     } else {
-      const int frames = renderRunVideo(renderer, s.render, camera, out,
-                                        a->frames ? VideoFormat::PngSequence : VideoFormat::Mp4, !a->quiet);
+      const int frames =
+          renderRunVideo(renderer, s.render, camera, out,
+                         a->frames ? VideoFormat::PngSequence : VideoFormat::Mp4, !a->quiet);
       std::cout << "frames: " << frames << " at " << s.render.fps << " fps (" << s.render.speedup
                 << "x simulated time)\n";
     }

@@ -114,6 +114,10 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
               << (merged.unfinished ? " (" + std::to_string(merged.unfinished) + " unfinished)"
                                     : "")
               << "\n";
+    if (merged.program_builds > 1)
+      std::cerr << "sweep: warning: the results come from " << merged.program_builds
+                << " different builds of cosim (the sweep was resumed after a rebuild); delete "
+                << (out / "jobs").string() << " to rerun every job with this one\n";
     if (!merged.figure_problem.empty())
       std::cerr << "sweep: no figure.png: " << merged.figure_problem << "\n";
     if (a->merge_only && merged.unfinished > 0) status = 1;

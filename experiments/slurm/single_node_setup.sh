@@ -19,7 +19,10 @@ if ! command -v slurmctld >/dev/null || ! command -v slurmd >/dev/null || ! comm
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends slurmctld slurmd slurm-client munge >/dev/null
 fi
-if pgrep -x slurmctld >/dev/null || pgrep -x slurmd >/dev/null; then
+# Live daemons only: killed ones linger as zombies until init reaps them (SLURM.md, problem 10).
+running() { for pid in $(pgrep -x "$1"); do
+  [ "$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null)" = Z ] || return 0; done; return 1; }
+if running slurmctld || running slurmd; then
   echo "single_node_setup: a slurmctld or slurmd is already running; not starting another" >&2
   exit 1
 fi
@@ -74,9 +77,11 @@ CONF
 install -d -o slurm -g slurm -m 0755 /var/spool/slurmctld /var/log/slurm
 install -d -o root -g root -m 0755 /var/spool/slurmd
 rm -rf /var/spool/slurmctld/*                 # no jobs carried over from an earlier start
-slurmctld
-echo "SLURMCTLD_PID=$(cat /run/slurmctld.pid)" >> "$PIDS_FILE"
-slurmd
-echo "SLURMD_PID=$(cat /run/slurmd.pid)" >> "$PIDS_FILE"
+# In the foreground (-D), in the background of this script: $! is the daemon's PID (a daemonizing
+# start returns before its PID file exists).
+slurmctld -D > /var/log/slurm/slurmctld.stdout 2>&1 &
+echo "SLURMCTLD_PID=$!" >> "$PIDS_FILE"
+slurmd -D > /var/log/slurm/slurmd.stdout 2>&1 &
+echo "SLURMD_PID=$!" >> "$PIDS_FILE"
 TMO=30 wait_for sh -c '[ "$(sinfo -h -o %T)" = idle ]'
 echo "single_node_setup: node idle ($(tr '\n' ' ' < "$PIDS_FILE"))"

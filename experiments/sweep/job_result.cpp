@@ -1,5 +1,6 @@
 #include "experiments/sweep/job_result.h"
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <yaml-cpp/yaml.h>
 
@@ -39,6 +40,13 @@ JobStatus classifyJobExit(int wait_status, bool timed_out) {
   }
 }
 
+std::string programBuildIdentity(const std::string& program) {
+  struct stat st {};
+  if (::stat(program.c_str(), &st) != 0) return "unknown";
+  return std::to_string(static_cast<long long>(st.st_size)) + "@" +
+         std::to_string(static_cast<long long>(st.st_mtime));
+}
+
 void writeJobResult(const std::filesystem::path& job_dir, const JobResult& r) {
   JsonObject j;
   j.add("job", r.job)
@@ -47,7 +55,8 @@ void writeJobResult(const std::filesystem::path& job_dir, const JobResult& r) {
       .add("status", r.status)
       .add("exit_code", r.exit_code)
       .add("signal", r.signal)
-      .add("wall_time_s", r.wall_time_s);
+      .add("wall_time_s", r.wall_time_s)
+      .add("program_build", r.program_build);
   writeFileAtomically(job_dir / "result.json", j.str() + "\n");
 }
 
@@ -65,6 +74,7 @@ std::optional<JobResult> readJobResult(const std::filesystem::path& job_dir) {
     r.exit_code = n["exit_code"].as<int>();
     r.signal = n["signal"].as<int>();
     r.wall_time_s = n["wall_time_s"].as<double>();
+    if (n["program_build"]) r.program_build = n["program_build"].as<std::string>();
     return r;
   } catch (const YAML::Exception&) {
     return std::nullopt;

@@ -23,7 +23,13 @@ struct JobResult {
   int exit_code = -1;  // -1 when ended by a signal
   int signal = 0;
   double wall_time_s = 0.0;
+  // Which build of the job program ran it (size and modification time of the executable): a
+  // sweep resumed after a rebuild mixes builds, which the merge reports.
+  std::string program_build;
 };
+
+// The build identity of an executable file (following symlinks such as /proc/self/exe).
+std::string programBuildIdentity(const std::string& program);
 
 void writeJobResult(const std::filesystem::path& job_dir, const JobResult& r);
 // nullopt if missing or unreadable (then the job is not finished).

@@ -129,23 +129,13 @@ void validateSweepJobs(const SweepSpec& spec, const std::vector<SweepJob>& jobs)
       std::string place = "job " + std::to_string(job.id);
       for (const auto& [k, value] : spec.fixed)
         if (placeNamesKey(e.place(), k)) place = "key set." + k;
-      bool located = false;
       for (const auto& v : spec.vary)
-        if (placeNamesKey(e.place(), v.key)) place = v.place, located = true;
-      // A scenario's planner parameter unknown to a varied planner: the planner name is the cause.
-      std::string hint;
-      for (const auto& v : spec.vary)
-        if (!located && v.key == "planner.name" && placeNamesKey(e.place(), "planner")) {
-          place = v.place;
-          hint =
-              "; to compare planners with different parameters, vary whole planner sections: "
-              "planner: [{name: astar, resolution: 0.5}, {name: rrt_star, step: 2}]";
-        }
+        if (placeNamesKey(e.place(), v.key)) place = v.place;
       std::string with;
       for (std::size_t k = 0; k < spec.vary.size(); ++k)
         with += (k ? ", " : " with ") + spec.vary[k].key + "=" + job.values[k];
       throw InputError(spec.file.string(), place,
-                       "scenario " + job.scenario + with + ": " + e.what() + hint);
+                       "scenario " + job.scenario + with + ": " + e.what());
     }
   }
 }

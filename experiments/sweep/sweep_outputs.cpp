@@ -17,9 +17,10 @@ SweepOutputs writeSweepOutputs(const SweepSpec& spec, const std::vector<SweepJob
   SweepOutputs o;
   o.rows = table.rows.size();
   o.unfinished = table.unfinished;
-  // The figure: the metric per scenario, one bar per value of the first varied key that is not a
-  // seed (seeds are what the bars average over).
-  std::string series;
+  o.program_builds = table.program_builds;
+  // The figure: the metric per scenario, one bar per value of output.figure_by, else of the first
+  // varied key that is not a seed (seeds are what the bars average over).
+  std::string series = spec.figure_by;
   for (const auto& v : spec.vary)
     if (series.empty() && !isSeedKey(v.key)) series = v.key;
   try {

@@ -1,8 +1,8 @@
 #pragma once
 // The merge step: results.csv (one row per finished job, by job id), summary.csv (statistics per
 // group) and figure.png/.svg (render/figures.h: the `output.figure` metric per scenario, one bar
-// per value of the first non-seed varied key, mean with one standard deviation), each written
-// atomically into the sweep's folder.
+// per value of output.figure_by or the first non-seed varied key, mean with one standard
+// deviation), each written atomically into the sweep's folder.
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -14,7 +14,8 @@ namespace cosim {
 struct SweepOutputs {
   std::size_t rows = 0;
   std::size_t unfinished = 0;
-  std::string figure_problem;  // why figure.png was not drawn ("" if it was)
+  std::size_t program_builds = 0;  // > 1: the rows come from different builds of cosim
+  std::string figure_problem;      // why figure.png was not drawn ("" if it was)
 };
 
 SweepOutputs writeSweepOutputs(const SweepSpec& spec, const std::vector<SweepJob>& jobs,

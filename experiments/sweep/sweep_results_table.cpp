@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <map>
+#include <set>
 
 #include "experiments/cli/output_files.h"
 #include "experiments/sweep/job_result.h"
@@ -63,6 +64,7 @@ SweepTable mergeSweepResults(const SweepSpec& spec, const std::vector<SweepJob>&
   std::vector<Row> rows;
   std::vector<std::string> metric_names;
   std::map<std::string, std::size_t> metric_index;
+  std::set<std::string> builds;
   for (const auto& job : jobs) {
     const auto dir = sweepJobDir(out_dir, job, jobs.size());
     const auto result = readJobResult(dir);
@@ -70,6 +72,7 @@ SweepTable mergeSweepResults(const SweepSpec& spec, const std::vector<SweepJob>&
       ++t.unfinished;
       continue;
     }
+    builds.insert(result->program_build);
     Row row;
     row.fixed = {std::to_string(job.id), job.scenario};
     row.fixed.insert(row.fixed.end(), job.values.begin(), job.values.end());
@@ -82,6 +85,7 @@ SweepTable mergeSweepResults(const SweepSpec& spec, const std::vector<SweepJob>&
     row.wall = JsonObject::number(result->wall_time_s);
     rows.push_back(std::move(row));
   }
+  t.program_builds = builds.size();
   for (const auto& m : metric_names) t.header.push_back(m);
   t.header.push_back("job_wall_time_s");
   for (auto& r : rows) {

@@ -18,6 +18,7 @@ struct SweepTable {
   std::vector<std::vector<std::string>> rows;  // same length as header; "" = no value
   std::size_t first_metric_column = 0;         // metrics run from here up to the last column
   std::size_t unfinished = 0;                  // jobs without a (matching) result.json
+  std::size_t program_builds = 0;              // distinct builds of cosim that ran the rows
 };
 
 SweepTable mergeSweepResults(const SweepSpec& spec, const std::vector<SweepJob>& jobs,

@@ -104,6 +104,7 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
               << " already finished, " << pending.size() << " to run, " << parallel
               << " at a time\n";
 
+  const std::string build = programBuildIdentity(o.program);
   std::vector<RunningJob> running;
   std::size_t next = 0;
   bool stopping = false;
@@ -145,6 +146,7 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
               wait_status != -1 && WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
           res.signal = wait_status != -1 && WIFSIGNALED(wait_status) ? WTERMSIG(wait_status) : 0;
           res.wall_time_s = secondsSince(r.started);
+          res.program_build = build;
           writeJobResult(r.dir, res);
           ++report.ran;
           ++report.statuses[res.status];

@@ -200,9 +200,17 @@ SweepSpec parseSweepSpec(const std::string& text, const std::filesystem::path& f
   }
   if (root["output"]) {
     const YAML::Node o = root["output"];
-    r.checkKeys(o, "output", {"video", "figure"});
+    r.checkKeys(o, "output", {"video", "figure", "figure_by"});
     if (o["video"]) s.video = r.boolean(o["video"], "output.video");
     if (o["figure"]) s.figure_metric = r.text(o["figure"], "output.figure");
+    if (o["figure_by"]) {
+      s.figure_by = r.text(o["figure_by"], "output.figure_by");
+      bool varied = false;
+      for (const auto& v : s.vary) varied = varied || v.key == s.figure_by;
+      if (!varied)
+        r.fail(o["figure_by"], "output.figure_by",
+               "'" + s.figure_by + "' is not a key under vary:");
+    }
   }
   if (root["limits"]) {
     const YAML::Node l = root["limits"];

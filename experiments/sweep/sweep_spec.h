@@ -39,6 +39,8 @@ struct SweepSpec {
   std::vector<std::pair<std::string, std::string>> fixed;  // `set:` overrides for every job
   bool video = false;
   std::string figure_metric = "planned_length_m";
+  std::string figure_by;  // the varied key whose values are the figure's bars ("": the
+                          // first varied key that is not a seed)
   double job_timeout_s = 600.0;
   double kill_grace_s = 5.0;  // SIGTERM -> SIGKILL delay for a job past its time limit
 };

@@ -21,16 +21,24 @@ namespace fs = std::filesystem;
 const std::string kWorld =
     "world: {bounds: {min: [0, 0, 0], max: [20, 20, 6]},\n"
     "        obstacles: [{type: box, pos: [10, 10, 3], size: [2, 8, 6]}]}\n";
-const std::string kVehicle = "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [18, 18, 1]}]\n";
+const std::string kVehicle =
+    "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [18, 18, 1]}]\n";
 const std::string kPlanner = "planner: {name: astar, resolution: 0.5}\n";
 const std::string kValid = kWorld + kVehicle + kPlanner;
 
-std::string withWorld(const std::string& world) { return world + kVehicle + kPlanner; }
-std::string withVehicles(const std::string& vehicles) { return kWorld + vehicles + kPlanner; }
-std::string withPlanner(const std::string& planner) { return kWorld + kVehicle + planner; }
+std::string withWorld(const std::string& world) {
+  return world + kVehicle + kPlanner;
+}
+std::string withVehicles(const std::string& vehicles) {
+  return kWorld + vehicles + kPlanner;
+}
+std::string withPlanner(const std::string& planner) {
+  return kWorld + kVehicle + planner;
+}
 
 std::string mapText(int w, int h, const std::string& rows) {
-  return "type octile\nheight " + std::to_string(h) + "\nwidth " + std::to_string(w) + "\nmap\n" + rows;
+  return "type octile\nheight " + std::to_string(h) + "\nwidth " + std::to_string(w) + "\nmap\n" +
+         rows;
 }
 
 struct BadInput {
@@ -42,6 +50,10 @@ struct BadInput {
   int exit_code;
   std::string message;  // the stderr line must contain this
 };
+
+void PrintTo(const BadInput& c, std::ostream* os) {
+  *os << c.name;
+}
 
 std::vector<BadInput> badInputs() {
   const std::string plan = "plan {in} --out {out}";
@@ -57,8 +69,7 @@ std::vector<BadInput> badInputs() {
        "malformed YAML"},
       {"truncated_scenario", plan, kValid.substr(0, 60), "", 2, "malformed YAML"},
       {"top_level_list", plan, "- world\n- vehicles\n", "", 2, "must be a mapping"},
-      {"binary_garbage", plan, std::string("\x01\x02\xff\xfe\x00\x7f", 6), "", 2,
-       "must be a mapping"},
+      {"binary_garbage", plan, std::string("\x01\x02\xff\xfe\x00\x7f", 6), "", 2, "malformed YAML"},
       {"deeply_nested", plan, "world: " + std::string(20000, '[') + std::string(20000, ']') + "\n",
        "", 2, "malformed YAML"},
       {"unknown_top_level_key", plan, kValid + "wrld: 1\n", "", 2, "unknown key 'wrld'"},
@@ -90,28 +101,32 @@ std::vector<BadInput> badInputs() {
        "", 2, "radius"},
       // Vehicles: overlapping, outside, wrong types, missing.
       {"start_inside_obstacle", plan,
-       withVehicles("vehicles: [{name: uav1, model: cf2, start: [10, 10, 1], goal: [18, 18, 1]}]\n"),
+       withVehicles(
+           "vehicles: [{name: uav1, model: cf2, start: [10, 10, 1], goal: [18, 18, 1]}]\n"),
        "", 2, "inside obstacle 1"},
       {"goal_outside_world", plan,
        withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [25, 18, 1]}]\n"),
        "", 2, "outside the world bounds"},
       {"start_wrong_type", plan,
-       withVehicles("vehicles: [{name: uav1, model: cf2, start: here, goal: [18, 18, 1]}]\n"), "", 2,
-       "vehicles[0].start: must be a list of 3 numbers"},
+       withVehicles("vehicles: [{name: uav1, model: cf2, start: here, goal: [18, 18, 1]}]\n"), "",
+       2, "vehicles[0].start: must be a list of 3 numbers"},
       {"start_two_numbers", plan,
        withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2], goal: [18, 18, 1]}]\n"), "",
        2, "vehicles[0].start: must be a list of 3 numbers"},
       {"start_overflowing_number", plan,
-       withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2, 1e999], goal: [18, 18, 1]}]\n"),
+       withVehicles(
+           "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1e999], goal: [18, 18, 1]}]\n"),
        "", 2, "must be a finite number"},
       {"no_vehicles", plan, kWorld + kPlanner, "", 2, "missing 'vehicles' list"},
-      {"empty_vehicle_list", plan, withVehicles("vehicles: []\n"), "", 2, "must be a non-empty list"},
+      {"empty_vehicle_list", plan, withVehicles("vehicles: []\n"), "", 2,
+       "must be a non-empty list"},
       {"duplicate_vehicle_names", plan,
        withVehicles("vehicles: [{name: a, model: cf2, start: [2, 2, 1], goal: [18, 18, 1]},\n"
                     "           {name: a, model: cf2, start: [2, 4, 1], goal: [18, 16, 1]}]\n"),
        "", 2, "duplicate vehicle name 'a'"},
       {"unknown_model", plan,
-       withVehicles("vehicles: [{name: uav1, model: blimp, start: [2, 2, 1], goal: [18, 18, 1]}]\n"),
+       withVehicles(
+           "vehicles: [{name: uav1, model: blimp, start: [2, 2, 1], goal: [18, 18, 1]}]\n"),
        "", 2, "no model 'blimp'"},
       {"missing_urdf", plan,
        withVehicles(
@@ -149,8 +164,21 @@ std::vector<BadInput> badInputs() {
        withWorld("world: {bounds: {min: [0, 0, 0], max: [20, 20, 6]},\n"
                  "        obstacles: [{type: box, pos: [10, 10, 3], size: [2, 30, 16]}]}\n"),
        "", 1, "no path"},
+      // Overlapping: the centre is clear but the vehicle's body (plus margin) touches the wall.
+      {"start_touching_obstacle", plan,
+       withVehicles(
+           "vehicles: [{name: uav1, model: cf2, start: [8.95, 10, 1], goal: [18, 18, 1]}]\n"),
+       "", 1, "start cell is blocked"},
+      // A fault in flight: absurd position gains keep the rotors saturated; the run stops.
+      {"absurd_gains_saturate", "run {in} --no-video --out {out}",
+       kWorld +
+           "vehicles: [{name: uav1, model: quad_1500g, start: [2, 2, 1], goal: [18, 18, 1]}]\n" +
+           kPlanner +
+           "controller: {name: geometric, gains: {k_x_xy: 10000}}\nsim: {max_time: 30}\n",
+       "", 1, "rotors stayed saturated for over 2 s"},
       // Command line and files.
-      {"scenario_missing", "plan {out}/none.yaml --out {out}", "", "", 2, "cannot open scenario file"},
+      {"scenario_missing", "plan {out}/none.yaml --out {out}", "", "", 2,
+       "cannot open scenario file"},
       {"set_without_value", "plan {in} --set planner --out {out}", kValid, "", 2,
        "expected key=value"},
       {"out_under_regular_file", "plan {in} --out /etc/passwd/x", kValid, "", 2,
@@ -211,6 +239,10 @@ TEST_P(BadInputTest, ExitsWithOneLineNamingTheProblemAndLeavesNoResult) {
     const std::string metrics = slurp(out / "metrics.json");
     EXPECT_FALSE(jsonTrue(metrics, "reached_goal")) << metrics;
     EXPECT_EQ(jsonNumber(metrics, "status"), 1.0) << metrics;
+    if (c.name == "absurd_gains_saturate") {
+      EXPECT_NE(metrics.find("\"fault\": \"saturated\""), std::string::npos) << metrics;
+      EXPECT_GT(jsonNumber(metrics, "longest_saturation_s"), 2.0) << metrics;
+    }
   }
   fs::remove_all(dir);
 }

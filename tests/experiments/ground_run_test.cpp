@@ -74,6 +74,25 @@ TEST(GroundTeamRun, IndependentPathsThroughEachOtherMakeRobotContacts) {
   EXPECT_GE(test::jsonNumber(metrics, "robot_contacts"), 5);
 }
 
+TEST(GroundNavigationRun, RnaRobotCrossesBetweenPatrollingCylindersWithoutTouchingThem) {
+  Scenario s = loadScenario(std::string(COSIM_SOURCE_DIR) +
+                            "/experiments/scenarios/ground_moving_obstacles.yaml");
+  RunRequest request;
+  request.out_dir = test::freshDir("ground-nav");
+  std::filesystem::create_directories(request.out_dir);
+  request.video = false;
+  request.images = false;
+  const RunSummary r = executeGroundRun(s, request);
+  const std::string metrics = test::slurp(request.out_dir / "metrics.json");
+  std::filesystem::remove_all(request.out_dir);
+  EXPECT_EQ(r.status, 0) << r.message;
+  EXPECT_EQ(test::jsonNumber(metrics, "moving_obstacles"), 3);
+  EXPECT_EQ(test::jsonNumber(metrics, "moving_obstacle_contacts"), 0);
+  EXPECT_GT(test::jsonNumber(metrics, "min_moving_obstacle_distance_m"), 0.0);
+  // The navigator re-planned around predicted collisions on the way.
+  EXPECT_GT(test::jsonNumber(metrics, "replans"), 0);
+}
+
 TEST(GroundTeamRun, MissingMeshIsExitTwoNamingFileAndElement) {
   const auto dir = test::freshDir("ground-mesh");
   std::filesystem::create_directories(dir);

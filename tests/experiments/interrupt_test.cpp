@@ -2,9 +2,9 @@
 // saying so, and no file in the run folder that looks finished (metrics.json is the mark of a
 // complete run, and no temporary file is left behind). Running again into the same folder then
 // completes normally.
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
-#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -26,7 +26,8 @@ namespace fs = std::filesystem;
 pid_t spawnCosim(const std::vector<std::string>& args, const fs::path& err_file) {
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
   posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
   std::vector<std::string> all = {COSIM_BINARY};
   all.insert(all.end(), args.begin(), args.end());
@@ -67,7 +68,8 @@ void interruptDuringFlight(int signal_number, const std::string& name) {
   fs::create_directories(dir);
   const fs::path out = dir / "run", err = dir / "err";
   // A long flight: the signal surely arrives while the vehicle is in the air.
-  const pid_t pid = spawnCosim({"run", "--no-video", "--out", out.string(), "--set", "sim.max_time=600"}, err);
+  const pid_t pid =
+      spawnCosim({"run", "--no-video", "--out", out.string(), "--set", "sim.max_time=600"}, err);
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(waitForText(err, "cosim: flying", std::chrono::seconds(120))) << slurp(err);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));

@@ -5,7 +5,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    const cosim::OccupancyGrid grid = cosim::parseMovingAIMap(cosim::fuzz::text(data, size), "fuzz.map");
+    const cosim::OccupancyGrid grid =
+        cosim::parseMovingAIMap(cosim::fuzz::text(data, size), "fuzz.map");
     // Touch every cell: the grid's size must match what it claims.
     long free_cells = 0;
     for (int y = 0; y < grid.ny(); ++y)

@@ -5,7 +5,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    for (const auto& line : cosim::parseMovingAIScenario(cosim::fuzz::text(data, size), "fuzz.scen"))
+    for (const auto& line :
+         cosim::parseMovingAIScenario(cosim::fuzz::text(data, size), "fuzz.scen"))
       cosim::matchesOptimalLength(line, line.optimal_length);
   } catch (const cosim::InputError&) {
   }

@@ -8,7 +8,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     // A path inside the source tree so relative model/include paths resolve as for a bundled
     // scenario.
-    cosim::parseScenario(cosim::fuzz::text(data, size), COSIM_SOURCE_DIR "/experiments/scenarios/fuzz.yaml");
+    cosim::parseScenario(cosim::fuzz::text(data, size),
+                         COSIM_SOURCE_DIR "/experiments/scenarios/fuzz.yaml");
   } catch (const cosim::InputError&) {
   }
   return 0;

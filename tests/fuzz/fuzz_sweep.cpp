@@ -5,7 +5,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    cosim::parseSweepSpec(cosim::fuzz::text(data, size), COSIM_SOURCE_DIR "/experiments/sweeps/fuzz.yaml");
+    cosim::parseSweepSpec(cosim::fuzz::text(data, size),
+                          COSIM_SOURCE_DIR "/experiments/sweeps/fuzz.yaml");
   } catch (const cosim::InputError&) {
   }
   return 0;

@@ -26,7 +26,8 @@ std::pair<int, int> pngSize(const std::filesystem::path& p) {
   const std::string b = slurp(p);
   if (b.size() < 24 || b.substr(1, 3) != "PNG") return {0, 0};
   const auto be32 = [&](std::size_t at) {
-    return (static_cast<unsigned char>(b[at]) << 24) | (static_cast<unsigned char>(b[at + 1]) << 16) |
+    return (static_cast<unsigned char>(b[at]) << 24) |
+           (static_cast<unsigned char>(b[at + 1]) << 16) |
            (static_cast<unsigned char>(b[at + 2]) << 8) | static_cast<unsigned char>(b[at + 3]);
   };
   return {be32(16), be32(20)};
@@ -56,17 +57,20 @@ TEST(Figures, RunFiguresAreWrittenAsPngAndSvgWithTheirContent) {
   EXPECT_NE(error.find("RMSE 0.176 m, max 0.25 m"), std::string::npos);
   // Nothing but the six figures is left in the folder.
   int entries = 0;
-  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir / "figures")) ++entries;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir / "figures"))
+    ++entries;
   EXPECT_EQ(entries, 6);
   std::filesystem::remove_all(dir);
 }
 
 TEST(Figures, ComparisonChartWithNumericXIsALinePerGroupAveragedOverRepeats) {
   const auto dir = freshTestDir("chart_lines");
-  std::ofstream(dir / "results.csv") << "job,planner.name,resolution,planning_time_ms,status\n"
-                                        "1,astar,0.5,10,ok\n2,astar,0.5,14,ok\n3,astar,1.0,4,ok\n"
-                                        "4,theta_star,0.5,20,ok\n5,theta_star,1.0,7,ok\n6,theta_star,1.0,,failed\n";
-  writeComparisonChart(dir / "results.csv", "resolution", "planning_time_ms", "planner.name", dir / "time");
+  std::ofstream(dir / "results.csv")
+      << "job,planner.name,resolution,planning_time_ms,status\n"
+         "1,astar,0.5,10,ok\n2,astar,0.5,14,ok\n3,astar,1.0,4,ok\n"
+         "4,theta_star,0.5,20,ok\n5,theta_star,1.0,7,ok\n6,theta_star,1.0,,failed\n";
+  writeComparisonChart(dir / "results.csv", "resolution", "planning_time_ms", "planner.name",
+                       dir / "time");
   EXPECT_EQ(pngSize(dir / "time.png"), std::make_pair(900, 500));
   const std::string svg = slurp(dir / "time.svg");
   EXPECT_NE(svg.find(">astar<"), std::string::npos);
@@ -76,8 +80,9 @@ TEST(Figures, ComparisonChartWithNumericXIsALinePerGroupAveragedOverRepeats) {
 
 TEST(Figures, ComparisonChartWithCategoricalXIsBars) {
   const auto dir = freshTestDir("chart_bars");
-  std::ofstream(dir / "results.csv") << "planner,scenario,rmse_m\nastar,forest,0.1\nrrt_star,forest,0.2\n"
-                                        "astar,canyon,0.15\nrrt_star,canyon,0.3\n";
+  std::ofstream(dir / "results.csv")
+      << "planner,scenario,rmse_m\nastar,forest,0.1\nrrt_star,forest,0.2\n"
+         "astar,canyon,0.15\nrrt_star,canyon,0.3\n";
   writeComparisonChart(dir / "results.csv", "planner", "rmse_m", "scenario", dir / "rmse");
   const std::string svg = slurp(dir / "rmse.svg");
   EXPECT_NE(svg.find(">forest<"), std::string::npos);

@@ -25,12 +25,13 @@ std::string chromium() {
 std::string dumpDom(const std::string& browser, const std::filesystem::path& page) {
   const auto dir = page.parent_path();
   const std::filesystem::path profile = dir / "chromium-profile", out = dir / "dom.html";
-  const std::string cmd = browser +
-                          " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run"
-                          " --disable-background-networking --disable-component-update --disable-sync"
-                          " --autoplay-policy=no-user-gesture-required --user-data-dir=" + profile.string() +
-                          " --virtual-time-budget=20000 --dump-dom file://" + page.string() + " > " + out.string() +
-                          " 2> /dev/null";
+  const std::string cmd =
+      browser +
+      " --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run"
+      " --disable-background-networking --disable-component-update --disable-sync"
+      " --autoplay-policy=no-user-gesture-required --user-data-dir=" +
+      profile.string() + " --virtual-time-budget=20000 --dump-dom file://" + page.string() + " > " +
+      out.string() + " 2> /dev/null";
   if (std::system(cmd.c_str()) != 0) return "";
   std::ifstream in(out);
   std::ostringstream s;
@@ -41,7 +42,8 @@ std::string dumpDom(const std::string& browser, const std::filesystem::path& pag
 }  // namespace
 
 TEST(HtmlReport, FlattenedMetricsKeepDocumentOrderAndNesting) {
-  const auto f = flattenJson(R"({"a": 1.5, "b": {"c": "x\"y"}, "v": [{"d": true}, {"d": null}], "e": {}})");
+  const auto f =
+      flattenJson(R"({"a": 1.5, "b": {"c": "x\"y"}, "v": [{"d": true}, {"d": null}], "e": {}})");
   ASSERT_EQ(f.size(), 4u);
   EXPECT_EQ(f[0], std::make_pair(std::string("a"), std::string("1.5")));
   EXPECT_EQ(f[1], std::make_pair(std::string("b.c"), std::string("x\"y")));
@@ -53,7 +55,8 @@ TEST(HtmlReport, FlattenedMetricsKeepDocumentOrderAndNesting) {
 TEST(HtmlReport, RunReportLoadsEveryVideoAndFigureInHeadlessChromium) {
   const std::string browser = chromium();
   if (browser.empty())
-    GTEST_SKIP() << "Chromium is not installed (Debian package 'chromium'); the report cannot be checked";
+    GTEST_SKIP()
+        << "Chromium is not installed (Debian package 'chromium'); the report cannot be checked";
   const auto dir = freshTestDir("report");
   Scenario s = renderTestScenario(320, 180);
   s.render.fps = 5;
@@ -72,6 +75,7 @@ TEST(HtmlReport, RunReportLoadsEveryVideoAndFigureInHeadlessChromium) {
   // The check can fail: with a figure missing, the page reports it.
   std::filesystem::remove(dir / "figures" / "side.png");
   const std::string broken = dumpDom(browser, dir / "index.html");
-  EXPECT_NE(broken.find("data-media=\"failed: figures/side.png\""), std::string::npos) << broken.substr(0, 3000);
+  EXPECT_NE(broken.find("data-media=\"failed: figures/side.png\""), std::string::npos)
+      << broken.substr(0, 3000);
   std::filesystem::remove_all(dir);
 }

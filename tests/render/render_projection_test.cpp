@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "render/run_renderer.h"
+#include "render_test_scene.h"
 #include "sim/world_model.h"
 
 using namespace cosim;
@@ -9,25 +10,7 @@ using namespace cosim;
 namespace {
 
 Scenario scene() {
-  Scenario s;
-  s.file = "test";
-  s.world.bounds_min = {0, 0, 0};
-  s.world.bounds_max = {20, 20, 6};
-  Obstacle box;
-  box.type = ObstacleType::Box;
-  box.pos = {10, 14, 2};
-  box.size = {2, 2, 4};
-  s.world.obstacles.push_back(box);
-  VehicleSpec v;
-  v.name = "uav1";
-  v.model = "quad_1500g";
-  v.model_file = modelsDirectory() / "quad_1500g.xml";
-  v.start = {3, 3, 2};
-  v.waypoints = {{17, 5, 2}};
-  s.vehicles.push_back(v);
-  s.render.width = 640;
-  s.render.height = 360;
-  return s;
+  return test::renderTestScenario(640, 360);
 }
 
 // True if the pixel is clearly the planned path's orange (red high, blue low).
@@ -60,7 +43,8 @@ TEST(RenderProjection, PlannedPathPixelsAreWhereThePathProjects) {
   int hits = 0, tried = 0;
   for (int seg = 0; seg < 2; ++seg)
     for (double f : {0.3, 0.5, 0.7}) {
-      const Eigen::Vector3d p = v.planned_path[seg] + f * (v.planned_path[seg + 1] - v.planned_path[seg]);
+      const Eigen::Vector3d p =
+          v.planned_path[seg] + f * (v.planned_path[seg + 1] - v.planned_path[seg]);
       Eigen::Vector2d px;
       ASSERT_TRUE(renderer.project(p, px));
       ++tried;
@@ -74,19 +58,23 @@ TEST(RenderProjection, PlannedPathPixelsAreWhereThePathProjects) {
     }
   EXPECT_EQ(hits, tried);
 
-  // And a point well away from the path (the far corner of the floor) is not orange.
-  Eigen::Vector2d corner;
-  ASSERT_TRUE(renderer.project({19, 19, 0}, corner));
-  EXPECT_FALSE(isPlannedOrange(rgb, 640, static_cast<int>(corner.x()), static_cast<int>(corner.y())));
+  // And a point of the floor well away from the path (and inside the frame) is not orange.
+  Eigen::Vector2d away;
+  ASSERT_TRUE(renderer.project({6, 16, 0}, away));
+  ASSERT_TRUE(away.x() >= 0 && away.y() >= 0 && away.x() < 640 && away.y() < 360)
+      << away.transpose();
+  EXPECT_FALSE(isPlannedOrange(rgb, 640, static_cast<int>(away.x()), static_cast<int>(away.y())));
 }
 
 namespace {
 
 // Pixels that differ between two frames (any channel by more than 24).
-std::vector<bool> changedPixels(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+std::vector<bool> changedPixels(const std::vector<std::uint8_t>& a,
+                                const std::vector<std::uint8_t>& b) {
   std::vector<bool> changed(a.size() / 3);
   for (std::size_t i = 0; i < changed.size(); ++i)
-    for (int c = 0; c < 3; ++c) changed[i] = changed[i] || std::abs(int(a[3 * i + c]) - int(b[3 * i + c])) > 24;
+    for (int c = 0; c < 3; ++c)
+      changed[i] = changed[i] || std::abs(int(a[3 * i + c]) - int(b[3 * i + c])) > 24;
   return changed;
 }
 
@@ -124,7 +112,8 @@ TEST(RenderProjection, VehiclePixelsAreWhereTheVehicleProjects) {
   int n = 0;
   for (int y = 0; y < 360; ++y)
     for (int x = 0; x < 640; ++x)
-      if (changed[static_cast<std::size_t>(y) * 640 + x] && std::hypot(x + 0.5 - px.x(), y + 0.5 - px.y()) < 20) {
+      if (changed[static_cast<std::size_t>(y) * 640 + x] &&
+          std::hypot(x + 0.5 - px.x(), y + 0.5 - px.y()) < 20) {
         sx += x + 0.5;
         sy += y + 0.5;
         ++n;
@@ -133,7 +122,8 @@ TEST(RenderProjection, VehiclePixelsAreWhereTheVehicleProjects) {
   EXPECT_NEAR(sx / n, px.x(), 3.0);
   EXPECT_NEAR(sy / n, px.y(), 3.0);
   // And the pixel at the projection itself changed.
-  EXPECT_TRUE(changed[static_cast<std::size_t>(std::lround(px.y())) * 640 + static_cast<std::size_t>(std::lround(px.x()))]);
+  EXPECT_TRUE(changed[static_cast<std::size_t>(std::lround(px.y())) * 640 +
+                      static_cast<std::size_t>(std::lround(px.x()))]);
 }
 
 TEST(RenderProjection, ChaseCameraKeepsTheVehicleAtTheFrameCentre) {
@@ -160,7 +150,9 @@ TEST(RenderProjection, ChaseCameraKeepsTheVehicleAtTheFrameCentre) {
     EXPECT_NEAR(px.y(), 90.0, 1.0) << "t = " << t;
     // The camera is behind the vehicle: a point 2 m ahead along its motion is farther up the
     // screen, not behind the camera.
-    ASSERT_TRUE(renderer.project(v.samples[static_cast<std::size_t>(t * 100)].pos + 2.0 * Eigen::Vector3d(3, 1, 0).normalized(), px));
+    ASSERT_TRUE(renderer.project(v.samples[static_cast<std::size_t>(t * 100)].pos +
+                                     2.0 * Eigen::Vector3d(3, 1, 0).normalized(),
+                                 px));
     EXPECT_LT(px.y(), 90.0);
   }
 }

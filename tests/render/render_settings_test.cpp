@@ -11,7 +11,8 @@ namespace {
 std::string scenarioWithRender(const std::string& render) {
   return "world: {bounds: {min: [0, 0, 0], max: [20, 20, 6]}}\n"
          "vehicles:\n  - {name: uav1, model: quad_1500g, start: [2, 2, 2], goal: [18, 18, 2]}\n"
-         "render: " + render + "\n";
+         "render: " +
+         render + "\n";
 }
 
 std::string errorOf(const std::string& render) {
@@ -27,8 +28,9 @@ std::string errorOf(const std::string& render) {
 
 TEST(RenderSettings, CamerasFixedCameraSpeedupAndAlphaAreRead) {
   const Scenario s = parseScenario(
-      scenarioWithRender("{camera: fixed, cameras: [chase, top, orbit], speedup: 2, obstacle_alpha: 0.5, "
-                         "png_frames: true, fixed_camera: {pos: [-5, 10, 8], lookat: [10, 10, 1]}}"),
+      scenarioWithRender(
+          "{camera: fixed, cameras: [chase, top, orbit], speedup: 2, obstacle_alpha: 0.5, "
+          "png_frames: true, fixed_camera: {pos: [-5, 10, 8], lookat: [10, 10, 1]}}"),
       "r.yaml");
   EXPECT_EQ(s.render.camera, "fixed");
   EXPECT_EQ(s.render.cameras, (std::vector<std::string>{"chase", "top", "orbit"}));
@@ -45,7 +47,8 @@ TEST(RenderSettings, BadRenderKeysAreErrorsNamingTheKey) {
   EXPECT_NE(errorOf("{camera: fixed}").find("fixed_camera"), std::string::npos);
   EXPECT_NE(errorOf("{obstacle_alpha: 0}").find("render.obstacle_alpha"), std::string::npos);
   EXPECT_NE(errorOf("{speedup: -1}").find("render.speedup"), std::string::npos);
-  EXPECT_NE(errorOf("{fixed_camera: {pos: [1, 1, 1], lookat: [1, 1, 1]}}").find("must differ"), std::string::npos);
+  EXPECT_NE(errorOf("{fixed_camera: {pos: [1, 1, 1], lookat: [1, 1, 1]}}").find("must differ"),
+            std::string::npos);
   EXPECT_NE(errorOf("{colour: red}").find("colour"), std::string::npos);
   EXPECT_EQ(errorOf("{camera: orbit, cameras: [top]}"), "");
 }

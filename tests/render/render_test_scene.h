@@ -1,8 +1,8 @@
 #pragma once
 // A small known world and a synthetic flight log for the render tests: no planning, no physics.
-#include <cmath>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -65,7 +65,8 @@ inline RunLog straightFlightLog(double seconds, double lag = 0.2) {
 }
 
 inline std::filesystem::path freshTestDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / ("cosim_render_test_" + name + "_" + std::to_string(::getpid()));
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("cosim_render_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

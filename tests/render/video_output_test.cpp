@@ -16,8 +16,9 @@ namespace {
 
 std::string probe(const std::filesystem::path& video, const std::string& entries) {
   const std::filesystem::path out = video.string() + ".probe";
-  const std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries " + entries +
-                          " -of default=noprint_wrappers=1 " + video.string() + " > " + out.string();
+  const std::string cmd = "ffprobe -v error -count_frames -select_streams v:0 -show_entries " +
+                          entries + " -of default=noprint_wrappers=1 " + video.string() + " > " +
+                          out.string();
   if (std::system(cmd.c_str()) != 0) return "";
   std::ifstream in(out);
   std::ostringstream s;
@@ -50,10 +51,12 @@ TEST(VideoOutput, Mp4HasTheExpectedFramesDurationAndBrowserEncoding) {
   const RunLog log = straightFlightLog(2.0);
   const WorldModel world = WorldModel::build(s);
   RunRenderer renderer(world, s, log, 320, 180);
-  const int frames = renderRunVideo(renderer, s.render, "chase", dir / "v.mp4", VideoFormat::Mp4, false);
+  const int frames =
+      renderRunVideo(renderer, s.render, "chase", dir / "v.mp4", VideoFormat::Mp4, false);
   EXPECT_EQ(frames, 21);
   const std::string info =
-      probe(dir / "v.mp4", "stream=codec_name,pix_fmt,width,height,nb_read_frames,r_frame_rate:format=duration");
+      probe(dir / "v.mp4",
+            "stream=codec_name,pix_fmt,width,height,nb_read_frames,r_frame_rate:format=duration");
   ASSERT_FALSE(info.empty());
   EXPECT_NE(info.find("codec_name=h264"), std::string::npos) << info;
   EXPECT_NE(info.find("pix_fmt=yuv420p"), std::string::npos) << info;
@@ -62,7 +65,8 @@ TEST(VideoOutput, Mp4HasTheExpectedFramesDurationAndBrowserEncoding) {
   EXPECT_NEAR(field(info, "duration"), 2.1, 0.051) << info;  // 21 frames of 0.1 s
   // A 2x speed-up halves the video: 11 frames.
   s.render.speedup = 2.0;
-  EXPECT_EQ(renderRunVideo(renderer, s.render, "top", dir / "fast.mp4", VideoFormat::Mp4, false), 11);
+  EXPECT_EQ(renderRunVideo(renderer, s.render, "top", dir / "fast.mp4", VideoFormat::Mp4, false),
+            11);
   EXPECT_EQ(field(probe(dir / "fast.mp4", "stream=nb_read_frames"), "nb_read_frames"), 11.0);
   std::filesystem::remove_all(dir);
 }
@@ -74,7 +78,9 @@ TEST(VideoOutput, PngSequenceHasOneNumberedFramePerVideoFrame) {
   const RunLog log = straightFlightLog(1.0);
   const WorldModel world = WorldModel::build(s);
   RunRenderer renderer(world, s, log, 320, 180);
-  EXPECT_EQ(renderRunVideo(renderer, s.render, "orbit", dir / "frames", VideoFormat::PngSequence, false), 6);
+  EXPECT_EQ(
+      renderRunVideo(renderer, s.render, "orbit", dir / "frames", VideoFormat::PngSequence, false),
+      6);
   int files = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir / "frames")) {
     ++files;

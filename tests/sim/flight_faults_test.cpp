@@ -1,0 +1,79 @@
+// Faults in flight end the run with a reason instead of a log of nonsense: NaN controls (MuJoCo
+// would zero them, or reset the state, and carry on), and a mixer saturated for too long.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "control/waypoint_reference.h"
+#include "sim/flight_simulation.h"
+#include "sim/world_model.h"
+#include "tests/sim/single_vehicle_scenario.h"
+
+using namespace cosim;
+
+namespace {
+
+// Holds the hover thrust; reports the mixer as saturated while `saturated(t)` says so, and
+// commands NaN from `nan_after` on.
+class ScriptedController : public FlightController {
+ public:
+  ScriptedController(double hover_thrust, bool (*saturated)(double), double nan_after)
+      : hover_(hover_thrust), saturated_(saturated), nan_after_(nan_after) {}
+  std::string name() const override { return "scripted"; }
+  void reset() override { t_ = 0.0; }
+  ControlOutput update(const VehicleState&, const FlatReference&, double dt) override {
+    ControlOutput out;
+    out.rotor_thrusts.setConstant(t_ >= nan_after_ ? std::numeric_limits<double>::quiet_NaN()
+                                                   : hover_);
+    out.saturated = saturated_(t_);
+    t_ += dt;
+    return out;
+  }
+
+ private:
+  double hover_;
+  bool (*saturated_)(double);
+  double nan_after_;
+  double t_ = 0.0;
+};
+
+RunLog fly(double seconds, bool (*saturated)(double), double nan_after = 1e9) {
+  const Scenario s = test::singleVehicleScenario({0, 0, 2}, {0, 0, 2}, seconds);
+  const WorldModel world = WorldModel::build(s);
+  const QuadrotorParams& q = world.vehicles()[0].params;
+  ScriptedController controller(q.mass * q.gravity / 4.0, saturated, nan_after);
+  WaypointReference reference({s.vehicles[0].goal()}, 0.0);
+  std::vector<VehiclePilot> pilots(1);
+  pilots[0].controller = &controller;
+  pilots[0].reference = &reference;
+  pilots[0].goal = s.vehicles[0].goal();
+  FlightOptions options;
+  options.settings = s.sim;
+  options.hold_after_arrival = 1e9;  // only a fault or max_time ends the run
+  return simulateFlight(world, s, pilots, options);
+}
+
+}  // namespace
+
+TEST(FlightFaults, MixerSaturatedWithoutABreakEndsTheRunJustAfterTheLimit) {
+  const RunLog log = fly(10.0, [](double) { return true; });
+  EXPECT_EQ(log.end_reason, "saturated");
+  // The limit is 2 s of continuous saturation, checked at the 500 Hz control rate.
+  EXPECT_NEAR(log.sim_time, 2.0, 0.01);
+}
+
+TEST(FlightFaults, SaturationWithBreaksShorterThanTheLimitDoesNotEndTheRun) {
+  // Saturated 1.5 s out of every 2 s: never 2 s in a row.
+  const RunLog log = fly(6.0, [](double t) { return std::fmod(t, 2.0) < 1.5; });
+  EXPECT_EQ(log.end_reason, "max_time");
+  EXPECT_NEAR(log.sim_time, 6.0, 0.01);
+}
+
+TEST(FlightFaults, NanRotorCommandsEndTheRunAsUnstableInsteadOfFlyingOn) {
+  const RunLog log = fly(
+      5.0, [](double) { return false; }, 1.0);
+  EXPECT_EQ(log.end_reason, "unstable");
+  EXPECT_GE(log.mujoco_warnings, 1);
+  EXPECT_LT(log.sim_time, 1.01);
+}
