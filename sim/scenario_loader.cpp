@@ -13,6 +13,10 @@ namespace {
 constexpr double kMaxWorldExtent = 10000.0;  // m; larger worlds are surely a units mistake
 constexpr std::size_t kMaxObstacles = 100000;
 constexpr std::size_t kMaxWaypoints = 100000;
+// The flight log keeps one sample (about 250 bytes) per vehicle per control step, reserved up
+// front: 20 million samples is about 5 GB. More is a mistake (a day at 10 kHz), refused before
+// anything is allocated.
+constexpr double kMaxLogSamples = 2e7;
 
 void readObstacle(const YamlReader& r, const YAML::Node& n, const std::string& key,
                   Obstacle& o) {
@@ -293,6 +297,11 @@ Scenario parseScenario(const std::string& text, const std::string& file,
       r.fail(n["control_rate"] ? n["control_rate"] : n, "sim.control_rate",
              "the physics rate (1/timestep) must be a whole multiple of the control rate");
   }
+  if (const double samples = s.sim.max_time * s.sim.control_rate * static_cast<double>(s.vehicles.size());
+      samples > kMaxLogSamples)
+    r.fail(root["sim"] ? root["sim"] : root, "sim.max_time",
+           "max_time x control_rate x vehicles = " + std::to_string(static_cast<long long>(samples)) +
+               " log samples, more than 20 million: shorten sim.max_time or lower sim.control_rate");
 
   // disturbances
   if (root["disturbances"]) {

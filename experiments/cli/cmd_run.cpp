@@ -21,7 +21,7 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
       "collision, 1 if not (no path, goal missed, collision), 2 for bad input.");
   struct Args {
     std::string scenario, out;
-    bool no_video = false, quiet = false;
+    bool no_video = false, no_images = false, quiet = false;
     long seed = -1;
     std::vector<std::string> sets;
   };
@@ -29,6 +29,8 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("scenario", a->scenario, "scenario YAML (default: the bundled default scenario)");
   cmd->add_option("--out", a->out, "output folder (default: a new folder under out/)");
   cmd->add_flag("--no-video", a->no_video, "skip video.mp4 (much faster)");
+  cmd->add_flag("--no-images", a->no_images,
+                "skip final.png, figures/ and index.html too (with --no-video: no rendering at all)");
   cmd->add_option("--seed", a->seed, "random seed (overrides sim.seed)")->check(CLI::Range(0L, 2147483647L));
   cmd->add_option("--set", a->sets, "override a scenario key, e.g. --set planner.name=astar")
       ->allow_extra_args(false);
@@ -41,6 +43,7 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     RunRequest request;
     request.out_dir = prepareOutputDir(a->out, "run");
     request.video = !a->no_video;
+    request.images = !a->no_images;
     request.progress = !a->quiet;
     request.interrupt = &installInterruptFlag();
     const RunSummary s = executeRun(scenario, request);

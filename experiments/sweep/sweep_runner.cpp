@@ -61,7 +61,12 @@ RunningJob startJob(const SweepJob& job, const SweepRunOptions& o, std::size_t j
   if (ec) throw std::runtime_error("cannot create " + r.dir.string() + ": " + ec.message());
   std::vector<std::string> args = {"run", std::filesystem::absolute(job.scenario_path).string(),
                                    "--out", r.dir.string(), "--quiet"};
-  if (!o.video) args.push_back("--no-video");
+  // Without video a sweep renders nothing at all: pictures of every job cost more CPU than short
+  // flights do.
+  if (!o.video) {
+    args.push_back("--no-video");
+    args.push_back("--no-images");
+  }
   for (const auto& ov : job.overrides) {
     args.push_back("--set");
     args.push_back(ov);

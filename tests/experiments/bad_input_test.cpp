@@ -157,6 +157,9 @@ std::vector<BadInput> badInputs() {
        "whole multiple of the control rate"},
       {"max_time_negative", plan, kValid + "sim: {max_time: -5}\n", "", 2, "sim.max_time"},
       {"seed_negative", plan, kValid + "sim: {seed: -1}\n", "", 2, "sim.seed"},
+      {"log_too_long", "run {in} --no-video --out {out}",
+       kValid + "sim: {max_time: 86400, control_rate: 10000, timestep: 0.0001}\n", "", 2,
+       "more than 20 million"},
       {"odd_video_width", "run {in} --no-video --out {out}",
        kValid + "render: {width: 641, height: 480}\n", "", 2, "must be even"},
       // Unreachable: a wall across the whole world. Exit 1 (the task failed), not a crash.

@@ -65,29 +65,27 @@ bool wallClockColumn(const std::string& name) {
          name == "sim_speed_x";
 }
 
+// Each test has its own folder (CTest runs every test in a process of its own).
 class SweepCommandTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() {
-    root_ = new fs::path(test::freshDir("sweep-cli"));
-    fs::create_directories(*root_);
-    std::ofstream(*root_ / "small.yaml") << kSweep;
-    first_ = new test::CommandResult(runCosim("sweep " + (*root_ / "small.yaml").string() +
-                                              " --jobs 2 --out " + (*root_ / "a").string()));
+  void SetUp() override {
+    root_ = test::freshDir(std::string("sweep-cli-") +
+                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(root_);
+    std::ofstream(root_ / "small.yaml") << kSweep;
   }
-  static void TearDownTestSuite() {
-    fs::remove_all(*root_);
-    delete root_;
-    delete first_;
+  void TearDown() override { fs::remove_all(root_); }
+  test::CommandResult sweep(const std::string& args) {
+    return runCosim("sweep " + (root_ / "small.yaml").string() + " " + args);
   }
-  static fs::path* root_;
-  static test::CommandResult* first_;
+  fs::path root_;
 };
-fs::path* SweepCommandTest::root_ = nullptr;
-test::CommandResult* SweepCommandTest::first_ = nullptr;
 
-TEST_F(SweepCommandTest, RunsEveryJobAndWritesOneRowPerJobInIdOrder) {
-  ASSERT_EQ(first_->status, 0) << first_->err;
-  const auto rows = readCsv(*root_ / "a/results.csv");
+TEST_F(SweepCommandTest, RunsEveryJobInIdOrderAndASecondInvocationDoesNoWork) {
+  const auto first = sweep("--jobs 2 --out " + (root_ / "a").string());
+  ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_NE(first.err.find("8/8 done (8 ok)"), std::string::npos) << first.err;
+  const auto rows = readCsv(root_ / "a/results.csv");
   ASSERT_EQ(rows.size(), 9u);
   const std::vector<std::string> start(rows[0].begin(), rows[0].begin() + 6);
   EXPECT_EQ(start, (std::vector<std::string>{"job", "scenario", "planner.name", "sim.seed",
@@ -96,7 +94,7 @@ TEST_F(SweepCommandTest, RunsEveryJobAndWritesOneRowPerJobInIdOrder) {
     EXPECT_EQ(rows[i].size(), rows[0].size());
     EXPECT_EQ(rows[i][0], std::to_string(i - 1));
     EXPECT_EQ(rows[i][4], "ok") << "job " << i - 1 << ": "
-                                << slurp(*root_ /
+                                << slurp(root_ /
                                          ("a/jobs/000" + std::to_string(i - 1) + "/log.txt"));
   }
   EXPECT_EQ(rows[1][1], "worlds/city-d0.5-s1-16x16x5.yaml");
@@ -104,39 +102,37 @@ TEST_F(SweepCommandTest, RunsEveryJobAndWritesOneRowPerJobInIdOrder) {
   EXPECT_EQ(rows[8][2], "theta_star");
   EXPECT_EQ(rows[8][3], "2");
   // summary.csv: 2 worlds x 2 planners, seeds pooled; ok_rate first.
-  const auto summary = readCsv(*root_ / "a/summary.csv");
   int ok_rows = 0;
-  for (const auto& r : summary)
+  for (const auto& r : readCsv(root_ / "a/summary.csv"))
     if (r.size() > 4 && r[2] == "ok_rate") {
       ++ok_rows;
       EXPECT_EQ(r[3], "2");  // jobs
       EXPECT_EQ(r[5], "1");  // mean
     }
   EXPECT_EQ(ok_rows, 4);
-  EXPECT_TRUE(fs::exists(*root_ / "a/figure.png"));
-  EXPECT_NE(first_->err.find("8/8 done (8 ok)"), std::string::npos) << first_->err;
-}
+  EXPECT_TRUE(fs::exists(root_ / "a/figure.png"));
 
-TEST_F(SweepCommandTest, ASecondInvocationDoesNoWork) {
-  const std::string before = slurp(*root_ / "a/results.csv");
-  const auto again =
-      runCosim("sweep " + (*root_ / "small.yaml").string() + " --out " + (*root_ / "a").string());
+  const std::string before = slurp(root_ / "a/results.csv");
+  const auto again = sweep("--out " + (root_ / "a").string());
   EXPECT_EQ(again.status, 0) << again.err;
   EXPECT_NE(again.err.find("8 jobs, 8 already finished, 0 to run"), std::string::npos) << again.err;
-  EXPECT_EQ(slurp(*root_ / "a/results.csv"), before);
+  EXPECT_EQ(slurp(root_ / "a/results.csv"), before);
 }
 
 TEST_F(SweepCommandTest, TwoShardsMergedEqualOneRunRowForRow) {
-  const std::string sweep = (*root_ / "small.yaml").string(), out = (*root_ / "b").string();
+  const auto whole = sweep("--jobs 2 --out " + (root_ / "a").string());
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  const std::string out = (root_ / "b").string();
   for (const char* shard : {"1/2", "2/2"}) {
-    const auto r = runCosim("sweep " + sweep + " --jobs 1 --shard " + shard + " --out " + out);
+    const auto r = sweep(std::string("--jobs 1 --shard ") + shard + " --out " + out);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.err.find("4 jobs, 0 already finished, 4 to run"), std::string::npos) << r.err;
   }
-  EXPECT_FALSE(fs::exists(*root_ / "b/results.csv"));  // shards leave the merge to --merge-only
-  const auto merged = runCosim("sweep " + sweep + " --merge-only --out " + out);
+  EXPECT_FALSE(fs::exists(root_ / "b/results.csv"));  // shards leave the merge to --merge-only
+  const auto merged = sweep("--merge-only --out " + out);
   ASSERT_EQ(merged.status, 0) << merged.err;
-  const auto a = readCsv(*root_ / "a/results.csv"), b = readCsv(*root_ / "b/results.csv");
+  const auto a = readCsv(root_ / "a/results.csv"), b = readCsv(root_ / "b/results.csv");
+  ASSERT_EQ(a.size(), 9u);
   ASSERT_EQ(a.size(), b.size());
   ASSERT_EQ(a[0], b[0]);
   int compared = 0;
@@ -150,35 +146,35 @@ TEST_F(SweepCommandTest, TwoShardsMergedEqualOneRunRowForRow) {
 }
 
 TEST_F(SweepCommandTest, AMalformedSweepFileOrAnUnknownKeyExitsTwoNamingFileLineAndKey) {
-  const fs::path bad = *root_ / "bad.yaml";
+  const fs::path bad = root_ / "bad.yaml";
   std::ofstream(bad) << "generators: [{type: city, size: [16, 16, 5]}]\nvary:\n  planner.name: "
                         "[astar]\n  sim.sed: [1]\n";
-  auto r = runCosim("sweep " + bad.string() + " --out " + (*root_ / "bad").string());
+  auto r = runCosim("sweep " + bad.string() + " --out " + (root_ / "bad").string());
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(
       r.err.rfind("cosim: " + bad.string() + ": line 4, key vary.sim.sed: scenario worlds/", 0), 0u)
       << r.err;
   EXPECT_NE(r.err.find("unknown key 'sed'"), std::string::npos) << r.err;
   std::ofstream(bad) << "generators: [{type: city}]\nvary: {planner.name: [astar}\n";
-  r = runCosim("sweep " + bad.string() + " --out " + (*root_ / "bad").string());
+  r = runCosim("sweep " + bad.string() + " --out " + (root_ / "bad").string());
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err.rfind("cosim: " + bad.string() + ": line 2: malformed YAML", 0), 0u) << r.err;
-  r = runCosim("sweep " + (*root_ / "small.yaml").string() + " --shard 3/2 --out " +
-               (*root_ / "bad").string());
+  r = runCosim("sweep " + (root_ / "small.yaml").string() + " --shard 3/2 --out " +
+               (root_ / "bad").string());
   EXPECT_EQ(r.status, 2);
 }
 
 TEST_F(SweepCommandTest, AnInterruptedSweepResumesWithoutDuplicatedOrTruncatedRows) {
-  const fs::path out = *root_ / "c";
-  const std::string sweep = (*root_ / "small.yaml").string();
+  const fs::path out = root_ / "c";
+  const std::string sweep_file = (root_ / "small.yaml").string();
   const pid_t pid = ::fork();
   ASSERT_GE(pid, 0);
   if (pid == 0) {
-    const std::string log = (*root_ / "c.log").string();
+    const std::string log = (root_ / "c.log").string();
     std::freopen(log.c_str(), "w", stderr);
     std::freopen("/dev/null", "w", stdout);
-    ::execl(COSIM_BINARY, COSIM_BINARY, "sweep", sweep.c_str(), "--jobs", "1", "--out", out.c_str(),
-            static_cast<char*>(nullptr));
+    ::execl(COSIM_BINARY, COSIM_BINARY, "sweep", sweep_file.c_str(), "--jobs", "1", "--out",
+            out.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
   // Interrupt once the first job has finished and the second is under way.
@@ -190,14 +186,14 @@ TEST_F(SweepCommandTest, AnInterruptedSweepResumesWithoutDuplicatedOrTruncatedRo
   int status = 0;
   ::waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 1) << slurp(*root_ / "c.log");
-  EXPECT_NE(slurp(*root_ / "c.log").find("interrupted"), std::string::npos);
+  EXPECT_EQ(WEXITSTATUS(status), 1) << slurp(root_ / "c.log");
+  EXPECT_NE(slurp(root_ / "c.log").find("interrupted"), std::string::npos);
   auto rows = readCsv(out / "results.csv");
   ASSERT_GE(rows.size(), 2u);  // the first job, at least
   EXPECT_LT(rows.size(), 9u);  // not all of them
   for (const auto& r : rows) EXPECT_EQ(r.size(), rows[0].size());
 
-  const auto resumed = runCosim("sweep " + sweep + " --jobs 2 --out " + out.string());
+  const auto resumed = sweep("--jobs 2 --out " + out.string());
   ASSERT_EQ(resumed.status, 0) << resumed.err;
   rows = readCsv(out / "results.csv");
   ASSERT_EQ(rows.size(), 9u);

@@ -19,12 +19,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Called as: program run SCENARIO --out DIR --quiet --no-video --set planner.name=B --set
-// sim.seed=S
+// Called as: program run SCENARIO --out DIR --quiet --no-video --no-images --set
+// planner.name=B --set sim.seed=S
 const char* kFakeCosim = R"(#!/bin/sh
 out=$4
-behaviour=${8#planner.name=}
-seed=${10#sim.seed=}
+behaviour=${9#planner.name=}
+seed=${11#sim.seed=}
 echo "$behaviour $seed" >> "$(dirname "$0")/calls.txt"
 case $behaviour in
   ok) printf '{\n  "reached_goal": true,\n  "status": 0,\n  "length_m": %s.5,\n  "counters": {"expansions": 7}\n}\n' "$seed" > "$out/metrics.json"; exit 0 ;;

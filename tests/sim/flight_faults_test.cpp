@@ -1,6 +1,7 @@
 // Faults in flight end the run with a reason instead of a log of nonsense: NaN controls (MuJoCo
 // would zero them, or reset the state, and carry on), and a mixer saturated for too long.
 #include <gtest/gtest.h>
+#include <mujoco/mujoco.h>
 
 #include <cmath>
 #include <limits>
@@ -70,9 +71,20 @@ TEST(FlightFaults, SaturationWithBreaksShorterThanTheLimitDoesNotEndTheRun) {
   EXPECT_NEAR(log.sim_time, 6.0, 0.01);
 }
 
+// MuJoCo's warnings come here instead of going to its default (stdout and MUJOCO_LOG.TXT in the
+// current folder).
+std::string g_mujoco_warning;
+extern "C" void recordWarning(const char* text) {
+  g_mujoco_warning = text;
+}
+
 TEST(FlightFaults, NanRotorCommandsEndTheRunAsUnstableInsteadOfFlyingOn) {
+  g_mujoco_warning.clear();
+  mju_user_warning = recordWarning;
   const RunLog log = fly(
       5.0, [](double) { return false; }, 1.0);
+  mju_user_warning = nullptr;
+  EXPECT_NE(g_mujoco_warning.find("CTRL"), std::string::npos) << g_mujoco_warning;
   EXPECT_EQ(log.end_reason, "unstable");
   EXPECT_GE(log.mujoco_warnings, 1);
   EXPECT_LT(log.sim_time, 1.01);
