@@ -67,9 +67,12 @@ void interruptDuringFlight(int signal_number, const std::string& name) {
   const fs::path dir = freshDir("interrupt-" + name);
   fs::create_directories(dir);
   const fs::path out = dir / "run", err = dir / "err";
-  // A long flight: the signal surely arrives while the vehicle is in the air.
+  // A long, slow flight (0.05 m/s for 600 s of simulated time, seconds of wall time): the signal
+  // surely arrives while the vehicle is in the air.
   const pid_t pid =
-      spawnCosim({"run", "--no-video", "--out", out.string(), "--set", "sim.max_time=600"}, err);
+      spawnCosim({"run", "--no-video", "--out", out.string(), "--set", "sim.max_time=600", "--set",
+                  "trajectory.max_speed=0.05"},
+                 err);
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(waitForText(err, "cosim: flying", std::chrono::seconds(120))) << slurp(err);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
