@@ -54,7 +54,9 @@ struct RunLog {
   double sim_time = 0.0;    // simulated seconds
   double wall_time = 0.0;   // wall-clock seconds of the simulation loop
   long physics_steps = 0;
-  std::string end_reason;   // "goal", "max_time", "interrupted", "diverged"
+  // "goal", "max_time", "interrupted", "diverged" (NaN or runaway state), "unstable" (MuJoCo
+  // bad-number warning), "saturated" (mixer saturated for more than 2 s on end)
+  std::string end_reason;
   int mujoco_warnings = 0;
 };
 
