@@ -2,27 +2,14 @@
 #include <gtest/gtest.h>
 
 #include "control/geometric_controller.h"
-#include "control/waypoint_reference.h"
-#include "sim/flight_simulation.h"
-#include "sim/world_model.h"
+#include "single_vehicle_scenario.h"
 
 using namespace cosim;
 
 namespace {
 
 Scenario hoverScenario(const DisturbanceSettings& d, double seconds) {
-  Scenario s;
-  s.file = "test";
-  s.world.bounds_min = {-10, -10, 0};
-  s.world.bounds_max = {10, 10, 10};
-  VehicleSpec v;
-  v.name = "uav1";
-  v.model = "quad_1500g";
-  v.model_file = modelsDirectory() / "quad_1500g.xml";
-  v.start = {0, 0, 3};
-  v.waypoints = {{0, 0, 3}};
-  s.vehicles.push_back(v);
-  s.sim.max_time = seconds;
+  Scenario s = test::singleVehicleScenario({0, 0, 3}, {0, 0, 3}, seconds);
   s.disturbances = d;
   return s;
 }
@@ -30,19 +17,11 @@ Scenario hoverScenario(const DisturbanceSettings& d, double seconds) {
 // Hovers at the start under the disturbances, with the integral action switched off so a
 // constant force shows up as a steady offset of known size.
 RunLog hover(const Scenario& s, double k_i = 0.0) {
-  const WorldModel world = WorldModel::build(s);
-  GeometricGains gains;
-  gains.k_i = k_i;
-  GeometricController controller(world.vehicles()[0].params, gains);
-  WaypointReference reference({s.vehicles[0].start}, 0.0);
-  std::vector<VehiclePilot> pilots(1);
-  pilots[0].controller = &controller;
-  pilots[0].reference = &reference;
-  pilots[0].goal = s.vehicles[0].goal();
-  FlightOptions options;
-  options.settings = s.sim;
-  options.hold_after_arrival = 1e9;
-  return simulateFlight(world, s, pilots, options);
+  return test::flyWholeTime(s, [k_i](const QuadrotorParams& q) {
+    GeometricGains gains;
+    gains.k_i = k_i;
+    return std::make_unique<GeometricController>(q, gains);
+  });
 }
 
 }  // namespace
@@ -76,8 +55,8 @@ TEST(Disturbances, GustsAreRandomButRepeatableUnderTheSameSeed) {
   const Eigen::Vector3d pa = hover(a).vehicles[0].samples.back().pos;
   const Eigen::Vector3d pb = hover(b).vehicles[0].samples.back().pos;
   const Eigen::Vector3d pc = hover(c).vehicles[0].samples.back().pos;
-  EXPECT_EQ(pa, pb);                  // same seed: bit-identical flight
-  EXPECT_GT((pa - pc).norm(), 1e-4);  // another seed: other gusts
+  EXPECT_EQ(pa, pb);                                        // same seed: bit-identical flight
+  EXPECT_GT((pa - pc).norm(), 1e-4);                        // another seed: other gusts
   EXPECT_GT((pa - Eigen::Vector3d(0, 0, 3)).norm(), 1e-3);  // and the gusts did push
 }
 

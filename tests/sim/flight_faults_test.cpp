@@ -40,19 +40,11 @@ class ScriptedController : public FlightController {
 };
 
 RunLog fly(double seconds, bool (*saturated)(double), double nan_after = 1e9) {
-  const Scenario s = test::singleVehicleScenario({0, 0, 2}, {0, 0, 2}, seconds);
-  const WorldModel world = WorldModel::build(s);
-  const QuadrotorParams& q = world.vehicles()[0].params;
-  ScriptedController controller(q.mass * q.gravity / 4.0, saturated, nan_after);
-  WaypointReference reference({s.vehicles[0].goal()}, 0.0);
-  std::vector<VehiclePilot> pilots(1);
-  pilots[0].controller = &controller;
-  pilots[0].reference = &reference;
-  pilots[0].goal = s.vehicles[0].goal();
-  FlightOptions options;
-  options.settings = s.sim;
-  options.hold_after_arrival = 1e9;  // only a fault or max_time ends the run
-  return simulateFlight(world, s, pilots, options);
+  // Only a fault or max_time ends the run.
+  return test::flyWholeTime(
+      test::singleVehicleScenario({0, 0, 2}, {0, 0, 2}, seconds), [&](const QuadrotorParams& q) {
+        return std::make_unique<ScriptedController>(q.mass * q.gravity / 4.0, saturated, nan_after);
+      });
 }
 
 }  // namespace
