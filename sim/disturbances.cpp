@@ -34,7 +34,7 @@ void Disturbances::apply(const mjModel*, mjData* d, double dt) {
       const double z = std::max(q[2] - floor_z_, 0.5 * R);
       const double gain = 1.0 / (1.0 - std::pow(R / (4.0 * z), 2)) - 1.0;
       double thrust = 0.0;
-      for (int i = 0; i < 4; ++i) thrust += d->act[v.actuators[i] - (world_.model()->nu - world_.model()->na)];
+      for (int i = 0; i < 4; ++i) thrust += actuatorActivation(world_.model(), d, v.actuators[i]);
       // Extra thrust along the body z axis (third column of the body rotation).
       const mjtNum* R_body = d->xmat + 9 * v.body;
       force += gain * thrust * Eigen::Vector3d(R_body[2], R_body[5], R_body[8]);

@@ -101,7 +101,7 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
     const double hover = v.params.mass * v.params.gravity / 4.0;
     for (int i = 0; i < 4; ++i) {
       d->ctrl[v.actuators[i]] = hover;
-      d->act[v.actuators[i] - (m->nu - m->na)] = hover;
+      actuatorActivation(m, d, v.actuators[i]) = hover;
     }
   }
   mj_forward(m, d);
@@ -161,10 +161,8 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
         x.att = s.attitude;
         x.omega = s.angular_velocity;
         x.rotor_cmd = out.rotor_thrusts;
-        // MuJoCo 2.2 keeps the activations of stateful actuators last, in actuator order: the
-        // actuator a's state is act[a - (nu - na)] (every rotor actuator has a filter state).
         for (int i = 0; i < 4; ++i)
-          x.rotor_thrust[i] = d->act[vehicles[v].actuators[i] - (m->nu - m->na)];
+          x.rotor_thrust[i] = actuatorActivation(m, d, vehicles[v].actuators[i]);
         x.saturated = out.saturated;
         if (!out.saturated) {
           saturated_since[v] = -1.0;

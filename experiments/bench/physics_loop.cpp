@@ -67,7 +67,7 @@ Section benchPhysicsLoop(bool quick) {
   const auto& samples = log.vehicles[0].samples;
   const int per_control = static_cast<int>(std::lround(1.0 / (s.sim.timestep * s.sim.control_rate)));
   const double hover = v.params.mass * v.params.gravity / 4.0;
-  for (int i = 0; i < 4; ++i) d->act[v.actuators[i] - (m->nu - m->na)] = hover;
+  for (int i = 0; i < 4; ++i) actuatorActivation(m, d, v.actuators[i]) = hover;
   const long steps = log.physics_steps;
   const auto t0 = std::chrono::steady_clock::now();
   for (long k = 0; k < steps; ++k) {
