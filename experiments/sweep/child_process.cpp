@@ -64,6 +64,13 @@ bool ChildProcess::finished(int& wait_status) {
   }
 }
 
+int ChildProcess::wait() {
+  int wait_status = 0;
+  while (::waitpid(pid_, &wait_status, 0) != pid_)
+    if (errno != EINTR) return -1;
+  return wait_status;
+}
+
 void ChildProcess::signal(int sig) const {
   if (pid_ > 0) ::kill(-pid_, sig);
 }

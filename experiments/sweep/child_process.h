@@ -21,6 +21,8 @@ class ChildProcess {
   pid_t pid() const { return pid_; }
   // Non-blocking: true once the child has ended; `wait_status` is waitpid's status.
   bool finished(int& wait_status);
+  // Blocks until the child exits; returns its wait status (-1 if it was reaped elsewhere).
+  int wait();
   // Sends `signal` to the child's process group.
   void signal(int signal) const;
 

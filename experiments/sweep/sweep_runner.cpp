@@ -59,11 +59,21 @@ RunningJob startJob(const SweepJob& job, const SweepRunOptions& o, std::size_t j
   std::filesystem::remove_all(r.dir, ec);
   std::filesystem::create_directories(r.dir, ec);
   if (ec) throw std::runtime_error("cannot create " + r.dir.string() + ": " + ec.message());
+  r.child =
+      ChildProcess::start(o.program, sweepJobArguments(job, r.dir, o.video), r.dir / "log.txt");
+  r.started = Clock::now();
+  return r;
+}
+
+}  // namespace
+
+std::vector<std::string> sweepJobArguments(const SweepJob& job, const std::filesystem::path& dir,
+                                           bool video) {
   std::vector<std::string> args = {"run", std::filesystem::absolute(job.scenario_path).string(),
-                                   "--out", r.dir.string(), "--quiet"};
+                                   "--out", dir.string(), "--quiet"};
   // Without video a sweep renders nothing at all: pictures of every job cost more CPU than short
   // flights do.
-  if (!o.video) {
+  if (!video) {
     args.push_back("--no-video");
     args.push_back("--no-images");
   }
@@ -71,12 +81,8 @@ RunningJob startJob(const SweepJob& job, const SweepRunOptions& o, std::size_t j
     args.push_back("--set");
     args.push_back(ov);
   }
-  r.child = ChildProcess::start(o.program, args, r.dir / "log.txt");
-  r.started = Clock::now();
-  return r;
+  return args;
 }
-
-}  // namespace
 
 std::filesystem::path sweepJobDir(const std::filesystem::path& out_dir, const SweepJob& job,
                                   std::size_t job_count) {
@@ -133,10 +139,12 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
     while (!stopping && static_cast<int>(running.size()) < parallel && next < pending.size())
       running.push_back(startJob(*pending[next++], o, jobs.size()));
 
+    bool reaped = false;
     for (std::size_t i = 0; i < running.size();) {
       RunningJob& r = running[i];
       int wait_status = 0;
       if (r.child.finished(wait_status)) {
+        reaped = true;
         const bool exited_by_itself =
             !r.stopped || (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0);
         if (r.stopped && !exited_by_itself) {
@@ -190,8 +198,10 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
       }
       ++i;
     }
-    if (!running.empty() || next < pending.size())
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    // A freed slot is filled at once; otherwise poll. Every millisecond a slot stands idle costs
+    // short jobs throughput (a 0.2 s job loses 2.5 % to a 5 ms gap).
+    if (!reaped && (!running.empty() || next < pending.size()))
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
   report.wall_time_s = secondsSince(t0);
   if (o.progress && !report.interrupted)

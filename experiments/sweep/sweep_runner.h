@@ -41,6 +41,9 @@ struct SweepRunReport {
 // The folder of a job.
 std::filesystem::path sweepJobDir(const std::filesystem::path& out_dir, const SweepJob& job,
                                   std::size_t job_count);
+// The `cosim run` arguments of one job writing into `dir` (without video: no pictures at all).
+std::vector<std::string> sweepJobArguments(const SweepJob& job, const std::filesystem::path& dir,
+                                           bool video);
 // True if the job's result.json exists and was made for this job (same fingerprint).
 bool sweepJobFinished(const std::filesystem::path& job_dir, const SweepJob& job);
 
