@@ -9,7 +9,9 @@ namespace cosim {
 class InputError : public std::runtime_error {
  public:
   // file: the file (or "command line"); place: a line/key such as "line 4, key planner.name";
-  // problem: what is wrong, in words a user can act on.
+  // problem: what is wrong, in words a user can act on. Any of them may quote the user's bytes:
+  // what() shows control characters escaped (see printableText), so the message stays one
+  // readable line; file(), place() and problem() keep them as given.
   InputError(std::string file, std::string place, std::string problem)
       : std::runtime_error(compose(file, place, problem)),
         file_(std::move(file)),
@@ -20,14 +22,19 @@ class InputError : public std::runtime_error {
   const std::string& place() const { return place_; }
   const std::string& problem() const { return problem_; }
 
+  // This error in `file` if it names none (errors raised where the file is not known, e.g. by
+  // a planner's grid, get the file of the command that fed the input); otherwise unchanged.
+  InputError inFile(const std::string& file) const;
+
  private:
   static std::string compose(const std::string& file, const std::string& place,
-                             const std::string& problem) {
-    std::string s = file.empty() ? std::string("input") : file;
-    if (!place.empty()) s += ": " + place;
-    return s + ": " + problem;
-  }
+                             const std::string& problem);
   std::string file_, place_, problem_;
 };
+
+// `text` with control characters (bytes 0-31 and 127: NUL, escape sequences, newlines) shown
+// as \xNN, so quoting a user's bytes in a message can neither cut it short (NUL), spread it
+// over several lines nor drive the terminal. Other bytes (UTF-8 file names) stay as they are.
+std::string printableText(const std::string& text);
 
 }  // namespace cosim

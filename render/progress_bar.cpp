@@ -22,8 +22,13 @@ void ProgressBar::update(int done) {
   std::fprintf(stderr, "\rcosim: %s [%s%s] %3d%% (%d/%d)", label_.c_str(),
                std::string(filled, '#').c_str(), std::string(kWidth - filled, '.').c_str(), percent,
                std::min(done, total_), total_);
-  if (done >= total_) std::fprintf(stderr, "\n");
+  line_open_ = done < total_;
+  if (!line_open_) std::fprintf(stderr, "\n");
   std::fflush(stderr);
+}
+
+ProgressBar::~ProgressBar() {
+  if (line_open_) std::fprintf(stderr, "\n");
 }
 
 }  // namespace cosim

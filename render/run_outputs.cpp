@@ -11,6 +11,12 @@
 
 namespace cosim {
 
+namespace {
+bool interrupted(const std::atomic<bool>* flag) {
+  return flag && flag->load();
+}
+}  // namespace
+
 int videoFrameCount(double duration, const RenderSettings& settings) {
   // The small tolerance keeps a flight of exactly k frame periods at k + 1 frames despite
   // rounding in the logged times.
@@ -19,13 +25,15 @@ int videoFrameCount(double duration, const RenderSettings& settings) {
 }
 
 int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
-                   const std::filesystem::path& out, VideoFormat format, bool progress) {
+                   const std::filesystem::path& out, VideoFormat format, bool progress,
+                   const std::atomic<bool>* interrupt) {
   const int frames = videoFrameCount(renderer.endTime(), settings);
   VideoEncoder video(out, renderer.width(), renderer.height(), settings.fps, format);
   ProgressBar bar("rendering " + out.filename().string(), frames, progress);
   const CameraKind kind = cameraKind(camera);
   std::vector<std::uint8_t> rgb;
   for (int k = 0; k < frames; ++k) {
+    if (interrupted(interrupt)) return 0;  // ~VideoEncoder kills ffmpeg, deletes the partial file
     renderer.render(k * settings.speedup / settings.fps, kind, rgb);
     video.addFrame(rgb);
     bar.update(k + 1);
@@ -53,27 +61,34 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
   };
   const RenderSettings& rs = scenario.render;
   RunRenderer renderer(world, scenario, log, rs.width, rs.height);
+  const auto stop = [&] { return done.interrupted = interrupted(request.interrupt); };
   if (request.images) {
+    if (stop()) return done;
     say("rendering final.png");
     std::vector<std::uint8_t> rgb;
     renderer.render(renderer.endTime(), CameraKind::Overview, rgb);
     writePng(dir / "final.png", rgb, renderer.width(), renderer.height());
     done.final_image = "final.png";
+    if (stop()) return done;
     say("plotting figures/");
     done.figures = writeRunFigures(log, scenario, dir / "figures");
   }
   if (request.video) {
     for (const std::string& camera : videoCameras(rs)) {
+      if (stop()) return done;
       const std::string file = videoFileName(rs, camera);
       say("rendering " + file + " (" + camera + " camera, " +
           std::to_string(videoFrameCount(renderer.endTime(), rs)) + " frames)");
-      renderRunVideo(renderer, rs, camera, dir / file, VideoFormat::Mp4, request.progress);
+      renderRunVideo(renderer, rs, camera, dir / file, VideoFormat::Mp4, request.progress,
+                     request.interrupt);
+      if (stop()) return done;
       done.videos.push_back(file);
       if (rs.png_frames)
         renderRunVideo(renderer, rs, camera, dir / ("frames_" + camera), VideoFormat::PngSequence,
-                       request.progress);
+                       request.progress, request.interrupt);
     }
   }
+  stop();
   return done;
 }
 

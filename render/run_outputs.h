@@ -2,6 +2,7 @@
 // Everything `cosim run` renders from a run's log into its folder: final.png, the videos (one
 // per camera of the scenario's render section, optionally also as PNG frames), the figures
 // (figures/*.png and .svg), and index.html showing them with the metrics.
+#include <atomic>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,8 +21,11 @@ int videoFrameCount(double duration, const RenderSettings& settings);
 
 // Renders the whole flight from one camera into `out` (an .mp4 or a PNG folder). Returns the
 // number of frames. progress: a progress bar on stderr (only if it is a terminal).
+// interrupt: polled before every frame; once it is set, ffmpeg is killed, nothing is written
+// (the partial output is deleted) and the result is 0 frames.
 int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
-                   const std::filesystem::path& out, VideoFormat format, bool progress);
+                   const std::filesystem::path& out, VideoFormat format, bool progress,
+                   const std::atomic<bool>* interrupt = nullptr);
 
 // The cameras of a run's videos, in order, without repeats: render.camera, then render.cameras.
 std::vector<std::string> videoCameras(const RenderSettings& settings);
@@ -32,6 +36,9 @@ struct RunRenderRequest {
   bool images = true;     // final.png and the figures
   bool video = true;      // the videos
   bool progress = false;  // progress lines and bars on stderr
+  // Polled between outputs and before every video frame (SIGINT/SIGTERM): once set, rendering
+  // stops, the video being written is deleted and the rest is skipped.
+  const std::atomic<bool>* interrupt = nullptr;
 };
 
 // Files written, relative to the run folder.
@@ -39,6 +46,7 @@ struct RenderedRun {
   std::string final_image;
   std::vector<std::string> videos;
   std::vector<std::string> figures;  // base names in figures/ (each as .png and .svg)
+  bool interrupted = false;          // stopped by the request's interrupt: outputs are missing
 };
 
 RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, const RunLog& log,

@@ -1,6 +1,5 @@
 #include "render/video_encoder.h"
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <stdexcept>
@@ -19,10 +18,26 @@ namespace {
 // frames, and memory stays bounded.
 constexpr std::size_t kQueuedFrames = 2;
 
-std::string rawInput(int width, int height, int fps) {
-  return "ffmpeg -nostdin -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgb24 -s " +
-         std::to_string(width) + "x" + std::to_string(height) + " -r " + std::to_string(fps) +
-         " -i - ";
+// ffmpeg's arguments for raw RGB frames on stdin, then `output` (codec, format, file).
+std::vector<std::string> ffmpegArguments(int width, int height, int fps,
+                                         const std::vector<std::string>& output) {
+  std::vector<std::string> args = {"-nostdin",
+                                   "-hide_banner",
+                                   "-loglevel",
+                                   "error",
+                                   "-y",
+                                   "-f",
+                                   "rawvideo",
+                                   "-pix_fmt",
+                                   "rgb24",
+                                   "-s",
+                                   std::to_string(width) + "x" + std::to_string(height),
+                                   "-r",
+                                   std::to_string(fps),
+                                   "-i",
+                                   "-"};
+  args.insert(args.end(), output.begin(), output.end());
+  return args;
 }
 
 std::filesystem::path temporaryName(const std::filesystem::path& path) {
@@ -33,13 +48,14 @@ std::filesystem::path temporaryName(const std::filesystem::path& path) {
   return path.parent_path() / name;
 }
 
-void closePipe(std::FILE* pipe, const std::filesystem::path& tmp, const std::string& what) {
-  const int status = pclose(pipe);
-  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::error_code ec;
-    std::filesystem::remove_all(tmp, ec);
-    throw std::runtime_error("ffmpeg failed while writing " + what);
-  }
+void removeOutput(const std::filesystem::path& p) {
+  std::error_code ec;
+  std::filesystem::remove_all(p, ec);
+}
+
+std::string ffmpegFailure(const FfmpegProcess& ffmpeg, const std::string& what) {
+  const std::string said = ffmpeg.errorOutput();
+  return "ffmpeg failed while writing " + what + (said.empty() ? "" : ": " + said);
 }
 
 }  // namespace
@@ -47,21 +63,24 @@ void closePipe(std::FILE* pipe, const std::filesystem::path& tmp, const std::str
 VideoEncoder::VideoEncoder(const std::filesystem::path& path, int width, int height, int fps,
                            VideoFormat format)
     : path_(path), tmp_(temporaryName(path)), width_(width), height_(height), format_(format) {
-  std::string cmd = rawInput(width, height, fps);
+  std::vector<std::string> output;
   if (format == VideoFormat::Mp4) {
     // yuv420p and +faststart: plays in browsers. -preset superfast: ffmpeg shares the two
     // cores with software rendering; against veryfast it raised the pipeline from 65 % to 79 %
     // of the bare render rate (cosim bench --section render_pipeline) at a somewhat larger file.
-    cmd += "-c:v libx264 -preset superfast -crf 20 -pix_fmt yuv420p -movflags +faststart -f mp4 " +
-           shellQuote(tmp_.string());
+    output = {"-c:v",    "libx264",   "-preset",    "superfast", "-crf", "20",         "-pix_fmt",
+              "yuv420p", "-movflags", "+faststart", "-f",        "mp4",  tmp_.string()};
   } else {
-    std::error_code ec;
-    std::filesystem::remove_all(tmp_, ec);
+    removeOutput(tmp_);
     std::filesystem::create_directories(tmp_);
-    cmd += "-c:v png -f image2 -start_number 1 " + shellQuote((tmp_ / "%05d.png").string());
+    output = {"-c:v", "png", "-f", "image2", "-start_number", "1", (tmp_ / "%05d.png").string()};
   }
-  pipe_ = popen(cmd.c_str(), "w");
-  if (!pipe_) throw std::runtime_error("cannot start ffmpeg (is it installed?)");
+  try {
+    ffmpeg_ = std::make_unique<FfmpegProcess>(ffmpegArguments(width, height, fps, output));
+  } catch (...) {
+    removeOutput(tmp_);
+    throw;
+  }
   writer_ = std::thread([this] { writerLoop(); });
 }
 
@@ -72,11 +91,11 @@ void VideoEncoder::writerLoop() {
     {
       std::unique_lock<std::mutex> lock(mutex_);
       changed_.wait(lock, [this] { return !queue_.empty() || closing_; });
-      if (queue_.empty()) return;  // closing and drained
+      if (queue_.empty() || dropping_ || write_failed_) return;  // closing and drained, or given up
       frame = std::move(queue_.front());
       queue_.pop_front();
     }
-    const bool ok = std::fwrite(frame.data(), 1, n, pipe_) == n;
+    const bool ok = ffmpeg_->write(frame.data(), n);
     {
       std::lock_guard<std::mutex> lock(mutex_);
       spare_.push_back(std::move(frame));
@@ -86,23 +105,32 @@ void VideoEncoder::writerLoop() {
   }
 }
 
-void VideoEncoder::stopWriter() {
+void VideoEncoder::stopWriter(bool drop_queued) {
   if (!writer_.joinable()) return;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     closing_ = true;
+    dropping_ = drop_queued;
   }
   changed_.notify_all();
+  // A frame the writer is handing over may be blocked on a full pipe: killing ffmpeg makes that
+  // write fail at once instead of waiting for ffmpeg to encode what is queued.
+  if (drop_queued) ffmpeg_->kill();
   writer_.join();
 }
 
 VideoEncoder::~VideoEncoder() {
-  stopWriter();
-  if (pipe_) {
-    pclose(pipe_);
-    std::error_code ec;
-    std::filesystem::remove_all(tmp_, ec);
-  }
+  if (!ffmpeg_) return;  // finished (or failed and cleaned up)
+  stopWriter(/*drop_queued=*/true);
+  ffmpeg_.reset();  // reaps the killed ffmpeg
+  removeOutput(tmp_);
+}
+
+void VideoEncoder::fail(const std::string& what) {
+  stopWriter(/*drop_queued=*/true);
+  ffmpeg_.reset();
+  removeOutput(tmp_);
+  throw std::runtime_error(what);
 }
 
 void VideoEncoder::addFrame(std::vector<std::uint8_t>& rgb) {
@@ -110,8 +138,13 @@ void VideoEncoder::addFrame(std::vector<std::uint8_t>& rgb) {
   if (rgb.size() != n) throw std::runtime_error("frame size does not match the video");
   std::unique_lock<std::mutex> lock(mutex_);
   changed_.wait(lock, [this] { return queue_.size() < kQueuedFrames || write_failed_; });
-  if (write_failed_)
-    throw std::runtime_error("ffmpeg stopped accepting frames for " + path_.string());
+  if (write_failed_) {
+    lock.unlock();
+    // ffmpeg has exited: reap it to say why.
+    ffmpeg_->kill();
+    ffmpeg_->finish();
+    fail(ffmpegFailure(*ffmpeg_, path_.string()) + " (it stopped accepting frames)");
+  }
   queue_.push_back(std::move(rgb));
   if (!spare_.empty()) {
     rgb = std::move(spare_.front());
@@ -124,35 +157,32 @@ void VideoEncoder::addFrame(std::vector<std::uint8_t>& rgb) {
 }
 
 void VideoEncoder::finish() {
-  stopWriter();
-  std::FILE* p = pipe_;
-  pipe_ = nullptr;
-  closePipe(p, tmp_, path_.string());
-  if (write_failed_) {
-    std::error_code ec;
-    std::filesystem::remove_all(tmp_, ec);
-    throw std::runtime_error("ffmpeg stopped accepting frames for " + path_.string());
+  stopWriter(/*drop_queued=*/false);
+  const bool exited_cleanly = ffmpeg_->finish();
+  if (write_failed_ || !exited_cleanly) fail(ffmpegFailure(*ffmpeg_, path_.string()));
+  ffmpeg_.reset();
+  if (format_ == VideoFormat::PngSequence)
+    removeOutput(path_);  // a folder cannot be renamed over a non-empty one
+  std::error_code ec;
+  std::filesystem::rename(tmp_, path_, ec);
+  if (ec) {
+    removeOutput(tmp_);
+    throw std::runtime_error("cannot move the video into place at " + path_.string() + ": " +
+                             ec.message());
   }
-  if (format_ == VideoFormat::PngSequence) {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);  // a folder cannot be renamed over a non-empty one
-  }
-  std::filesystem::rename(tmp_, path_);
 }
 
 void writePng(const std::filesystem::path& path, const std::vector<std::uint8_t>& rgb, int width,
               int height) {
   const std::filesystem::path tmp = temporaryName(path);
-  const std::string cmd =
-      rawInput(width, height, 1) + "-frames:v 1 -c:v png -f image2 " + shellQuote(tmp.string());
-  std::FILE* pipe = popen(cmd.c_str(), "w");
-  if (!pipe) throw std::runtime_error("cannot start ffmpeg (is it installed?)");
   const std::size_t n = static_cast<std::size_t>(width) * height * 3;
-  const bool ok = rgb.size() == n && std::fwrite(rgb.data(), 1, n, pipe) == n;
-  closePipe(pipe, tmp, path.string());
-  if (!ok) {
-    std::filesystem::remove(tmp);
-    throw std::runtime_error("cannot write " + path.string());
+  if (rgb.size() != n) throw std::runtime_error("image size does not match for " + path.string());
+  FfmpegProcess ffmpeg(ffmpegArguments(
+      width, height, 1, {"-frames:v", "1", "-c:v", "png", "-f", "image2", tmp.string()}));
+  const bool written = ffmpeg.write(rgb.data(), n);
+  if (!ffmpeg.finish() || !written) {
+    removeOutput(tmp);
+    throw std::runtime_error(ffmpegFailure(ffmpeg, path.string()));
   }
   std::filesystem::rename(tmp, path);
 }

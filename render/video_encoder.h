@@ -1,17 +1,20 @@
 #pragma once
 // H.264 MP4 (yuv420p, playable in browsers), a PNG frame sequence, or a single PNG, through
-// the ffmpeg program: frames go down a pipe as raw RGB. Writing to the pipe happens on a
-// separate thread, so the caller renders the next frame while this one is handed over and
-// ffmpeg (another process) encodes. Outputs appear under their final name only once complete.
+// the ffmpeg program (render/ffmpeg_process.h): frames go down a pipe as raw RGB. Writing to the
+// pipe happens on a separate thread, so the caller renders the next frame while this one is
+// handed over and ffmpeg (another process) encodes. Outputs appear under their final name only
+// once complete; an abandoned one (an exception, an interrupt) is deleted.
 #include <condition_variable>
 #include <cstdint>
-#include <cstdio>
 #include <deque>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
+
+#include "render/ffmpeg_process.h"
 
 namespace cosim {
 
@@ -25,7 +28,8 @@ class VideoEncoder {
   // Starts ffmpeg; throws std::runtime_error if it cannot.
   VideoEncoder(const std::filesystem::path& path, int width, int height, int fps,
                VideoFormat format = VideoFormat::Mp4);
-  // Abandons an unfinished video: the partial output is removed.
+  // Abandons an unfinished video at once: queued frames are dropped, ffmpeg is killed and the
+  // partial output removed.
   ~VideoEncoder();
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
@@ -39,18 +43,19 @@ class VideoEncoder {
 
  private:
   void writerLoop();
-  void stopWriter();
+  void stopWriter(bool drop_queued);
+  [[noreturn]] void fail(const std::string& what);
 
   std::filesystem::path path_, tmp_;
   int width_, height_;
   VideoFormat format_;
-  std::FILE* pipe_ = nullptr;
+  std::unique_ptr<FfmpegProcess> ffmpeg_;  // null once finished
   int frames_ = 0;
   // Frames waiting for the writer thread, and spare buffers to swap in.
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::vector<std::uint8_t>> queue_, spare_;
-  bool closing_ = false, write_failed_ = false;
+  bool closing_ = false, dropping_ = false, write_failed_ = false;
   std::thread writer_;
 };
 

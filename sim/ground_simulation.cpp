@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <set>
+#include <stdexcept>
 
+#include "sim/contact_monitor.h"
 #include "sim/ground_vehicle_handles.h"
 #include "sim/moving_obstacle_motion.h"
+#include "sim/simulation_health.h"
 
 namespace cosim {
 
@@ -51,51 +53,33 @@ void actuate(mjData* d, const VehicleHandles& v, const PlanarState& s, const Gro
   }
 }
 
-// Contact onsets between a robot and anything but the floor and itself; a contact lasting many
-// steps is one event. Pairs (vehicle, other geom) in contact are kept between steps.
-class GroundContactBook {
- public:
-  GroundContactBook(const mjModel* m, const WorldModel& world)
-      : m_(m), floor_(world.floorGeom()), owner_(m->ngeom, -1) {
-    for (std::size_t v = 0; v < world.vehicles().size(); ++v)
-      for (int g : world.vehicles()[v].geoms) owner_[g] = static_cast<int>(v);
-  }
-  void update(const mjData* d, RunLog& log) {
-    if (d->ncon == 0 && touching_.empty()) return;
-    std::set<std::pair<int, int>> now;
-    for (int i = 0; i < d->ncon; ++i) {
-      const mjContact& c = d->contact[i];
-      for (const auto& [mine, other] : {std::pair{c.geom1, c.geom2}, std::pair{c.geom2, c.geom1}}) {
-        const int v = owner_[mine];
-        if (v < 0 || other == floor_ || owner_[other] == v) continue;
-        if (now.insert({v, other}).second && !touching_.count({v, other})) {
-          const char* name = mj_id2name(m_, mjOBJ_GEOM, other);
-          log.vehicles[v].collisions.push_back({d->time,
-                                                name ? name : "geom" + std::to_string(other),
-                                                Eigen::Vector3d(c.pos[0], c.pos[1], c.pos[2])});
-        }
-      }
-    }
-    touching_.swap(now);
-  }
-
- private:
-  const mjModel* m_;
-  int floor_;
-  std::vector<int> owner_;
-  std::set<std::pair<int, int>> touching_;
-};
-
 }  // namespace
 
 RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
                       std::vector<GroundPilot>& pilots, const GroundSimOptions& options) {
+  std::vector<VehiclePilot> none;
+  return simulateGround(world, scenario, pilots, none, options);
+}
+
+RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
+                      std::vector<GroundPilot>& robots, std::vector<VehiclePilot>& quadrotors,
+                      const GroundSimOptions& options) {
   const mjModel* m = world.model();
+  const auto& vehicles = world.vehicles();
+  // Which pilot drives vehicle v: robots[pilot[v]] or quadrotors[pilot[v]].
+  std::vector<std::size_t> pilot(vehicles.size());
+  std::size_t robot_count = 0, quadrotor_count = 0;
+  for (std::size_t v = 0; v < vehicles.size(); ++v)
+    pilot[v] = vehicles[v].ground ? robot_count++ : quadrotor_count++;
+  if (robot_count != robots.size() || quadrotor_count != quadrotors.size())
+    throw std::invalid_argument("simulateGround: one pilot per ground robot and per quadrotor");
+
   mjData* d = mj_makeData(m);
   mj_resetData(m, d);
-  const auto& vehicles = world.vehicles();
-  for (const auto& v : vehicles)
+  for (const auto& v : vehicles) {
     if (v.drive.planar_root) setPlanarPose(d, v, v.drive.planar_origin, v.drive.start_yaw);
+    if (!v.ground) startHovering(m, d, v);
+  }
   const SimSettings& cfg = options.settings;
   const int steps_per_control =
       std::max(1, static_cast<int>(std::lround(1.0 / (cfg.timestep * cfg.control_rate))));
@@ -129,16 +113,26 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
   placeObstacles(0.0);
   mj_forward(m, d);
 
+  const AerialStepRules rules(cfg, scenario.world, options.aerial_hold_after_arrival,
+                              options.max_saturated_time);
+  std::vector<AerialPilotStep> flights;
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
+    if (!vehicles[v].ground) {
+      AerialPilotStep& f = flights.emplace_back(vehicles[v], quadrotors[pilot[v]], rules);
+      log.vehicles.push_back(
+          f.begin(static_cast<std::size_t>(cfg.max_time / (controls_per_log * control_dt)) + 2));
+      continue;
+    }
+    const GroundPilot& p = robots[pilot[v]];
     VehicleLog& vl = log.vehicles.emplace_back();
     vl.name = vehicles[v].name;
     vl.radius = vehicles[v].params.radius;
-    vl.goal = pilots[v].goal;
-    vl.planned_path = pilots[v].planned_path;
-    pilots[v].controller->reset();
+    vl.goal = p.goal;
+    vl.planned_path = p.planned_path;
+    p.controller->reset();
   }
-  GroundContactBook contacts(m, world);
-  std::vector<PlanarState> states(vehicles.size());
+  ContactMonitor contacts(m, world, scenario);
+  std::vector<PlanarState> states(robots.size());
 
   const auto wall_start = std::chrono::steady_clock::now();
   long step = 0, control_count = 0;
@@ -149,26 +143,35 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
         log.end_reason = "interrupted";
         break;
       }
-      for (std::size_t v = 0; v < vehicles.size(); ++v) states[v] = readPlanarState(d, vehicles[v]);
+      for (std::size_t v = 0; v < vehicles.size(); ++v)
+        if (vehicles[v].ground) states[pilot[v]] = readPlanarState(d, vehicles[v]);
       if (options.before_control && !options.before_control(d->time, states)) {
         log.end_reason = "gave_up";
         break;
       }
       const bool record = control_count++ % controls_per_log == 0;
-      bool all_done = true, diverged = false;
+      bool all_done = true, diverged = false, saturated = false;
       for (std::size_t v = 0; v < vehicles.size(); ++v) {
-        const PlanarState& s = states[v];
-        PlanarReference ref = pilots[v].path->sample(d->time);
-        ref.yaw = pilots[v].yaw;
-        const GroundCommand cmd = pilots[v].controller->update(s, ref, control_dt);
+        VehicleLog& vl = log.vehicles[v];
+        if (!vehicles[v].ground) {
+          const AerialPilotStep::Outcome o = flights[pilot[v]].step(m, d, control_dt, vl, record);
+          all_done = all_done && o.done;
+          diverged = diverged || o.diverged;
+          saturated = saturated || o.saturated;
+          continue;
+        }
+        GroundPilot& gp = robots[pilot[v]];
+        const PlanarState& s = states[pilot[v]];
+        PlanarReference ref = gp.path->sample(d->time);
+        ref.yaw = gp.yaw;
+        const GroundCommand cmd = gp.controller->update(s, ref, control_dt);
         actuate(d, vehicles[v], s, cmd);
 
-        VehicleLog& vl = log.vehicles[v];
         // Height: the free base's z; a planar base rides at its fixed height (logged as 0).
         const double z = vehicles[v].drive.planar_root ? 0.0 : d->qpos[vehicles[v].qpos_adr + 2];
         const Eigen::Vector3d pos(s.position.x(), s.position.y(), z);
         if (!vl.reached_goal && ref.final &&
-            (pos - pilots[v].goal).head<2>().norm() < cfg.goal_tolerance) {
+            (pos - gp.goal).head<2>().norm() < cfg.goal_tolerance) {
           vl.reached_goal = true;
           vl.arrival_time = d->time;
         }
@@ -197,8 +200,8 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
           log.moving_obstacles[i].t.push_back(d->time);
           log.moving_obstacles[i].pos.push_back({p.x(), p.y(), 0.0});
         }
-      if (diverged) {
-        log.end_reason = "diverged";
+      if (diverged || saturated) {
+        log.end_reason = diverged ? "diverged" : "saturated";
         break;
       }
       if (all_done) {
@@ -209,6 +212,11 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
     placeObstacles(d->time);
     mj_step(m, d);
     contacts.update(d, log);
+    if (const char* fault = physicsFault(m, d)) {
+      log.end_reason = fault;
+      ++step;
+      break;
+    }
   }
   log.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();

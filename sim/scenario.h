@@ -6,21 +6,22 @@
 #include <string>
 #include <vector>
 
+#include "planning/grid/occupancy_grid.h"
 #include "planning/param_set.h"
-#include "sim/disturbance_settings.h"
 #include "planning/world/world.h"
+#include "sim/disturbance_settings.h"
 
 namespace cosim {
 
 struct VehicleSpec {
-  std::string name;        // unique; prefixes every MuJoCo name of the vehicle ("uav1/base")
-  std::string model;       // a model name from models/ (cf2, quad_1500g, ...) or a URDF path
+  std::string name;   // unique; prefixes every MuJoCo name of the vehicle ("uav1/base")
+  std::string model;  // a model name from models/ (cf2, quad_1500g, ...) or a URDF path
   std::filesystem::path model_file;  // resolved
-  bool ground = false;     // a ground robot (URDF): plans in the plane, z = 0
+  bool ground = false;               // a ground robot (URDF): plans in the plane, z = 0
   Eigen::Vector3d start = Eigen::Vector3d::Zero();
   // Points to visit after the start; the last one is the goal.
   std::vector<Eigen::Vector3d> waypoints;
-  double yaw_deg = 0.0;    // initial and reference heading
+  double yaw_deg = 0.0;  // initial and reference heading
   const Eigen::Vector3d& goal() const { return waypoints.back(); }
 };
 
@@ -28,19 +29,33 @@ struct VehicleSpec {
 // along `path` (x, y in metres) at `speed` (m/s), back and forth (or round in a loop). In MuJoCo
 // it is a mocap body driven every step; planners do not see it, navigators sense it.
 struct MovingObstacleSpec {
-  ObstacleType type = ObstacleType::Cylinder;  // Cylinder or Box
-  double radius = 0.0;                          // cylinder, m
-  double height = 1.0;                          // m
+  ObstacleType type = ObstacleType::Cylinder;      // Cylinder or Box
+  double radius = 0.0;                             // cylinder, m
+  double height = 1.0;                             // m
   Eigen::Vector3d size = Eigen::Vector3d::Zero();  // box: full edge lengths, m
-  std::vector<Eigen::Vector2d> path;            // at least one point; one = standing still
-  double speed = 0.0;                           // m/s
-  bool loop = false;                            // false: back and forth; true: last -> first
+  std::vector<Eigen::Vector2d> path;               // at least one point; one = standing still
+  double speed = 0.0;                              // m/s
+  bool loop = false;                               // false: back and forth; true: last -> first
+};
+
+// world.grid_map (seed 004's grid worlds): a MovingAI .map is the floor plan. Its blocked cells
+// (plus `blocked`, cells the user adds) stand as boxes of `height` (planning/worlds/
+// grid_map_world.h), the world spans the map from z = 0 to `ceiling`, and a team plan uses these
+// very cells (cell (x, y), x = column, y = row, is [x c, (x+1) c) x [y c, (y+1) c)) instead of a
+// grid voxelised from the boxes, which would block every free cell beside a block.
+struct GridMapSpec {
+  std::filesystem::path file;  // empty: the world has no grid map
+  double cell = 0.5;           // m per cell
+  double height = 0.5;         // m
+  double ceiling = 3.0;        // m
+  OccupancyGrid grid;          // the map (with the user's cells), cell size `cell`, origin 0
+  bool present() const { return !file.empty(); }
 };
 
 struct SimSettings {
-  double timestep = 0.001;     // s, physics step
-  double control_rate = 500;   // Hz, controller rate; the physics rate must be a multiple
-  double max_time = 120.0;     // s of simulated time before giving up
+  double timestep = 0.001;    // s, physics step
+  double control_rate = 500;  // Hz, controller rate; the physics rate must be a multiple
+  double max_time = 120.0;    // s of simulated time before giving up
   std::uint64_t seed = 1;
   double goal_tolerance = 0.2;  // m: the goal is reached within this distance (seed 003: 0.2 m)
 };
@@ -48,35 +63,51 @@ struct SimSettings {
 // Camera names: chase (follows the first vehicle), orbit (circles the world), top (straight
 // down, nearly orthographic), overview (the whole world at an angle), fixed (fixed_pos/lookat).
 struct RenderSettings {
-  std::string camera = "chase";         // the main video, video.mp4
-  std::vector<std::string> cameras;     // more videos, one per camera: video_<camera>.mp4
+  std::string camera = "chase";      // the main video, video.mp4
+  std::vector<std::string> cameras;  // more videos, one per camera: video_<camera>.mp4
   int width = 1280, height = 720, fps = 30;
-  double speedup = 1.0;                 // simulated seconds per second of video
-  bool has_fixed_camera = false;        // render.fixed_camera: {pos: [x,y,z], lookat: [x,y,z]}
+  double speedup = 1.0;           // simulated seconds per second of video
+  bool has_fixed_camera = false;  // render.fixed_camera: {pos: [x,y,z], lookat: [x,y,z]}
   Eigen::Vector3d fixed_pos = Eigen::Vector3d::Zero();
   Eigen::Vector3d fixed_lookat = Eigen::Vector3d::Zero();
-  double obstacle_alpha = 1.0;          // below 1: obstacles are see-through
-  bool png_frames = false;              // also write each video as frames_<camera>/NNNNN.png
+  double obstacle_alpha = 1.0;  // below 1: obstacles are see-through
+  bool png_frames = false;      // also write each video as frames_<camera>/NNNNN.png
+};
+
+// The quadrotors' planner, trajectory and controller in a scenario that also has ground robots
+// (the `aerial` section; the top-level sections then drive the robots). Same keys and meaning as
+// the top-level planner, trajectory and controller sections.
+struct AerialSections {
+  std::string planner_name;  // empty: fly the given waypoints
+  ParamSet planner_params;
+  double planner_margin = 0.3;
+  std::string trajectory_mode = "waypoints";
+  ParamSet trajectory_params;
+  std::string controller_name = "cascade";
+  ParamSet controller_gains;
 };
 
 struct Scenario {
-  std::string file;                 // as given, for messages
-  std::string effective_yaml;       // the document after --set overrides (saved with each run)
+  std::string file;            // as given, for messages
+  std::string effective_yaml;  // the document after --set overrides (saved with each run)
   World world;
+  GridMapSpec grid_map;                // world.grid_map; then world.bounds/obstacles come from it
   std::filesystem::path include_file;  // optional MJCF fragment with more geometry
   std::vector<MovingObstacleSpec> moving_obstacles;  // world.moving_obstacles
   std::vector<VehicleSpec> vehicles;
 
   // Planner: empty name = fly the vehicle's waypoints as given.
   std::string planner_name;
-  ParamSet planner_params;          // everything under planner: except name and margin
-  double planner_margin = 0.3;      // m, safety margin added to the vehicle radius
+  ParamSet planner_params;      // everything under planner: except name and margin
+  double planner_margin = 0.3;  // m, safety margin added to the vehicle radius
 
   std::string trajectory_mode = "waypoints";  // waypoints | minimum_snap
-  ParamSet trajectory_params;       // max_speed, switch_radius, ...
+  ParamSet trajectory_params;                 // max_speed, switch_radius, ...
 
-  std::string controller_name = "cascade";    // cascade | geometric
+  std::string controller_name = "cascade";  // cascade | geometric
   ParamSet controller_gains;
+
+  AerialSections aerial;  // for the quadrotors when there are ground robots too
 
   SimSettings sim;
   DisturbanceSettings disturbances;

@@ -1,8 +1,11 @@
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 
+#include "planning/grid/movingai.h"
 #include "planning/input_error.h"
+#include "planning/worlds/grid_map_world.h"
 #include "sim/scenario.h"
 #include "sim/yaml_reader.h"
 
@@ -18,8 +21,7 @@ constexpr std::size_t kMaxWaypoints = 100000;
 // anything is allocated.
 constexpr double kMaxLogSamples = 2e7;
 
-void readObstacle(const YamlReader& r, const YAML::Node& n, const std::string& key,
-                  Obstacle& o) {
+void readObstacle(const YamlReader& r, const YAML::Node& n, const std::string& key, Obstacle& o) {
   r.requireMap(n, key);
   if (!n["type"]) r.fail(n, key, "obstacle needs a 'type' (box, cylinder or sphere)");
   const std::string type = r.text(n["type"], key + ".type");
@@ -41,34 +43,118 @@ void readObstacle(const YamlReader& r, const YAML::Node& n, const std::string& k
     if (!n["radius"]) r.fail(n, key, "sphere needs 'radius'");
     o.radius = r.number(n["radius"], key + ".radius", 1e-6, kMaxWorldExtent);
   } else {
-    r.fail(n["type"], key + ".type", "unknown obstacle type '" + type + "' (box, cylinder, sphere)");
+    r.fail(n["type"], key + ".type",
+           "unknown obstacle type '" + type + "' (box, cylinder, sphere)");
   }
   if (!n["pos"]) r.fail(n, key, "obstacle needs 'pos: [x, y, z]' (its centre)");
   o.pos = r.vec3(n["pos"], key + ".pos");
   if (n["yaw"]) o.yaw_deg = r.number(n["yaw"], key + ".yaw", -3600, 3600);
 }
 
+// world.grid_map: {file: MAP.map, cell: 0.5, height: 0.5, ceiling: 3, blocked: [[x, y], ...]}
+void readGridMap(const YamlReader& r, const YAML::Node& n, const std::filesystem::path& dir,
+                 Scenario& s) {
+  const std::string key = "world.grid_map";
+  r.requireMap(n, key);
+  r.checkKeys(n, key, {"file", "cell", "height", "ceiling", "blocked"});
+  if (!n["file"]) r.fail(n, key, "missing 'file' (a MovingAI .map)");
+  GridMapSpec& g = s.grid_map;
+  const std::string file = r.text(n["file"], key + ".file");
+  g.file = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : dir / file;
+  if (!std::filesystem::exists(g.file))
+    r.fail(n["file"], key + ".file", "file not found: " + g.file.string());
+  if (n["cell"]) g.cell = r.number(n["cell"], key + ".cell", 0.01, 100.0);
+  if (n["height"]) g.height = r.number(n["height"], key + ".height", 0.01, 100.0);
+  if (n["ceiling"]) g.ceiling = r.number(n["ceiling"], key + ".ceiling", 0.02, 1000.0);
+  if (g.ceiling <= g.height) r.fail(n, key, "ceiling must be above the blocks' height");
+  const OccupancyGrid map = readMovingAIMap(g.file.string());
+  if (map.nx() * g.cell > kMaxWorldExtent || map.ny() * g.cell > kMaxWorldExtent)
+    r.fail(n, key, "the world is larger than 10 km on an axis");
+  g.grid = OccupancyGrid(map.nx(), map.ny(), 1, g.cell);
+  for (int y = 0; y < map.ny(); ++y)
+    for (int x = 0; x < map.nx(); ++x) g.grid.setBlocked(x, y, 0, map.blocked(x, y));
+  if (n["blocked"]) {
+    const YAML::Node b = n["blocked"];
+    if (!b.IsSequence()) r.fail(b, key + ".blocked", "must be a list of [x, y] cells");
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      const std::string k = key + ".blocked[" + std::to_string(i) + "]";
+      if (!b[i].IsSequence() || b[i].size() != 2) r.fail(b[i], k, "expected [x, y] (column, row)");
+      const long x = r.integer(b[i][0], k, 0, map.nx() - 1);
+      const long y = r.integer(b[i][1], k, 0, map.ny() - 1);
+      g.grid.setBlocked(static_cast<int>(x), static_cast<int>(y), 0, true);
+    }
+  }
+  s.world = worldFromGridMap(g.grid, g.height, g.ceiling);
+}
+
+// Values given with --set come from the command line, not from a line of the file (YAML
+// parses each one as a document of its own, so its nodes say "line 1"): their errors are placed
+// at the assignment, "--set planner.resolution=fast, key planner.resolution". The key stays in
+// the place, where sweeps look for it.
+bool keyIsUnder(const std::string& key, const std::string& path) {
+  return key.compare(0, path.size(), path) == 0 &&
+         (key.size() == path.size() || key[path.size()] == '.' || key[path.size()] == '[');
+}
+
+// The --set assignment behind `key`: the last one naming the key or a mapping above it (it
+// replaced everything below), or, if the key has no line in the file (`created`), the one whose
+// path made it. Empty if the file gave the key.
+std::string overrideBehind(const std::vector<std::string>& overrides, const std::string& key,
+                           bool created) {
+  for (auto o = overrides.rbegin(); o != overrides.rend(); ++o) {
+    const std::string path = o->substr(0, o->find('='));
+    if (keyIsUnder(key, path) || (created && keyIsUnder(path, key))) return *o;
+  }
+  return "";
+}
+
+std::string overridePlace(const std::string& assignment, const std::string& key) {
+  return "--set " + assignment + ", key " + key;
+}
+
+// `e` placed at the --set assignment behind its key, if there is one. YamlReader's places are
+// "line N, key K", or "key K" for a node an assignment created (it has no position).
+InputError placedAtOverride(const InputError& e, const std::string& file,
+                            const std::vector<std::string>& overrides) {
+  const std::string& place = e.place();
+  if (e.file() != file || overrides.empty()) return e;
+  std::size_t key_at = std::string::npos;
+  const bool positioned = place.rfind("line ", 0) == 0;
+  if (positioned && place.find(", key ") != std::string::npos)
+    key_at = place.find(", key ") + 6;
+  else if (place.rfind("key ", 0) == 0)
+    key_at = 4;
+  if (key_at == std::string::npos) return e;
+  const std::string key = place.substr(key_at);
+  const std::string assignment = overrideBehind(overrides, key, !positioned);
+  return assignment.empty() ? e : InputError(file, overridePlace(assignment, key), e.problem());
+}
+
 // Fills a ParamSet with the scalar entries of a mapping, skipping `skip` keys.
 void readParams(const YamlReader& r, const YAML::Node& n, const std::string& key,
-                const std::vector<std::string>& skip, ParamSet& out) {
+                const std::vector<std::string>& skip, const std::vector<std::string>& overrides,
+                ParamSet& out) {
   r.requireMap(n, key);
   for (const auto& kv : n) {
     const std::string name = kv.first.Scalar();
     bool skipped = false;
     for (const auto& s : skip) skipped = skipped || s == name;
     if (skipped) continue;
-    out.set(name, r.scalar(kv.second, key + "." + name), r.place(kv.second, key + "." + name));
+    const std::string k = key + "." + name;
+    const std::string assignment = overrideBehind(overrides, k, false);
+    out.set(name, r.scalar(kv.second, k),
+            assignment.empty() ? r.place(kv.second, k) : overridePlace(assignment, k));
   }
 }
 
 void checkPointPlacement(const YamlReader& r, const YAML::Node& n, const std::string& key,
                          const Scenario& s, const Eigen::Vector3d& p) {
-  if (!s.world.insideBounds(p))
-    r.fail(n, key, "point is outside the world bounds");
+  if (!s.world.insideBounds(p)) r.fail(n, key, "point is outside the world bounds");
   for (std::size_t i = 0; i < s.world.obstacles.size(); ++i)
     if (s.world.obstacles[i].signedDistance(p) <= 0.0)
-      r.fail(n, key, "point is inside obstacle " + std::to_string(i + 1) + " (world.obstacles[" +
-                         std::to_string(i) + "])");
+      r.fail(n, key,
+             "point is inside obstacle " + std::to_string(i + 1) + " (world.obstacles[" +
+                 std::to_string(i) + "])");
 }
 
 // world.moving_obstacles[i]: {type: cylinder, radius, height, path: [[x, y], ...], speed, loop}
@@ -102,12 +188,15 @@ void readMovingObstacle(const YamlReader& r, const YAML::Node& n, const std::str
     const YAML::Node p = n["path"][i];
     const std::string k = key + ".path[" + std::to_string(i) + "]";
     if (!p.IsSequence() || p.size() != 2) r.fail(p, k, "must be [x, y]");
-    const Eigen::Vector2d xy(r.number(p[0], k + "[0]", -1e9, 1e9), r.number(p[1], k + "[1]", -1e9, 1e9));
-    checkPointPlacement(r, p, k, s, Eigen::Vector3d(xy.x(), xy.y(), s.world.bounds_min.z() + 0.5 * o.height));
+    const Eigen::Vector2d xy(r.number(p[0], k + "[0]", -1e9, 1e9),
+                             r.number(p[1], k + "[1]", -1e9, 1e9));
+    checkPointPlacement(r, p, k, s,
+                        Eigen::Vector3d(xy.x(), xy.y(), s.world.bounds_min.z() + 0.5 * o.height));
     o.path.push_back(xy);
   }
   if (n["speed"]) o.speed = r.number(n["speed"], key + ".speed", 0.0, 100.0);
-  if (o.path.size() > 1 && !(o.speed > 0)) r.fail(n, key, "a moving obstacle with a path needs 'speed' > 0 (m/s)");
+  if (o.path.size() > 1 && !(o.speed > 0))
+    r.fail(n, key, "a moving obstacle with a path needs 'speed' > 0 (m/s)");
   if (n["loop"]) o.loop = r.boolean(n["loop"], key + ".loop");
   s.moving_obstacles.push_back(std::move(o));
 }
@@ -116,11 +205,13 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
                  const std::filesystem::path& scenario_dir, Scenario& s) {
   r.checkKeys(n, key, {"name", "model", "start", "goal", "waypoints", "yaw"});
   VehicleSpec v;
-  v.name = n["name"] ? r.text(n["name"], key + ".name") : "uav" + std::to_string(s.vehicles.size() + 1);
+  v.name =
+      n["name"] ? r.text(n["name"], key + ".name") : "uav" + std::to_string(s.vehicles.size() + 1);
   if (v.name.find_first_of("/ \t") != std::string::npos)
     r.fail(n["name"], key + ".name", "vehicle names may not contain '/' or spaces");
   for (const auto& other : s.vehicles)
-    if (other.name == v.name) r.fail(n["name"], key + ".name", "duplicate vehicle name '" + v.name + "'");
+    if (other.name == v.name)
+      r.fail(n["name"], key + ".name", "duplicate vehicle name '" + v.name + "'");
   if (!n["model"]) r.fail(n, key, "vehicle needs a 'model' (cf2, quad_1500g, or a URDF path)");
   v.model = r.text(n["model"], key + ".model");
   const bool is_urdf = v.model.size() > 5 && v.model.substr(v.model.size() - 5) == ".urdf";
@@ -164,6 +255,41 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
   s.vehicles.push_back(std::move(v));
 }
 
+// The planner, trajectory and controller sections under `parent` (the document, or `aerial`),
+// into a Scenario or its AerialSections (the same members); `prefix` names their keys.
+template <class Sections>
+void readMotionSections(const YamlReader& r, const YAML::Node& parent, const std::string& prefix,
+                        const std::vector<std::string>& overrides, Sections& out) {
+  if (parent["planner"] && !parent["planner"].IsNull()) {
+    const YAML::Node p = parent["planner"];
+    r.requireMap(p, prefix + "planner");
+    if (!p["name"]) r.fail(p, prefix + "planner", "missing 'name' (e.g. theta_star)");
+    out.planner_name = r.text(p["name"], prefix + "planner.name");
+    if (p["margin"]) out.planner_margin = r.number(p["margin"], prefix + "planner.margin", 0.0, 100.0);
+    readParams(r, p, prefix + "planner", {"name", "margin"}, overrides, out.planner_params);
+  }
+
+  if (parent["trajectory"]) {
+    const YAML::Node t = parent["trajectory"];
+    r.requireMap(t, prefix + "trajectory");
+    if (t["mode"]) {
+      out.trajectory_mode = r.text(t["mode"], prefix + "trajectory.mode");
+      if (out.trajectory_mode != "waypoints" && out.trajectory_mode != "minimum_snap")
+        r.fail(t["mode"], prefix + "trajectory.mode", "must be 'waypoints' or 'minimum_snap'");
+    }
+    readParams(r, t, prefix + "trajectory", {"mode"}, overrides, out.trajectory_params);
+  }
+
+  if (parent["controller"]) {
+    const YAML::Node c = parent["controller"];
+    r.checkKeys(c, prefix + "controller", {"name", "gains"});
+    if (c["name"]) out.controller_name = r.text(c["name"], prefix + "controller.name");
+    if (out.controller_name != "cascade" && out.controller_name != "geometric")
+      r.fail(c["name"], prefix + "controller.name", "must be 'cascade' or 'geometric'");
+    if (c["gains"]) readParams(r, c["gains"], prefix + "controller.gains", {}, overrides, out.controller_gains);
+  }
+}
+
 }  // namespace
 
 std::filesystem::path modelsDirectory() {
@@ -179,8 +305,9 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
   return parseScenario(text.str(), path, overrides);
 }
 
-Scenario parseScenario(const std::string& text, const std::string& file,
-                       const std::vector<std::string>& overrides) {
+// parseScenario without placing errors at their --set assignments.
+static Scenario parseScenarioText(const std::string& text, const std::string& file,
+                                  const std::vector<std::string>& overrides) {
   const YamlReader r(file);
   YAML::Node root;
   try {
@@ -190,7 +317,9 @@ Scenario parseScenario(const std::string& text, const std::string& file,
   }
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   for (const auto& o : overrides) applyYamlOverride(root, o);
-  r.checkKeys(root, "", {"world", "vehicles", "planner", "trajectory", "controller", "sim", "disturbances", "render"});
+  r.checkKeys(root, "",
+              {"world", "vehicles", "planner", "trajectory", "controller", "aerial", "sim",
+               "disturbances", "render"});
 
   Scenario s;
   s.file = file;
@@ -199,31 +328,42 @@ Scenario parseScenario(const std::string& text, const std::string& file,
   s.planner_params = ParamSet(file);
   s.trajectory_params = ParamSet(file);
   s.controller_gains = ParamSet(file);
+  s.aerial.planner_params = ParamSet(file);
+  s.aerial.trajectory_params = ParamSet(file);
+  s.aerial.controller_gains = ParamSet(file);
 
   // world
   if (!root["world"]) r.fail(root, "world", "missing 'world' section");
   const YAML::Node world = root["world"];
-  r.checkKeys(world, "world", {"bounds", "obstacles", "include", "moving_obstacles"});
-  if (!world["bounds"]) r.fail(world, "world", "missing 'bounds: {min: [..], max: [..]}'");
-  r.checkKeys(world["bounds"], "world.bounds", {"min", "max"});
-  if (!world["bounds"]["min"] || !world["bounds"]["max"])
-    r.fail(world["bounds"], "world.bounds", "needs both 'min' and 'max'");
-  s.world.bounds_min = r.vec3(world["bounds"]["min"], "world.bounds.min");
-  s.world.bounds_max = r.vec3(world["bounds"]["max"], "world.bounds.max");
-  const Eigen::Vector3d extent = s.world.bounds_max - s.world.bounds_min;
-  if ((extent.array() <= 0).any())
-    r.fail(world["bounds"], "world.bounds", "max must exceed min on every axis");
-  if ((extent.array() > kMaxWorldExtent).any())
-    r.fail(world["bounds"], "world.bounds", "the world is larger than 10 km on an axis");
-  if (world["obstacles"]) {
-    const YAML::Node obs = world["obstacles"];
-    if (!obs.IsSequence()) r.fail(obs, "world.obstacles", "must be a list");
-    if (obs.size() > kMaxObstacles)
-      r.fail(obs, "world.obstacles", "more than " + std::to_string(kMaxObstacles) + " obstacles");
-    for (std::size_t i = 0; i < obs.size(); ++i) {
-      Obstacle o;
-      readObstacle(r, obs[i], "world.obstacles[" + std::to_string(i) + "]", o);
-      s.world.obstacles.push_back(o);
+  r.checkKeys(world, "world", {"bounds", "obstacles", "include", "moving_obstacles", "grid_map"});
+  if (world["grid_map"]) {
+    readGridMap(r, world["grid_map"], dir, s);
+    for (const char* key : {"bounds", "obstacles"})
+      if (world[key])
+        r.fail(world[key], std::string("world.") + key,
+               "comes from world.grid_map (add obstacle cells with grid_map.blocked)");
+  } else {
+    if (!world["bounds"]) r.fail(world, "world", "missing 'bounds: {min: [..], max: [..]}'");
+    r.checkKeys(world["bounds"], "world.bounds", {"min", "max"});
+    if (!world["bounds"]["min"] || !world["bounds"]["max"])
+      r.fail(world["bounds"], "world.bounds", "needs both 'min' and 'max'");
+    s.world.bounds_min = r.vec3(world["bounds"]["min"], "world.bounds.min");
+    s.world.bounds_max = r.vec3(world["bounds"]["max"], "world.bounds.max");
+    const Eigen::Vector3d extent = s.world.bounds_max - s.world.bounds_min;
+    if ((extent.array() <= 0).any())
+      r.fail(world["bounds"], "world.bounds", "max must exceed min on every axis");
+    if ((extent.array() > kMaxWorldExtent).any())
+      r.fail(world["bounds"], "world.bounds", "the world is larger than 10 km on an axis");
+    if (world["obstacles"]) {
+      const YAML::Node obs = world["obstacles"];
+      if (!obs.IsSequence()) r.fail(obs, "world.obstacles", "must be a list");
+      if (obs.size() > kMaxObstacles)
+        r.fail(obs, "world.obstacles", "more than " + std::to_string(kMaxObstacles) + " obstacles");
+      for (std::size_t i = 0; i < obs.size(); ++i) {
+        Obstacle o;
+        readObstacle(r, obs[i], "world.obstacles[" + std::to_string(i) + "]", o);
+        s.world.obstacles.push_back(o);
+      }
     }
   }
   if (world["moving_obstacles"]) {
@@ -235,7 +375,8 @@ Scenario parseScenario(const std::string& text, const std::string& file,
   }
   if (world["include"]) {
     const std::string inc = r.text(world["include"], "world.include");
-    s.include_file = std::filesystem::path(inc).is_absolute() ? std::filesystem::path(inc) : dir / inc;
+    s.include_file =
+        std::filesystem::path(inc).is_absolute() ? std::filesystem::path(inc) : dir / inc;
     if (!std::filesystem::exists(s.include_file))
       r.fail(world["include"], "world.include", "file not found: " + s.include_file.string());
   }
@@ -249,36 +390,20 @@ Scenario parseScenario(const std::string& text, const std::string& file,
   for (std::size_t i = 0; i < vehicles.size(); ++i)
     readVehicle(r, vehicles[i], "vehicles[" + std::to_string(i) + "]", dir, s);
 
-  // planner
-  if (root["planner"] && !root["planner"].IsNull()) {
-    const YAML::Node p = root["planner"];
-    r.requireMap(p, "planner");
-    if (!p["name"]) r.fail(p, "planner", "missing 'name' (e.g. theta_star)");
-    s.planner_name = r.text(p["name"], "planner.name");
-    if (p["margin"]) s.planner_margin = r.number(p["margin"], "planner.margin", 0.0, 100.0);
-    readParams(r, p, "planner", {"name", "margin"}, s.planner_params);
-  }
-
-  // trajectory
-  if (root["trajectory"]) {
-    const YAML::Node t = root["trajectory"];
-    r.requireMap(t, "trajectory");
-    if (t["mode"]) {
-      s.trajectory_mode = r.text(t["mode"], "trajectory.mode");
-      if (s.trajectory_mode != "waypoints" && s.trajectory_mode != "minimum_snap")
-        r.fail(t["mode"], "trajectory.mode", "must be 'waypoints' or 'minimum_snap'");
-    }
-    readParams(r, t, "trajectory", {"mode"}, s.trajectory_params);
-  }
-
-  // controller
-  if (root["controller"]) {
-    const YAML::Node c = root["controller"];
-    r.checkKeys(c, "controller", {"name", "gains"});
-    if (c["name"]) s.controller_name = r.text(c["name"], "controller.name");
-    if (s.controller_name != "cascade" && s.controller_name != "geometric")
-      r.fail(c["name"], "controller.name", "must be 'cascade' or 'geometric'");
-    if (c["gains"]) readParams(r, c["gains"], "controller.gains", {}, s.controller_gains);
+  readMotionSections(r, root, "", overrides, s);
+  if (root["aerial"]) {
+    const YAML::Node n = root["aerial"];
+    r.checkKeys(n, "aerial", {"planner", "trajectory", "controller"});
+    const auto count = [&s](bool ground) {
+      return std::count_if(s.vehicles.begin(), s.vehicles.end(),
+                           [ground](const VehicleSpec& v) { return v.ground == ground; });
+    };
+    if (count(true) == 0 || count(false) == 0)
+      r.fail(n, "aerial",
+             "is for the quadrotors of a scenario with ground robots too (this one has only " +
+                 std::string(count(true) ? "ground robots" : "quadrotors") +
+                 "; use the top-level planner, trajectory and controller)");
+    readMotionSections(r, n, "aerial.", overrides, s.aerial);
   }
 
   // sim
@@ -289,7 +414,8 @@ Scenario parseScenario(const std::string& text, const std::string& file,
     if (n["control_rate"])
       s.sim.control_rate = r.number(n["control_rate"], "sim.control_rate", 1.0, 10000.0);
     if (n["max_time"]) s.sim.max_time = r.number(n["max_time"], "sim.max_time", 0.01, 86400.0);
-    if (n["seed"]) s.sim.seed = static_cast<std::uint64_t>(r.integer(n["seed"], "sim.seed", 0, 2147483647L));
+    if (n["seed"])
+      s.sim.seed = static_cast<std::uint64_t>(r.integer(n["seed"], "sim.seed", 0, 2147483647L));
     if (n["goal_tolerance"])
       s.sim.goal_tolerance = r.number(n["goal_tolerance"], "sim.goal_tolerance", 0.01, 100.0);
     const double ratio = 1.0 / (s.sim.timestep * s.sim.control_rate);
@@ -297,11 +423,13 @@ Scenario parseScenario(const std::string& text, const std::string& file,
       r.fail(n["control_rate"] ? n["control_rate"] : n, "sim.control_rate",
              "the physics rate (1/timestep) must be a whole multiple of the control rate");
   }
-  if (const double samples = s.sim.max_time * s.sim.control_rate * static_cast<double>(s.vehicles.size());
+  if (const double samples =
+          s.sim.max_time * s.sim.control_rate * static_cast<double>(s.vehicles.size());
       samples > kMaxLogSamples)
-    r.fail(root["sim"] ? root["sim"] : root, "sim.max_time",
-           "max_time x control_rate x vehicles = " + std::to_string(static_cast<long long>(samples)) +
-               " log samples, more than 20 million: shorten sim.max_time or lower sim.control_rate");
+    r.fail(
+        root["sim"] ? root["sim"] : root, "sim.max_time",
+        "max_time x control_rate x vehicles = " + std::to_string(static_cast<long long>(samples)) +
+            " log samples, more than 20 million: shorten sim.max_time or lower sim.control_rate");
 
   // disturbances
   if (root["disturbances"]) {
@@ -315,25 +443,30 @@ Scenario parseScenario(const std::string& text, const std::string& file,
     }
     if (n["gust"]) d.gust_sigma = r.number(n["gust"], "disturbances.gust", 0.0, 50.0);
     if (n["gust_tau"]) d.gust_tau = r.number(n["gust_tau"], "disturbances.gust_tau", 0.01, 1000.0);
-    if (n["ground_effect"]) d.ground_effect = r.boolean(n["ground_effect"], "disturbances.ground_effect");
+    if (n["ground_effect"])
+      d.ground_effect = r.boolean(n["ground_effect"], "disturbances.ground_effect");
   }
 
   // render
   if (root["render"]) {
     const YAML::Node n = root["render"];
-    r.checkKeys(n, "render", {"camera", "cameras", "width", "height", "fps", "speedup", "fixed_camera",
-                              "obstacle_alpha", "png_frames"});
+    r.checkKeys(n, "render",
+                {"camera", "cameras", "width", "height", "fps", "speedup", "fixed_camera",
+                 "obstacle_alpha", "png_frames"});
     const auto cameraName = [&](const YAML::Node& c, const std::string& key) {
       const std::string name = r.text(c, key);
-      if (name != "chase" && name != "orbit" && name != "top" && name != "overview" && name != "fixed")
+      if (name != "chase" && name != "orbit" && name != "top" && name != "overview" &&
+          name != "fixed")
         r.fail(c, key, "must be chase, orbit, top, overview or fixed");
       return name;
     };
     if (n["camera"]) s.render.camera = cameraName(n["camera"], "render.camera");
     if (n["cameras"]) {
-      if (!n["cameras"].IsSequence()) r.fail(n["cameras"], "render.cameras", "must be a list of camera names");
+      if (!n["cameras"].IsSequence())
+        r.fail(n["cameras"], "render.cameras", "must be a list of camera names");
       for (std::size_t i = 0; i < n["cameras"].size(); ++i)
-        s.render.cameras.push_back(cameraName(n["cameras"][i], "render.cameras[" + std::to_string(i) + "]"));
+        s.render.cameras.push_back(
+            cameraName(n["cameras"][i], "render.cameras[" + std::to_string(i) + "]"));
     }
     if (n["fixed_camera"]) {
       const YAML::Node f = n["fixed_camera"];
@@ -348,18 +481,31 @@ Scenario parseScenario(const std::string& text, const std::string& file,
     bool wants_fixed = s.render.camera == "fixed";
     for (const auto& c : s.render.cameras) wants_fixed = wants_fixed || c == "fixed";
     if (wants_fixed && !s.render.has_fixed_camera)
-      r.fail(n, "render", "camera 'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]}");
+      r.fail(n, "render",
+             "camera 'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]}");
     if (n["speedup"]) s.render.speedup = r.number(n["speedup"], "render.speedup", 0.01, 1000.0);
-    if (n["obstacle_alpha"]) s.render.obstacle_alpha = r.number(n["obstacle_alpha"], "render.obstacle_alpha", 0.05, 1.0);
+    if (n["obstacle_alpha"])
+      s.render.obstacle_alpha = r.number(n["obstacle_alpha"], "render.obstacle_alpha", 0.05, 1.0);
     if (n["png_frames"]) s.render.png_frames = r.boolean(n["png_frames"], "render.png_frames");
-    if (n["width"]) s.render.width = static_cast<int>(r.integer(n["width"], "render.width", 64, 3840));
-    if (n["height"]) s.render.height = static_cast<int>(r.integer(n["height"], "render.height", 64, 2160));
+    if (n["width"])
+      s.render.width = static_cast<int>(r.integer(n["width"], "render.width", 64, 3840));
+    if (n["height"])
+      s.render.height = static_cast<int>(r.integer(n["height"], "render.height", 64, 2160));
     if (n["fps"]) s.render.fps = static_cast<int>(r.integer(n["fps"], "render.fps", 1, 240));
     // H.264 with yuv420p needs even frame sizes.
     if (s.render.width % 2 || s.render.height % 2)
       r.fail(n, "render", "width and height must be even (H.264, yuv420p)");
   }
   return s;
+}
+
+Scenario parseScenario(const std::string& text, const std::string& file,
+                       const std::vector<std::string>& overrides) {
+  try {
+    return parseScenarioText(text, file, overrides);
+  } catch (const InputError& e) {
+    throw placedAtOverride(e, file, overrides);
+  }
 }
 
 }  // namespace cosim

@@ -9,6 +9,7 @@
 #include "planning/input_error.h"
 #include "sim/ground_vehicle_handles.h"
 #include "sim/moving_obstacle_motion.h"
+#include "sim/mujoco_messages.h"
 #include "sim/urdf_vehicle.h"
 
 namespace cosim {
@@ -198,6 +199,7 @@ WorldModel WorldModel::build(const Scenario& scenario) {
 }
 
 WorldModel WorldModel::fromXml(const std::string& xml, const Scenario& scenario) {
+  installMujocoMessageHandlers();  // before MuJoCo's first call: no MUJOCO_LOG.TXT, no exit(1)
   WorldModel wm;
   wm.xml_ = xml;
   // Load from memory through MuJoCo's virtual file system.

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "experiments/cli/command.h"
+#include "experiments/cli/interrupt_flag.h"
 #include "planning/input_error.h"
 #include "render/run_outputs.h"
 #include "sim/run_log_io.h"
@@ -109,9 +110,14 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
       renderer.render(a->at >= 0 ? a->at : renderer.endTime(), camera, rgb);
       writePng(out, rgb, renderer.width(), renderer.height());
     } else {
-      const int frames =
-          renderRunVideo(renderer, s.render, camera, out,
-                         a->frames ? VideoFormat::PngSequence : VideoFormat::Mp4, !a->quiet);
+      const int frames = renderRunVideo(renderer, s.render, camera, out,
+                                        a->frames ? VideoFormat::PngSequence : VideoFormat::Mp4,
+                                        !a->quiet, &installInterruptFlag());
+      if (frames == 0) {  // SIGINT/SIGTERM: ffmpeg was stopped and its partial output deleted
+        std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
+        ctx.status = 1;
+        return;
+      }
       std::cout << "frames: " << frames << " at " << s.render.fps << " fps (" << s.render.speedup
                 << "x simulated time)\n";
     }

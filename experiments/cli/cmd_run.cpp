@@ -7,10 +7,13 @@
 #include "experiments/cli/interrupt_flag.h"
 #include "experiments/cli/output_files.h"
 #include "experiments/cli/run_pipeline.h"
+#include "planning/input_error.h"
 
 namespace cosim::cli {
 
-std::string defaultScenarioPath() { return std::string(COSIM_SCENARIOS_DIR) + "/default.yaml"; }
+std::string defaultScenarioPath() {
+  return std::string(COSIM_SCENARIOS_DIR) + "/default.yaml";
+}
 
 void addRunCommand(CLI::App& app, CommandContext& ctx) {
   auto* cmd = app.add_subcommand(
@@ -29,9 +32,11 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("scenario", a->scenario, "scenario YAML (default: the bundled default scenario)");
   cmd->add_option("--out", a->out, "output folder (default: a new folder under out/)");
   cmd->add_flag("--no-video", a->no_video, "skip video.mp4 (much faster)");
-  cmd->add_flag("--no-images", a->no_images,
-                "skip final.png, figures/ and index.html too (with --no-video: no rendering at all)");
-  cmd->add_option("--seed", a->seed, "random seed (overrides sim.seed)")->check(CLI::Range(0L, 2147483647L));
+  cmd->add_flag(
+      "--no-images", a->no_images,
+      "skip final.png, figures/ and index.html too (with --no-video: no rendering at all)");
+  cmd->add_option("--seed", a->seed, "random seed (overrides sim.seed)")
+      ->check(CLI::Range(0L, 2147483647L));
   cmd->add_option("--set", a->sets, "override a scenario key, e.g. --set planner.name=astar")
       ->allow_extra_args(false);
   cmd->add_flag("--quiet", a->quiet, "no progress lines");
@@ -46,7 +51,12 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     request.images = !a->no_images;
     request.progress = !a->quiet;
     request.interrupt = &installInterruptFlag();
-    const RunSummary s = executeRun(scenario, request);
+    RunSummary s;
+    try {
+      s = executeRun(scenario, request);
+    } catch (const InputError& e) {
+      throw e.inFile(path);  // e.g. a planner's grid too large for the scenario's world
+    }
     if (s.message == "interrupted") {
       std::cerr << "cosim: interrupted; " << request.out_dir.string() << " holds no finished run\n";
       ctx.status = 1;

@@ -10,6 +10,8 @@
 #include "control/ground_feedback_linearization.h"
 #include "control/ground_velocity_tracker.h"
 #include "experiments/cli/output_files.h"
+#include "experiments/cli/quadrotor_pilots.h"
+#include "experiments/cli/run_files.h"
 #include "experiments/cli/scenario_planning.h"
 #include "planning/input_error.h"
 #include "planning/mapf/mapf_planner_registry.h"
@@ -17,6 +19,7 @@
 #include "planning/mapf/timed_paths.h"
 #include "planning/navigation/d_star_lite.h"
 #include "planning/navigation/robot_navigation_ant.h"
+#include "planning/planner_registry.h"
 #include "render/run_outputs.h"
 #include "sim/flight_metrics.h"
 #include "sim/ground_simulation.h"
@@ -65,7 +68,8 @@ struct GroundPlan {
 // top speed (the rest is headroom for the feedback that corrects tracking errors).
 double cruiseSpeed(Scenario& s, const WorldModel& world) {
   double slowest = std::numeric_limits<double>::infinity();
-  for (const auto& v : world.vehicles()) slowest = std::min(slowest, v.drive.max_speed);
+  for (const auto& v : world.vehicles())
+    if (v.ground) slowest = std::min(slowest, v.drive.max_speed);
   ParamSet p = s.trajectory_params;
   const double speed = p.getDouble("max_speed", 0.8 * slowest, 1e-3, 100.0);
   p.requireAllUsed("trajectory (ground robots: max_speed only)");
@@ -76,10 +80,20 @@ double cruiseSpeed(Scenario& s, const WorldModel& world) {
   return speed;
 }
 
+// Of the ground robots (quadrotors fly over the team's grid).
 double largestRadius(const WorldModel& world) {
   double r = 0.0;
-  for (const auto& v : world.vehicles()) r = std::max(r, v.params.radius);
+  for (const auto& v : world.vehicles())
+    if (v.ground) r = std::max(r, v.params.radius);
   return r;
+}
+
+// The ground robots' handles, in the order of the scenario's robots.
+std::vector<const VehicleHandles*> robotHandles(const WorldModel& world) {
+  std::vector<const VehicleHandles*> robots;
+  for (const auto& v : world.vehicles())
+    if (v.ground) robots.push_back(&v);
+  return robots;
 }
 
 OccupancyGrid planarGrid(const Scenario& s, double resolution, double inflation) {
@@ -92,14 +106,31 @@ OccupancyGrid planarGrid(const Scenario& s, double resolution, double inflation)
 GroundPlan planTeam(Scenario& s, const WorldModel& world, double speed) {
   GroundPlan plan;
   ParamSet p = s.planner_params;
-  const double resolution = p.getDouble("resolution", 0.5, 0.01, 100.0);
+  if (s.grid_map.present() && p.has("resolution"))
+    throw InputError(s.file, "planner.resolution",
+                     "a team plan on world.grid_map uses the map's cells (world.grid_map.cell)");
+  const double resolution =
+      s.grid_map.present() ? s.grid_map.cell : p.getDouble("resolution", 0.5, 0.01, 100.0);
   const int connectivity = p.getInt("connectivity", 4, 4, 8);
   const double time_limit = p.getDouble("time_limit", 30.0, 0.001, 86400.0);
   if (connectivity != 4 && connectivity != 8)
     throw InputError(s.file, "planner.connectivity", "must be 4 or 8");
   plan.inflation = largestRadius(world) + s.planner_margin;
   MapfInstance instance;
-  instance.grid = planarGrid(s, resolution, plan.inflation);
+  if (s.grid_map.present()) {
+    // Robots in neighbouring cells must not touch: centres one cell apart (4-connected), or
+    // passing on crossing diagonals, sqrt(2)/2 cell apart at closest (8-connected; see
+    // planning/mapf/solution_validator.h).
+    const double room = (connectivity == 8 ? std::sqrt(2.0) / 4.0 : 0.5) * resolution;
+    if (plan.inflation > room)
+      throw InputError(s.file, "world.grid_map.cell",
+                       "robots of radius " + std::to_string(largestRadius(world)) +
+                           " m plus planner.margin need cells of at least " +
+                           std::to_string(resolution * plan.inflation / room) + " m");
+    instance.grid = s.grid_map.grid;
+  } else {
+    instance.grid = planarGrid(s, resolution, plan.inflation);
+  }
   instance.connectivity = connectivity;
   for (const VehicleSpec& v : s.vehicles) {
     if (v.waypoints.size() != 1)
@@ -153,9 +184,9 @@ GroundPlan planTeam(Scenario& s, const WorldModel& world, double speed) {
 // One robot per single-agent plan (or the given waypoints), timed at the cruise speed.
 GroundPlan planEach(Scenario& s, const WorldModel& world, double speed) {
   GroundPlan plan;
+  const auto robots = robotHandles(world);
   for (std::size_t v = 0; v < s.vehicles.size(); ++v) {
-    const VehiclePlan p =
-        planVehicle(s, s.vehicles[v], world.vehicles()[v].params.radius, s.planner_params);
+    const VehiclePlan p = planVehicle(s, s.vehicles[v], robots[v]->params.radius, s.planner_params);
     plan.time_ms += p.time_ms;
     for (const auto& [k, c] : p.counters) plan.counters[k] += c;
     plan.params = p.params;
@@ -275,7 +306,7 @@ class NavigationDriver {
 // then follow the very same trajectories), speeds in cells per robot step.
 NavigationWorld navigationWorld(Scenario& s, const WorldModel& world, double resolution,
                                 double speed, double& inflation) {
-  const double robot = world.vehicles().front().params.radius;
+  const double robot = robotHandles(world).front()->params.radius;
   inflation = robot + s.planner_margin;
   OccupancyGrid grid = planarGrid(s, resolution, inflation);
   std::vector<MovingObstacle> obstacles;
@@ -320,34 +351,42 @@ std::unique_ptr<GroundController> makeGroundController(ParamSet& gains, const Ve
 // Team figures from the log: contacts by kind, closest approaches, deviation, arrivals.
 struct TeamMetrics {
   int robot_contacts = 0, obstacle_contacts = 0, moving_obstacle_contacts = 0;
+  int robot_uav_contacts = 0, uav_contacts = 0;  // a quadrotor with a robot, with a quadrotor
   double min_robot_distance_m = std::numeric_limits<double>::infinity();  // surface to surface
   double min_moving_obstacle_distance_m = std::numeric_limits<double>::infinity();
 };
 
-TeamMetrics teamMetrics(const RunLog& log) {
+// `ground[v]`: log.vehicles[v] is a ground robot (else a quadrotor).
+TeamMetrics teamMetrics(const RunLog& log, const std::vector<bool>& ground) {
   TeamMetrics t;
   for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
     for (const ContactEvent& c : log.vehicles[v].collisions) {
-      bool robot = false;
-      for (std::size_t w = 0; w < log.vehicles.size(); ++w)
-        if (w != v && c.other.rfind(log.vehicles[w].name + "/", 0) == 0) {
-          robot = true;
-          t.robot_contacts += w > v ? 1 : 0;  // each touching pair is booked by both robots
-        }
-      if (robot) continue;
+      bool vehicle = false;
+      for (std::size_t w = 0; w < log.vehicles.size(); ++w) {
+        if (w == v || c.other.rfind(log.vehicles[w].name + "/", 0) != 0) continue;
+        vehicle = true;
+        if (w < v) continue;  // each touching pair is booked by both vehicles
+        int& count = ground[v] && ground[w]     ? t.robot_contacts
+                     : !ground[v] && !ground[w] ? t.uav_contacts
+                                                : t.robot_uav_contacts;
+        ++count;
+      }
+      if (vehicle) continue;
       if (c.other.rfind("moving", 0) == 0)
         ++t.moving_obstacle_contacts;
       else
         ++t.obstacle_contacts;
     }
   }
-  // Samples are logged at the same instants for every robot and obstacle.
+  // Samples are logged at the same instants for every vehicle and obstacle. Closest approaches
+  // are between robots' footprints (quadrotors fly over them).
   for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
+    if (!ground[v]) continue;
     const auto& a = log.vehicles[v];
     for (std::size_t k = 0; k < a.samples.size(); ++k) {
       for (std::size_t w = v + 1; w < log.vehicles.size(); ++w) {
         const auto& b = log.vehicles[w];
-        if (k < b.samples.size())
+        if (ground[w] && k < b.samples.size())
           t.min_robot_distance_m = std::min(
               t.min_robot_distance_m,
               (a.samples[k].pos - b.samples[k].pos).head<2>().norm() - a.radius - b.radius);
@@ -362,6 +401,20 @@ TeamMetrics teamMetrics(const RunLog& log) {
   return t;
 }
 
+// The quadrotors' view of a scenario with ground robots: the `aerial` sections in place of the
+// top-level planner, trajectory and controller, which drive the robots.
+Scenario aerialScenario(const Scenario& s) {
+  Scenario a = s;
+  a.planner_name = s.aerial.planner_name;
+  a.planner_params = s.aerial.planner_params;
+  a.planner_margin = s.aerial.planner_margin;
+  a.trajectory_mode = s.aerial.trajectory_mode;
+  a.trajectory_params = s.aerial.trajectory_params;
+  a.controller_name = s.aerial.controller_name;
+  a.controller_gains = s.aerial.controller_gains;
+  return a;
+}
+
 }  // namespace
 
 bool isGroundRun(const Scenario& s) {
@@ -371,39 +424,60 @@ bool isGroundRun(const Scenario& s) {
 }
 
 RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
-  for (const VehicleSpec& v : scenario.vehicles)
-    if (!v.ground)
-      throw InputError(scenario.file, "vehicles",
-                       "'" + v.name +
-                           "' is a quadrotor: ground robots and moving obstacles run only with "
-                           "ground robots (omni_base, diff_drive or a URDF)");
+  // The ground robots (driven by the top-level planner, trajectory and controller) and the
+  // quadrotors flying over them (the `aerial` sections), as indices into scenario.vehicles.
+  std::vector<std::size_t> robot_ids, quadrotor_ids;
+  for (std::size_t v = 0; v < scenario.vehicles.size(); ++v)
+    (scenario.vehicles[v].ground ? robot_ids : quadrotor_ids).push_back(v);
+  if (robot_ids.empty())
+    throw InputError(scenario.file, "world.moving_obstacles",
+                     "moving obstacles need ground robots (omni_base, diff_drive or a URDF): "
+                     "quadrotors do not sense them");
   RunSummary summary;
   const WorldModel world = WorldModel::build(scenario);
-  const double speed = cruiseSpeed(scenario, world);
+  Scenario robots = scenario;
+  robots.vehicles.clear();
+  for (std::size_t v : robot_ids) robots.vehicles.push_back(scenario.vehicles[v]);
+  const double speed = cruiseSpeed(robots, world);
   const std::string& name = scenario.planner_name;
 
   // 1. Plan.
   GroundPlan plan;
   std::unique_ptr<NavigationDriver> driver;
   if (isNavigatorName(name)) {
-    if (scenario.vehicles.size() != 1)
+    if (robots.vehicles.size() != 1)
       throw InputError(scenario.file, "planner.name", "navigators (" + name + ") drive one robot");
-    ParamSet p = scenario.planner_params;
+    ParamSet p = robots.planner_params;
     const double resolution = p.getDouble("resolution", 0.5, 0.01, 100.0);
     auto navigator = makeNavigator(name, p);
     p.requireAllUsed("planner '" + name + "' (in cosim run: resolution and sight)");
     plan.params = p.effective();
-    NavigationWorld nav = navigationWorld(scenario, world, resolution, speed, plan.inflation);
+    NavigationWorld nav = navigationWorld(robots, world, resolution, speed, plan.inflation);
     plan.paths.resize(1);
     driver =
-        std::make_unique<NavigationDriver>(std::move(navigator), std::move(nav), scenario.file,
-                                           scenario.vehicles[0], resolution / speed, plan.paths[0]);
+        std::make_unique<NavigationDriver>(std::move(navigator), std::move(nav), robots.file,
+                                           robots.vehicles[0], resolution / speed, plan.paths[0]);
     plan.success = true;
   } else if (isMapfPlannerName(name)) {
-    plan = planTeam(scenario, world, speed);
+    plan = planTeam(robots, world, speed);
   } else {
-    plan = planEach(scenario, world, speed);
+    plan = planEach(robots, world, speed);
   }
+  // Each quadrotor: its own path, reference and flight controller (the `aerial` sections).
+  Scenario air = aerialScenario(scenario);
+  if (!air.planner_name.empty() && !PlannerRegistry::instance().find(air.planner_name)) {
+    std::string known;
+    for (const auto& e : PlannerRegistry::instance().entries())
+      known += (known.empty() ? "" : ", ") + e.name;
+    throw InputError(
+        scenario.file, "aerial.planner.name",
+        "unknown single-agent planner '" + air.planner_name + "' (known: " + known + ")");
+  }
+  QuadrotorPilots quadrotors;
+  quadrotors.ready = true;
+  if (!quadrotor_ids.empty())  // also when the robots have no plan: bad input is exit 2
+    quadrotors = prepareQuadrotorPilots(air, world, quadrotor_ids, request);
+  const bool drive = plan.success && quadrotors.ready;
 
   // The timed plan's corners are rounded so that the robots can follow them within their
   // acceleration limit (GroundTimedPath::setSmoothing).
@@ -411,20 +485,21 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
       ParamSet(scenario.controller_gains).getDouble("max_acceleration", 1.0, 1e-3, 100.0);
   for (auto& path : plan.paths) path.setSmoothing(speed / accel);
 
-  // 2. Controllers, and 3. drive.
+  // 2. Controllers, and 3. drive (and fly).
+  const auto handles = robotHandles(world);
   std::vector<std::unique_ptr<GroundController>> controllers;
   std::vector<GroundPilot> pilots;
   RunLog log;
-  if (plan.success) {
-    for (std::size_t v = 0; v < scenario.vehicles.size(); ++v) {
+  if (drive) {
+    for (std::size_t v = 0; v < robots.vehicles.size(); ++v) {
       ParamSet gains = scenario.controller_gains;
-      controllers.push_back(makeGroundController(gains, world.vehicles()[v]));
+      controllers.push_back(makeGroundController(gains, *handles[v]));
       gains.requireAllUsed("controller.gains (ground robots)");
       GroundPilot pilot;
       pilot.controller = controllers.back().get();
       pilot.path = &plan.paths[v];
-      pilot.yaw = scenario.vehicles[v].yaw_deg * M_PI / 180.0;
-      pilot.goal = onFloor(xy(scenario.vehicles[v].goal()));
+      pilot.yaw = robots.vehicles[v].yaw_deg * M_PI / 180.0;
+      pilot.goal = onFloor(xy(robots.vehicles[v].goal()));
       for (const auto& p : plan.paths[v].points()) pilot.planned_path.push_back(onFloor(p));
       pilots.push_back(pilot);
     }
@@ -440,10 +515,14 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
       };
     }
     if (request.progress)
-      std::cerr << "cosim: driving " << pilots.size() << " ground robot(s)" << std::endl;
-    log = simulateGround(world, scenario, pilots, options);
+      std::cerr << "cosim: driving " << pilots.size() << " ground robot(s)"
+                << (quadrotor_ids.empty()
+                        ? std::string()
+                        : " under " + std::to_string(quadrotor_ids.size()) + " quadrotor(s)")
+                << std::endl;
+    log = simulateGround(world, scenario, pilots, quadrotors.pilots, options);
     if (driver) {
-      log.vehicles[0].planned_path = driver->executed();
+      log.vehicles[robot_ids[0]].planned_path = driver->executed();
       plan.counters = driver->counters();
     }
   } else {
@@ -460,37 +539,66 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
     return summary;
   }
 
-  // 4. Evaluate, from the log.
+  // 4. Evaluate, from the log. The team figures are the robots' (plan-vs-executed); the
+  // quadrotors have their flight metrics; arrival, contacts and clearance count everyone.
   summary.sim_speed_x = log.wall_time > 0 ? log.sim_time / log.wall_time : 0.0;
-  const TeamMetrics team = teamMetrics(log);
+  std::vector<bool> ground(scenario.vehicles.size());
+  for (std::size_t v = 0; v < ground.size(); ++v) ground[v] = scenario.vehicles[v].ground;
+  const TeamMetrics team = teamMetrics(log, ground);
   bool reached = true;
-  int collisions = team.robot_contacts + team.obstacle_contacts + team.moving_obstacle_contacts;
+  const int collisions = team.robot_contacts + team.obstacle_contacts +
+                         team.moving_obstacle_contacts + team.robot_uav_contacts +
+                         team.uav_contacts;
   double planned = 0, flown = 0, sum_sq = 0, max_error = 0,
          clearance = std::numeric_limits<double>::infinity();
   double makespan_s = 0.0, sum_arrivals = 0.0, planned_makespan = 0.0;
-  std::size_t samples = 0;
+  double uav_sum_sq = 0.0, uav_max_error = 0.0, uav_saturation = 0.0;
+  std::size_t samples = 0, uav_samples = 0;
   std::vector<JsonObject> per_vehicle;
-  for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
-    const FlightMetrics m = computeFlightMetrics(log.vehicles[v], scenario.world, true);
+  for (std::size_t v = 0, r = 0; v < log.vehicles.size(); ++v) {
+    const VehicleLog& vl = log.vehicles[v];
+    const double n = static_cast<double>(vl.samples.size());
+    const double arrival = vl.arrival_time;
+    if (!ground[v]) {
+      const FlightMetrics m =
+          computeFlightMetrics(vl, scenario.world, air.trajectory_mode != "waypoints");
+      summary.metrics.push_back(m);
+      reached = reached && m.reached_goal;
+      clearance = std::min(clearance, m.min_clearance_m);
+      uav_sum_sq += m.rmse_m * m.rmse_m * n;
+      uav_samples += vl.samples.size();
+      uav_max_error = std::max(uav_max_error, m.max_error_m);
+      uav_saturation = std::max(uav_saturation, longestSaturation(vl));
+      JsonObject j = flightMetricsJson(m);
+      j.add("name", vl.name)
+          .add("model", scenario.vehicles[v].model)
+          .add("kind", "quadrotor")
+          .add("arrival_time_s", arrival)
+          .add("radius_m", vl.radius);
+      per_vehicle.push_back(j);
+      continue;
+    }
+    const FlightMetrics m = computeFlightMetrics(vl, scenario.world, true);
     summary.metrics.push_back(m);
     reached = reached && m.reached_goal;
     planned += m.planned_length_m;
     flown += m.flown_length_m;
-    const std::size_t n = log.vehicles[v].samples.size();
-    sum_sq += m.rmse_m * m.rmse_m * static_cast<double>(n);
-    samples += n;
+    sum_sq += m.rmse_m * m.rmse_m * n;
+    samples += vl.samples.size();
     max_error = std::max(max_error, m.max_error_m);
     clearance = std::min(clearance, m.min_clearance_m);
-    const double arrival = log.vehicles[v].arrival_time;
     makespan_s = std::max(makespan_s, arrival);
     sum_arrivals += std::max(arrival, 0.0);
-    if (plan.success) planned_makespan = std::max(planned_makespan, plan.paths[v].endTime());
+    const double planned_arrival = drive ? plan.paths[r].endTime() : -1.0;
+    planned_makespan = std::max(planned_makespan, planned_arrival);
+    ++r;
     JsonObject j;
-    j.add("name", log.vehicles[v].name)
+    j.add("name", vl.name)
         .add("model", scenario.vehicles[v].model)
+        .add("kind", "ground_robot")
         .add("reached_goal", m.reached_goal)
         .add("arrival_time_s", arrival)
-        .add("planned_arrival_s", plan.success ? plan.paths[v].endTime() : -1.0)
+        .add("planned_arrival_s", planned_arrival)
         .add("contacts", m.collisions)
         .add("planned_length_m", m.planned_length_m)
         .add("flown_length_m", m.flown_length_m)
@@ -498,19 +606,22 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
         .add("max_error_m", m.max_error_m)
         .add("min_clearance_m", m.min_clearance_m)
         .add("max_speed_mps", m.max_speed_mps)
-        .add("radius_m", log.vehicles[v].radius);
+        .add("radius_m", vl.radius);
     per_vehicle.push_back(j);
   }
-  const bool ok = plan.success && plan.conflicts_message.empty() && log.end_reason == "goal" &&
-                  reached && collisions == 0;
+  const bool ok = drive && plan.conflicts_message.empty() && log.end_reason == "goal" && reached &&
+                  collisions == 0;
   summary.status = ok ? 0 : 1;
   if (!plan.success)
     summary.message = plan.message;
+  else if (!quadrotors.ready)
+    summary.message = quadrotors.failure;
   else if (log.end_reason == "gave_up")
     summary.message = "the navigator gave up" +
                       (driver && !driver->message().empty() ? ": " + driver->message() : "");
-  else if (log.end_reason == "diverged")
-    summary.message = "the simulation diverged (NaN state)";
+  else if (log.end_reason == "diverged" || log.end_reason == "unstable" ||
+           log.end_reason == "saturated")
+    summary.message = flightFailureMessage(log.end_reason);
   else if (!reached)
     summary.message = "goal not reached within sim.max_time";
   else if (collisions > 0)
@@ -521,7 +632,7 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
 
   // 5. Files.
   JsonObject metrics;
-  metrics.add("reached_goal", reached && plan.success)
+  metrics.add("reached_goal", reached && drive)
       .add("collisions", collisions)
       .add("planner", name.empty() ? std::string("waypoints") : name)
       .add("planning_time_ms", plan.time_ms)
@@ -533,7 +644,7 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
       .add("min_clearance_m", clearance)
       .add("sim_speed_x", summary.sim_speed_x)
       .add("error_reference", "timed_plan")
-      .add("robots", static_cast<int>(log.vehicles.size()))
+      .add("robots", static_cast<int>(robot_ids.size()))
       .add("robot_contacts", team.robot_contacts)
       .add("obstacle_contacts", team.obstacle_contacts)
       .add("moving_obstacle_contacts", team.moving_obstacle_contacts)
@@ -544,8 +655,23 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
       .add("executed_makespan_s", makespan_s)
       .add("sum_of_arrival_times_s", sum_arrivals)
       .add("cruise_speed_mps", speed)
-      .add("inflation_m", plan.inflation)
-      .add("seed", static_cast<long>(scenario.sim.seed))
+      .add("inflation_m", plan.inflation);
+  if (!quadrotor_ids.empty())  // the quadrotors over the robots
+    metrics.add("uavs", static_cast<int>(quadrotor_ids.size()))
+        .add("robot_uav_contacts", team.robot_uav_contacts)
+        .add("uav_contacts", team.uav_contacts)
+        .add("uav_planner", air.planner_name.empty() ? std::string("waypoints") : air.planner_name)
+        .add("uav_trajectory_mode", air.trajectory_mode)
+        .add("uav_controller", air.controller_name)
+        .add("uav_rmse_m",
+             uav_samples ? std::sqrt(uav_sum_sq / static_cast<double>(uav_samples)) : 0.0)
+        .add("uav_max_error_m", uav_max_error)
+        .add("longest_saturation_s", uav_saturation)
+        .add("fault", log.end_reason == "diverged" || log.end_reason == "unstable" ||
+                              log.end_reason == "saturated"
+                          ? log.end_reason
+                          : std::string("none"));
+  metrics.add("seed", static_cast<long>(scenario.sim.seed))
       .add("sim_time_s", log.sim_time)
       .add("wall_time_s", log.wall_time)
       .add("end_reason", log.end_reason)
@@ -556,25 +682,9 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
       .add("planner_params", plan.params);
   metrics.addArray("vehicles", per_vehicle);
 
-  const auto& dir = request.out_dir;
-  writeFileAtomically(dir / "scenario.yaml", scenario.effective_yaml);
-  writeFileAtomically(
-      dir / "run.json",
-      JsonObject().add("scenario_file", std::filesystem::absolute(scenario.file).string()).str() +
-          "\n");
-  writeFileAtomically(dir / "path.csv", pathCsv(log));
-  writeFileAtomically(dir / "timeseries.csv", timeseriesCsv(log));
-  RenderedRun rendered;
-  if (plan.success && (request.images || request.video)) {
-    RunRenderRequest render;
-    render.images = request.images;
-    render.video = request.video;
-    render.progress = request.progress;
-    rendered = renderRunOutputs(world, scenario, log, dir, render);
-  }
-  writeRunReport(dir, scenario, metrics.str(), summary.status == 0 ? "" : summary.message,
-                 rendered);
-  writeFileAtomically(dir / "metrics.json", metrics.str() + "\n");
+  // Interrupted while rendering: no index.html, no metrics.json, nothing that looks finished.
+  if (!writeRunFiles(world, scenario, log, request, drive, metrics, summary))
+    return RunSummary{.status = 1, .message = "interrupted", .metrics = {}, .sim_speed_x = 0.0};
   return summary;
 }
 

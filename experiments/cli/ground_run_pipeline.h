@@ -3,7 +3,9 @@
 // from a multi-robot planner, a single-agent path per robot, a navigator deciding step by step,
 // or the given waypoints), time the plan, drive it in MuJoCo (sim/ground_simulation.h), evaluate
 // (robot-robot and obstacle contacts, plan-vs-executed deviation, arrival times) and write the
-// same files as a flight run.
+// same files as a flight run. Quadrotors in the scenario fly over the robots in the same loop,
+// each with its own plan, reference and flight controller from the scenario's `aerial` sections
+// (experiments/cli/quadrotor_pilots.h); contacts between them and the robots are collisions.
 #include "experiments/cli/run_pipeline.h"
 
 namespace cosim {
@@ -11,8 +13,9 @@ namespace cosim {
 // True if the scenario is for this pipeline: a ground robot, or moving obstacles.
 bool isGroundRun(const Scenario& scenario);
 
-// Throws InputError for bad input found late (unknown planner, bad parameters, a team plan
-// asked of quadrotors, moving obstacles the navigator's grid cannot represent).
+// Throws InputError for bad input found late (unknown planner, bad parameters, a team planner
+// named for the quadrotors, moving obstacles without ground robots or that the navigator's grid
+// cannot represent).
 RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request);
 
 }  // namespace cosim

@@ -1,12 +1,18 @@
 // cosim: plan, fly, evaluate and render. See README.md and CONTRACT.md for the commands.
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <iostream>
 
 #include "experiments/cli/command.h"
 #include "planning/input_error.h"
+#include "sim/mujoco_messages.h"
 
 int main(int argc, char** argv) {
+  // A write to a pipe whose reader died (ffmpeg, gnuplot) is an ordinary error the writer
+  // reports, not a silent death of the whole program by SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  cosim::installMujocoMessageHandlers();
   CLI::App app{
       "cosim: a physics-backed co-simulator for UAVs and ground robots.\n"
       "Plans paths in 2D/3D obstacle worlds, turns them into trajectories, flies them in MuJoCo\n"
@@ -33,7 +39,7 @@ int main(int argc, char** argv) {
     std::cerr << "cosim: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "cosim: internal error: " << e.what() << "\n";
+    std::cerr << "cosim: internal error: " << cosim::printableText(e.what()) << "\n";
     return 3;
   }
   return ctx.status;

@@ -1,12 +1,13 @@
 #include "experiments/cli/scenario_planning.h"
 
 #include "planning/deadline.h"
+#include "planning/input_error.h"
 #include "planning/planner_registry.h"
 
 namespace cosim {
 
-VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle,
-                        double vehicle_radius, ParamSet params) {
+VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, double vehicle_radius,
+                        ParamSet params) {
   VehiclePlan plan;
   plan.inflation = vehicle_radius + scenario.planner_margin;
   if (scenario.planner_name.empty()) {
@@ -16,7 +17,8 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle,
     return plan;
   }
   const double time_limit = params.getDouble("time_limit", 30.0, 0.001, 86400.0);
-  auto planner = makePlanner(scenario.planner_name, params, "key planner.name", &plan.ignored_params);
+  auto planner =
+      makePlanner(scenario.planner_name, params, "key planner.name", &plan.ignored_params);
   plan.params = params.effective();
   plan.params["margin"] = std::to_string(scenario.planner_margin);
 
@@ -32,13 +34,18 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle,
     problem.start = from;
     problem.goal = vehicle.waypoints[i];
     problem.time_limit_s = std::max(1e-3, time_limit - deadline.elapsedMs() / 1000.0);
-    const PlanResult r = planner->solve(problem);
+    PlanResult r;
+    try {
+      r = planner->solve(problem);
+    } catch (const InputError& e) {
+      throw e.inFile(scenario.file);  // e.g. the planner's grid is too large for the world
+    }
     plan.time_ms += r.time_ms;
     for (const auto& [k, v] : r.counters) plan.counters[k] += v;
     if (!r.success || r.path.empty()) {
       plan.success = false;
-      plan.message = "no path from waypoint " + std::to_string(i) + " to " +
-                     std::to_string(i + 1) + (r.message.empty() ? "" : ": " + r.message);
+      plan.message = "no path from waypoint " + std::to_string(i) + " to " + std::to_string(i + 1) +
+                     (r.message.empty() ? "" : ": " + r.message);
       return plan;
     }
     // Consecutive segments share their joining point.

@@ -48,7 +48,7 @@ struct BadInput {
   std::string args;
   std::string content, content2;
   int exit_code;
-  std::string message;  // the stderr line must contain this
+  std::string message;  // the stderr line must contain this ({in} as in args)
 };
 
 void PrintTo(const BadInput& c, std::ostream* os) {
@@ -140,6 +140,19 @@ std::vector<BadInput> badInputs() {
        "unknown planner 'teleport'"},
       {"misspelt_planner_parameter", plan, withPlanner("planner: {name: astar, resolutoin: 0.5}\n"),
        "", 2, "unknown parameter 'resolutoin'"},
+      // Quadrotors over ground robots: the `aerial` section.
+      {"aerial_without_ground_robots", plan, kValid + "aerial: {planner: {name: astar}}\n", "", 2,
+       "key aerial: is for the quadrotors of a scenario with ground robots too"},
+      {"aerial_team_planner", "run {in} --no-video --out {out}",
+       withVehicles("vehicles: [{name: r, model: omni_base, start: [2, 2, 0], goal: [18, 2, 0]},\n"
+                    "           {name: u, model: cf2, start: [2, 18, 1], goal: [18, 18, 1]}]\n"
+                    "aerial: {planner: {name: cbs}}\n"),
+       "", 2, "aerial.planner.name: unknown single-agent planner 'cbs'"},
+      {"moving_obstacles_with_quadrotors_only", "run {in} --no-video --out {out}",
+       "world: {bounds: {min: [0, 0, 0], max: [20, 20, 6]},\n"
+       "        moving_obstacles: [{type: cylinder, radius: 0.5, height: 1, path: [[10, 5]]}]}\n" +
+           kVehicle + kPlanner,
+       "", 2, "moving obstacles need ground robots"},
       {"parameter_wrong_type", plan, withPlanner("planner: {name: astar, resolution: fast}\n"), "",
        2, "'resolution' must be a number"},
       {"parameter_out_of_range", plan, withPlanner("planner: {name: astar, resolution: 0}\n"), "",
@@ -148,6 +161,11 @@ std::vector<BadInput> badInputs() {
        "world: {bounds: {min: [0, 0, 0], max: [9000, 9000, 9000]}}\n" + kVehicle +
            "planner: {name: astar, resolution: 0.01}\n",
        "", 2, "exceeds the limit"},
+      // The grid is a planner's, deep in the run, but the message names the scenario file.
+      {"grid_too_large_names_the_scenario", "run {in} --no-video --quiet --out {out}",
+       "world: {bounds: {min: [0, 0, 0], max: [9000, 9000, 9000]}}\n" + kVehicle +
+           "planner: {name: astar, resolution: 0.01}\n",
+       "", 2, "{in}: grid: 900000x900000x900000 = "},
       {"unknown_trajectory_mode", plan, kValid + "trajectory: {mode: teleport}\n", "", 2,
        "must be 'waypoints' or 'minimum_snap'"},
       {"unknown_controller", plan, kValid + "controller: {name: pid}\n", "", 2,
@@ -186,10 +204,25 @@ std::vector<BadInput> badInputs() {
        "expected key=value"},
       {"out_under_regular_file", "plan {in} --out /etc/passwd/x", kValid, "", 2,
        "cannot create folder"},
+      // --set values are placed at the assignment, not at "line 1" of the file.
+      {"set_parameter_wrong_type", "plan {in} --set planner.resolution=fast --out {out}", kValid,
+       "", 2,
+       "{in}: --set planner.resolution=fast, key planner.resolution: 'resolution' must be a "
+       "number, got 'fast'"},
+      {"set_value_wrong_type", "plan {in} --set sim.timestep=abc --out {out}", kValid, "", 2,
+       "{in}: --set sim.timestep=abc, key sim.timestep: must be a number, got 'abc'"},
+      {"set_unknown_key", "plan {in} --set wrld.x=1 --out {out}", kValid, "", 2,
+       "{in}: --set wrld.x=1, key wrld: unknown key 'wrld'"},
+      // NUL and other control bytes quoted from the input are escaped, not echoed raw (a NUL
+      // cut the message short).
+      {"planner_name_with_nul", plan, withPlanner("planner: {name: \"te\\0st\\x1b\"}\n"), "", 2,
+       "unknown planner 'te\\x00st\\x1b' (known: "},
       // MovingAI maps and scenarios.
       {"map_short_row", bench, mapText(3, 2, "...\n..\n"), scen8, 2, "expected 3"},
       {"map_huge_dimensions", bench, mapText(99999999, 99999999, ""), scen8, 2,
        "height must be between"},
+      {"map_nul_character", bench, mapText(3, 2, std::string("..\0\n...\n", 8)), scen8, 2,
+       "line 5, column 3: unknown map character '\\x00'"},
       {"map_truncated", bench, mapText(8, 8, "........\n........\n"), scen8, 2,
        "expected 8 map rows, found 2"},
       {"scen_outside_map", bench, map8, "version 1\n0\tx.map\t8\t8\t0\t0\t99\t3\t5.0\n", 2,
@@ -229,7 +262,13 @@ TEST_P(BadInputTest, ExitsWithOneLineNamingTheProblemAndLeavesNoResult) {
   EXPECT_EQ(r.status, c.exit_code) << args << "\nstderr: " << r.err << "\nstdout: " << r.out;
   // The program's own message, never a crash report or an internal error.
   const std::string all = r.err + r.out;
-  EXPECT_NE(all.find(c.message), std::string::npos) << "stderr: " << r.err << "\nstdout: " << r.out;
+  const std::string message = replaceAll(c.message, "{in}", in.string());
+  EXPECT_NE(all.find(message), std::string::npos) << "stderr: " << r.err << "\nstdout: " << r.out;
+  // No raw control bytes from the input (a NUL would cut the line, an escape drive the terminal).
+  EXPECT_EQ(std::count_if(r.err.begin(), r.err.end(),
+                          [](unsigned char ch) { return (ch < 0x20 && ch != '\n') || ch == 0x7f; }),
+            0)
+      << r.err;
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("Sanitizer"), std::string::npos) << r.err;
   if (c.exit_code == 2) {

@@ -22,14 +22,15 @@ inline std::string slurp(const std::filesystem::path& p) {
   return s.str();
 }
 
-// Runs `cosim <args>` with stdout and stderr captured.
-inline CommandResult runCosim(const std::string& args) {
+// Runs `cosim <args>` with stdout and stderr captured; in folder `cwd` if one is given.
+inline CommandResult runCosim(const std::string& args, const std::filesystem::path& cwd = {}) {
   static int counter = 0;
   const auto dir = std::filesystem::temp_directory_path() /
                    ("cosim-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   std::filesystem::create_directories(dir);
-  const std::string cmd = std::string(COSIM_BINARY) + " " + args + " >" + (dir / "out").string() +
-                          " 2>" + (dir / "err").string();
+  const std::string cd = cwd.empty() ? "" : "cd '" + cwd.string() + "' && ";
+  const std::string cmd = cd + std::string(COSIM_BINARY) + " " + args + " >" +
+                          (dir / "out").string() + " 2>" + (dir / "err").string();
   const int raw = std::system(cmd.c_str());
   CommandResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

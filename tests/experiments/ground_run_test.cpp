@@ -9,6 +9,7 @@
 #include "experiments/cli/ground_run_pipeline.h"
 #include "planning/input_error.h"
 #include "tests/experiments/cli_test_support.h"
+#include "tests/experiments/headless_run.h"
 
 namespace cosim {
 namespace {
@@ -37,16 +38,7 @@ std::string teamScenario(const std::string& planner, bool crossing_straight = fa
 }
 
 RunSummary runText(const std::string& text, const std::string& name, std::string& metrics) {
-  Scenario s = parseScenario(text, "ground_test.yaml");
-  RunRequest request;
-  request.out_dir = test::freshDir(name);
-  std::filesystem::create_directories(request.out_dir);
-  request.video = false;
-  request.images = false;
-  const RunSummary summary = executeGroundRun(s, request);
-  metrics = test::slurp(request.out_dir / "metrics.json");
-  std::filesystem::remove_all(request.out_dir);
-  return summary;
+  return test::runWithoutPictures(parseScenario(text, "ground_test.yaml"), name, metrics);
 }
 
 TEST(GroundTeamRun, TenRobotsOnValidCbsPlanHaveNoRobotContacts) {

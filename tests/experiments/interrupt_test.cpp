@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <thread>
@@ -22,8 +23,17 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Starts `cosim args...` with stderr sent to `err_file`; returns its pid.
-pid_t spawnCosim(const std::vector<std::string>& args, const fs::path& err_file) {
+// Starts `cosim args...` with stderr sent to `err_file`; returns its pid. own_group: in a new
+// process group (pgid = pid), as a shell starts a foreground job, so that kill(-pid, ...) is
+// what a Ctrl-C at the terminal does: the signal goes to every process of the group.
+pid_t spawnCosim(const std::vector<std::string>& args, const fs::path& err_file,
+                 bool own_group = false) {
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  if (own_group) {
+    posix_spawnattr_setpgroup(&attr, 0);
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+  }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
@@ -35,8 +45,9 @@ pid_t spawnCosim(const std::vector<std::string>& args, const fs::path& err_file)
   for (auto& a : all) argv.push_back(a.data());
   argv.push_back(nullptr);
   pid_t pid = -1;
-  const int rc = posix_spawn(&pid, COSIM_BINARY, &actions, nullptr, argv.data(), environ);
+  const int rc = posix_spawn(&pid, COSIM_BINARY, &actions, &attr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attr);
   return rc == 0 ? pid : -1;
 }
 
@@ -50,9 +61,19 @@ bool waitForText(const fs::path& file, const std::string& text, std::chrono::sec
   return false;
 }
 
-int waitExit(pid_t pid) {
+// The exit status, or -1 if it died of a signal (SIGPIPE was the symptom: 141 in a shell), or
+// -2 if it did not end within `limit` (then it is killed).
+int waitExitWithin(pid_t pid, std::chrono::seconds limit) {
+  const auto end = std::chrono::steady_clock::now() + limit;
   int raw = 0;
-  waitpid(pid, &raw, 0);
+  while (waitpid(pid, &raw, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > end) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &raw, 0);
+      return -2;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
   return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
 }
 
@@ -69,15 +90,14 @@ void interruptDuringFlight(int signal_number, const std::string& name) {
   const fs::path out = dir / "run", err = dir / "err";
   // A long, slow flight (0.05 m/s for 600 s of simulated time, seconds of wall time): the signal
   // surely arrives while the vehicle is in the air.
-  const pid_t pid =
-      spawnCosim({"run", "--no-video", "--out", out.string(), "--set", "sim.max_time=600", "--set",
-                  "trajectory.max_speed=0.05"},
-                 err);
+  const pid_t pid = spawnCosim({"run", "--no-video", "--out", out.string(), "--set",
+                                "sim.max_time=600", "--set", "trajectory.max_speed=0.05"},
+                               err);
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(waitForText(err, "cosim: flying", std::chrono::seconds(120))) << slurp(err);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   kill(pid, signal_number);
-  EXPECT_EQ(waitExit(pid), 1);
+  EXPECT_EQ(waitExitWithin(pid, std::chrono::seconds(120)), 1);
   EXPECT_NE(slurp(err).find("interrupted"), std::string::npos) << slurp(err);
   expectNoFinishedOrTemporaryFiles(out);
   fs::remove_all(dir);
@@ -99,7 +119,7 @@ TEST(Interrupt, RunningAgainIntoTheInterruptedFolderCompletes) {
   ASSERT_GT(pid, 0);
   ASSERT_TRUE(waitForText(err, "cosim: flying", std::chrono::seconds(120))) << slurp(err);
   kill(pid, SIGTERM);
-  ASSERT_EQ(waitExit(pid), 1);
+  ASSERT_EQ(waitExitWithin(pid, std::chrono::seconds(120)), 1);
   expectNoFinishedOrTemporaryFiles(out);
 
   const CommandResult again = runCosim("run --no-video --quiet --out " + out.string());
@@ -107,6 +127,130 @@ TEST(Interrupt, RunningAgainIntoTheInterruptedFolderCompletes) {
   const std::string metrics = slurp(out / "metrics.json");
   EXPECT_TRUE(jsonTrue(metrics, "reached_goal")) << metrics;
   EXPECT_NE(metrics.find("\"end_reason\": \"goal\""), std::string::npos) << metrics;
+  fs::remove_all(dir);
+}
+
+// --- Interrupted while rendering the video -------------------------------------------------
+
+// The first file in `dir` whose name contains `part` (ffmpeg's output in progress), or "".
+fs::path partialFile(const fs::path& dir, const std::string& part) {
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.path().filename().string().find(part) != std::string::npos) return e.path();
+  return {};
+}
+
+// Waits (up to `limit`) until ffmpeg has written into a temporary file in `dir`.
+bool waitForPartialVideo(const fs::path& dir, std::chrono::seconds limit) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < end) {
+    const fs::path p = partialFile(dir, ".part");
+    std::error_code ec;
+    if (!p.empty() && fs::file_size(p, ec) > 0 && !ec) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+// Processes (other than the test) whose command line mentions `text`: an ffmpeg left running
+// would be one.
+std::vector<pid_t> processesMentioning(const std::string& text) {
+  std::vector<pid_t> found;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator("/proc", ec)) {
+    const std::string pid = e.path().filename().string();
+    if (pid.find_first_not_of("0123456789") != std::string::npos || pid == std::to_string(getpid()))
+      continue;
+    std::string cmdline = slurp(e.path() / "cmdline");
+    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
+    if (cmdline.find(text) != std::string::npos) found.push_back(std::stoi(pid));
+  }
+  return found;
+}
+
+// Starts `cosim run` (in its own process group) making a small video of a slowed-down replay:
+// thousands of 160x96 frames, so rendering is surely under way for a while when a signal comes.
+pid_t spawnSlowVideoRun(const fs::path& out, const fs::path& err) {
+  return spawnCosim({"run", "--no-images", "--out", out.string(), "--set", "render.width=160",
+                     "--set", "render.height=96", "--set", "render.speedup=0.2"},
+                    err, /*own_group=*/true);
+}
+
+void interruptDuringVideo(int signal_number, bool to_group, const std::string& name) {
+  const fs::path dir = freshDir("interrupt-video-" + name);
+  fs::create_directories(dir);
+  const fs::path out = dir / "run", err = dir / "err";
+  const pid_t pid = spawnSlowVideoRun(out, err);
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(waitForText(err, "cosim: rendering video.mp4", std::chrono::seconds(120)))
+      << slurp(err);
+  ASSERT_TRUE(waitForPartialVideo(out, std::chrono::seconds(60))) << slurp(err);
+  kill(to_group ? -pid : pid, signal_number);
+  // Promptly: the frame loop polls the flag (the whole video would take many seconds more).
+  EXPECT_EQ(waitExitWithin(pid, std::chrono::seconds(15)), 1) << slurp(err);
+  EXPECT_NE(slurp(err).find("interrupted; " + out.string() + " holds no finished run"),
+            std::string::npos)
+      << slurp(err);
+  expectNoFinishedOrTemporaryFiles(out);
+  EXPECT_FALSE(fs::exists(out / "video.mp4"));
+  EXPECT_FALSE(fs::exists(out / "index.html"));
+  EXPECT_EQ(partialFile(out, ".part"), fs::path()) << "ffmpeg's partial output was left behind";
+  EXPECT_TRUE(processesMentioning(out.string()).empty()) << "ffmpeg still running";
+  fs::remove_all(dir);
+}
+
+TEST(Interrupt, CtrlCDuringTheVideoStopsRenderingDeletesThePartialVideoAndExitsOne) {
+  // SIGINT to the whole process group, as the terminal sends it: ffmpeg must not die under
+  // cosim (which then died of SIGPIPE writing into the pipe, leaving the partial file).
+  interruptDuringVideo(SIGINT, /*to_group=*/true, "ctrl-c");
+}
+
+TEST(Interrupt, SigtermDuringTheVideoStopsRenderingDeletesThePartialVideoAndExitsOne) {
+  interruptDuringVideo(SIGTERM, /*to_group=*/false, "term");
+}
+
+TEST(Interrupt, CtrlCDuringCosimRenderExitsOneAndWritesNoVideo) {
+  const fs::path dir = freshDir("interrupt-render");
+  fs::create_directories(dir);
+  const fs::path run = dir / "run", err = dir / "err", video = run / "replay.mp4";
+  const CommandResult flown = runCosim("run --no-video --no-images --quiet --out " + run.string());
+  ASSERT_EQ(flown.status, 0) << flown.err;
+  const pid_t pid = spawnCosim({"render", run.string(), "--width", "160", "--height", "96",
+                                "--speedup", "0.2", "--out", video.string()},
+                               err, /*own_group=*/true);
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(waitForPartialVideo(run, std::chrono::seconds(60))) << slurp(err);
+  kill(-pid, SIGINT);
+  EXPECT_EQ(waitExitWithin(pid, std::chrono::seconds(15)), 1) << slurp(err);
+  EXPECT_NE(slurp(err).find("interrupted; " + video.string() + " was not written"),
+            std::string::npos)
+      << slurp(err);
+  EXPECT_FALSE(fs::exists(video));
+  EXPECT_EQ(partialFile(run, ".part"), fs::path());
+  EXPECT_TRUE(processesMentioning(video.filename().string() + ".part").empty())
+      << "ffmpeg still running";
+  // The run itself is untouched and still finished.
+  EXPECT_TRUE(fs::exists(run / "metrics.json"));
+  fs::remove_all(dir);
+}
+
+TEST(VideoFailure, FfmpegDyingMidVideoIsAnErrorMessageNotADeathBySigpipe) {
+  const fs::path dir = freshDir("ffmpeg-dies");
+  fs::create_directories(dir);
+  const fs::path out = dir / "run", err = dir / "err";
+  const pid_t pid = spawnSlowVideoRun(out, err);
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(waitForPartialVideo(out, std::chrono::seconds(120))) << slurp(err);
+  const std::vector<pid_t> ffmpeg = processesMentioning(".video.mp4.part" + std::to_string(pid));
+  ASSERT_EQ(ffmpeg.size(), 1u);
+  kill(ffmpeg.front(), SIGKILL);
+  // cosim's next write into the pipe fails (EPIPE): it reports that, as an internal error.
+  EXPECT_EQ(waitExitWithin(pid, std::chrono::seconds(15)), 3) << slurp(err);
+  EXPECT_NE(slurp(err).find("cosim: internal error: ffmpeg failed while writing"),
+            std::string::npos)
+      << slurp(err);
+  EXPECT_EQ(partialFile(out, ".part"), fs::path());
+  EXPECT_FALSE(fs::exists(out / "metrics.json"));
   fs::remove_all(dir);
 }
 

@@ -101,3 +101,35 @@ TEST(MapfBench, QuickSectionReportsBothPlannersAtTwentyAgents) {
   }
   EXPECT_EQ(found, 2);
 }
+
+// The plan driven by ground robots in MuJoCo: every robot arrives, no robot touches another or a
+// block, and the execution's scenario (written next to the results) is the map with its cells.
+TEST(MapfCommand, ExecuteDrivesTheCbsPlanWithRobotsInPhysicsWithoutContacts) {
+  const auto dir = test::freshDir("mapf-execute");
+  const std::string map = COSIM_TEST_DATA_DIR "/mapf/empty-8-8.map";
+  const std::string scen = COSIM_TEST_DATA_DIR "/mapf/empty-8-8-random-1.scen";
+  const auto r = runCosim("mapf " + map + " " + scen +
+                          " --agents 6 --planner cbs --block 3,3 --block 4,3 --execute --out " +
+                          dir.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string planned = test::slurp(dir / "mapf.json");
+  const std::string run = test::slurp(dir / "execution" / "metrics.json");
+  ASSERT_FALSE(run.empty()) << r.err;
+  EXPECT_TRUE(test::jsonTrue(run, "reached_goal"));
+  EXPECT_EQ(test::jsonNumber(run, "robots"), 6);
+  EXPECT_EQ(test::jsonNumber(run, "robot_contacts"), 0);
+  EXPECT_EQ(test::jsonNumber(run, "obstacle_contacts"), 0);
+  // The physics ran the same plan: its step count times the step time is the planned makespan
+  // (one step of settling and one onto the goal point aside).
+  const double step = test::jsonNumber(run, "step_time_s");
+  EXPECT_NEAR(test::jsonNumber(run, "planned_makespan_s"),
+              test::jsonNumber(planned, "makespan") * step + 0.2, 1.01 * step);
+  // Followed within a fraction of the 0.5 m cell.
+  EXPECT_LT(test::jsonNumber(run, "max_error_m"), 0.1);
+  // The user's blocks are in the scenario, which `cosim run` can run again.
+  const std::string yaml = test::slurp(dir / "execution" / "scenario.yaml");
+  EXPECT_NE(yaml.find("blocked"), std::string::npos);
+  EXPECT_NE(yaml.find("[4, 3]"), std::string::npos);
+  EXPECT_NE(r.out.find("6/6 robots arrived, 0 contacts"), std::string::npos) << r.out;
+  std::filesystem::remove_all(dir);
+}

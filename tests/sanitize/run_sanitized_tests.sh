@@ -9,8 +9,10 @@ ROOT=$(pwd)
 BUILD=${COSIM_ASAN_BUILD_DIR:-$ROOT/build-asan}
 JOBS=${JOBS:-$(nproc 2>/dev/null || echo 2)}
 
-# Release optimisation keeps the simulation tests fast enough; -g for readable reports.
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCOSIM_SANITIZE=ON >/dev/null
+# -O1 (the optimisation ASan's authors recommend) keeps the simulation tests fast enough and
+# compiles much faster than -O2; -g1 gives file:line in reports at a fraction of -g's cost.
+cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-O1 -g1" -DCOSIM_SANITIZE=ON \
+  >/dev/null
 cmake --build "$BUILD" -j"$JOBS"
 
 # MuJoCo and Mesa (OSMesa/llvmpipe) are not instrumented: lsan.supp names only those

@@ -119,3 +119,43 @@ TEST(ScenarioLoader, NonFiniteNumberIsRejected) {
   const std::string e = placeOfError(replace(kGood, "max_time: 60", "max_time: .nan"));
   EXPECT_NE(e.find("sim.max_time"), std::string::npos) << e;
 }
+
+// world.grid_map: a MovingAI map as the world (seed 004's grid worlds).
+namespace {
+std::string gridMapScenario(const std::string& grid_map, const std::string& extra_world = "") {
+  return "world:\n  grid_map: " + grid_map + "\n" + extra_world +
+         "vehicles: [{name: r0, model: omni_base, start: [0.25, 0.25, 0], goal: [3.75, 3.75, "
+         "0]}]\n";
+}
+const std::string kEightByEight = COSIM_TEST_DATA_DIR "/mapf/empty-8-8.map";
+}  // namespace
+
+TEST(ScenarioLoader, GridMapBecomesTheWorldWithTheUsersBlockedCells) {
+  const Scenario s =
+      parseScenario(gridMapScenario("{file: " + kEightByEight +
+                                    ", cell: 0.5, height: 0.4, blocked: [[3, 3], [4, 3]]}"),
+                    "s.yaml");
+  ASSERT_TRUE(s.grid_map.present());
+  EXPECT_EQ(s.world.bounds_max, Eigen::Vector3d(4.0, 4.0, 3.0));
+  EXPECT_EQ(s.grid_map.grid.blockedCount(), 2u);
+  EXPECT_TRUE(s.grid_map.grid.blocked(4, 3));
+  // Two neighbouring cells: one box 1 m x 0.5 m, centred between them.
+  ASSERT_EQ(s.world.obstacles.size(), 1u);
+  EXPECT_EQ(s.world.obstacles[0].pos, Eigen::Vector3d(2.0, 1.75, 0.2));
+}
+
+TEST(ScenarioLoader, GridMapRejectsBoundsBesideItAndCellsOffTheMap) {
+  EXPECT_NE(placeOfError(gridMapScenario("{file: " + kEightByEight + "}",
+                                         "  bounds: {min: [0, 0, 0], max: [4, 4, 2]}\n"))
+                .find("world.bounds | comes from world.grid_map"),
+            std::string::npos);
+  EXPECT_NE(placeOfError(gridMapScenario("{file: " + kEightByEight + ", blocked: [[8, 0]]}"))
+                .find("world.grid_map.blocked[0]"),
+            std::string::npos);
+  EXPECT_NE(placeOfError(gridMapScenario("{file: nowhere.map}")).find("file not found"),
+            std::string::npos);
+  // A start on a blocked cell is inside an obstacle.
+  EXPECT_NE(placeOfError(gridMapScenario("{file: " + kEightByEight + ", blocked: [[0, 0]]}"))
+                .find("inside obstacle"),
+            std::string::npos);
+}

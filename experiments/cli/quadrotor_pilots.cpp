@@ -1,0 +1,100 @@
+#include "experiments/cli/quadrotor_pilots.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "control/waypoint_reference.h"
+#include "planning/trajectory/minimum_snap_trajectory.h"
+#include "sim/controller_factory.h"
+#include "sim/trajectory_reference.h"
+
+namespace cosim {
+
+namespace {
+
+// A minimum-snap trajectory through the planned path, within the airframe's limits: speed and
+// acceleration from the scenario's trajectory section, thrust from the model (keeping 20 % of
+// the rotors' thrust for control).
+MinimumSnapResult fitMinimumSnap(const Scenario& s, const VehicleSpec& spec,
+                                 const QuadrotorParams& q, const Path& path, ParamSet& p) {
+  MinimumSnapOptions o;
+  o.limits.max_speed = p.getDouble("max_speed", 3.0, 0.01, 100.0);
+  o.limits.max_acceleration = p.getDouble("max_acceleration", 3.0, 0.01, 100.0);
+  o.limits.gravity = q.gravity;
+  if (!spec.ground) o.limits.max_thrust_accel = 0.8 * 4.0 * q.max_thrust / q.mass;
+  o.time_penalty = p.getDouble("k_t", o.time_penalty, 0.0, 1e9);
+  o.optimize_times = p.getBool("optimize_times", o.optimize_times);
+  o.shortcut = p.getBool("shortcut", o.shortcut);
+  o.max_repair_rounds = p.getInt("max_repair_rounds", o.max_repair_rounds, 0, 100);
+  p.requireAllUsed("trajectory mode 'minimum_snap'");
+  o.validate();
+  // The curve must keep the vehicle's radius plus half the planner's margin clear: the other half
+  // is the budget for tracking error.
+  return MinimumSnapTrajectory(o).fit(path, s.world, q.radius + 0.5 * s.planner_margin);
+}
+
+void progressLine(bool enabled, const std::string& text) {
+  if (enabled) std::cerr << "cosim: " << text << std::endl;
+}
+
+}  // namespace
+
+QuadrotorPilots prepareQuadrotorPilots(Scenario& scenario, const WorldModel& world,
+                                       const std::vector<std::size_t>& vehicles,
+                                       const RunRequest& request) {
+  QuadrotorPilots q;
+  // 1. Plan a path for every quadrotor.
+  for (std::size_t v : vehicles) {
+    progressLine(request.progress,
+                 "planning " + scenario.vehicles[v].name + " with " +
+                     (scenario.planner_name.empty() ? std::string("given waypoints")
+                                                    : scenario.planner_name));
+    const double radius = request.plan_as_point_mass ? 0.0 : world.vehicles()[v].params.radius;
+    if (request.plan_as_point_mass) scenario.planner_margin = 0.0;
+    q.plans.push_back(planVehicle(scenario, scenario.vehicles[v], radius, scenario.planner_params));
+    for (const auto& name : q.plans.back().ignored_params)
+      progressLine(request.progress, "note: planner." + name + " does not apply to " +
+                                         scenario.planner_name + " (ignored)");
+  }
+  for (const auto& p : q.plans)
+    if (!p.success) q.failure = "no path found: " + p.message;
+  if (!q.failure.empty()) return q;
+
+  // 2. Reference and controller per quadrotor.
+  for (std::size_t k = 0; k < vehicles.size(); ++k) {
+    const std::size_t v = vehicles[k];
+    const VehicleSpec& spec = scenario.vehicles[v];
+    ParamSet traj = scenario.trajectory_params;
+    if (scenario.trajectory_mode == "waypoints") {
+      const double radius = traj.getDouble("switch_radius", 0.2, 0.01, 100.0);
+      traj.requireAllUsed("trajectory mode 'waypoints'");
+      q.references.push_back(std::make_unique<WaypointReference>(
+          q.plans[k].path.waypoints, spec.yaw_deg * M_PI / 180.0, radius));
+    } else {
+      MinimumSnapResult fit =
+          fitMinimumSnap(scenario, spec, world.vehicles()[v].params, q.plans[k].path, traj);
+      if (!fit.success) {
+        q.failure = "no feasible trajectory: " + fit.message;
+        q.pilots.clear();
+        return q;
+      }
+      q.plans[k].trajectory_counters = fit.counters;
+      q.references.push_back(std::make_unique<TrajectoryReference>(std::move(fit.trajectory),
+                                                                   spec.yaw_deg * M_PI / 180.0));
+    }
+    ParamSet gains = scenario.controller_gains;
+    q.controllers.push_back(
+        makeFlightController(scenario.controller_name, gains, world.vehicles()[v].params));
+    VehiclePilot pilot;
+    pilot.controller = q.controllers.back().get();
+    pilot.reference = q.references.back().get();
+    pilot.goal = spec.goal();
+    pilot.planned_path = q.plans[k].path.waypoints;
+    q.pilots.push_back(pilot);
+  }
+  q.ready = true;
+  return q;
+}
+
+}  // namespace cosim

@@ -1,0 +1,71 @@
+#pragma once
+// One quadrotor's share of a simulation loop, for every loop that flies quadrotors
+// (sim/flight_simulation.h; sim/ground_simulation.h flies them over ground robots): the hover
+// start, then at each control step: measure the state, ask the reference for the set-point, run
+// the controller, command the rotors, log a sample, and book arrival, saturation and divergence.
+#include <Eigen/Core>
+#include <cstddef>
+#include <vector>
+
+#include "control/flight_controller.h"
+#include "control/reference_source.h"
+#include "sim/run_log.h"
+#include "sim/world_model.h"
+
+namespace cosim {
+
+// One vehicle's brain: where its set-point comes from and what turns it into rotor thrusts.
+struct VehiclePilot {
+  FlightController* controller = nullptr;
+  ReferenceSource* reference = nullptr;
+  Eigen::Vector3d goal = Eigen::Vector3d::Zero();
+  std::vector<Eigen::Vector3d> planned_path;  // for the log
+};
+
+// When a quadrotor has arrived, has failed, or is lost.
+struct AerialStepRules {
+  // The run's goal tolerance; diverged beyond ten world diagonals from the world's centre.
+  AerialStepRules(const SimSettings& settings, const World& world, double hold_after_arrival,
+                  double max_saturated_time);
+
+  double goal_tolerance = 0.2;      // m: arrived within this distance of the goal
+  double hold_after_arrival = 1.0;  // s of hovering at the goal before it counts as done
+  // A mixer saturated this long without a break cannot follow its reference.
+  double max_saturated_time = 2.0;  // s
+  // Diverged: a non-finite position, or farther than `far` from `centre`.
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  double far = 1e9;  // m
+};
+
+// The measured state of a vehicle's free body.
+VehicleState readVehicleState(const mjModel* m, const mjData* d, const VehicleHandles& v);
+
+// Rotors already spinning at hover thrust (commands and the motor filters' states): the motor lag
+// would otherwise drop the vehicle for its first tens of milliseconds.
+void startHovering(const mjModel* m, mjData* d, const VehicleHandles& v);
+
+class AerialPilotStep {
+ public:
+  AerialPilotStep(const VehicleHandles& vehicle, VehiclePilot& pilot, const AerialStepRules& rules);
+
+  // The vehicle's log entry (name, size, thrust limit, goal, planned path, room for
+  // `expected_samples`); resets the controller.
+  VehicleLog begin(std::size_t expected_samples);
+
+  struct Outcome {
+    bool done = false;       // arrived and held the goal for hold_after_arrival
+    bool saturated = false;  // saturated for longer than max_saturated_time
+    bool diverged = false;
+  };
+  // One control step at d->time: writes the rotor commands into d->ctrl and, if `record`, a
+  // sample into `log`. Arrival and saturation are booked at every step, recorded or not.
+  Outcome step(const mjModel* m, mjData* d, double control_dt, VehicleLog& log, bool record);
+
+ private:
+  const VehicleHandles* vehicle_;
+  VehiclePilot* pilot_;
+  AerialStepRules rules_;
+  double saturated_since_ = -1.0;  // since when the mixer has been saturated (negative: it is not)
+};
+
+}  // namespace cosim
