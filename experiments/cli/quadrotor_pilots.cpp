@@ -17,7 +17,7 @@ namespace {
 // acceleration from the scenario's trajectory section, thrust from the model (keeping 20 % of
 // the rotors' thrust for control).
 MinimumSnapResult fitMinimumSnap(const Scenario& s, const VehicleSpec& spec,
-                                 const QuadrotorParams& q, const Path& path, ParamSet& p) {
+                                 const QuadrotorParams& q, const VehiclePlan& plan, ParamSet& p) {
   MinimumSnapOptions o;
   o.limits.max_speed = p.getDouble("max_speed", 3.0, 0.01, 100.0);
   o.limits.max_acceleration = p.getDouble("max_acceleration", 3.0, 0.01, 100.0);
@@ -31,7 +31,8 @@ MinimumSnapResult fitMinimumSnap(const Scenario& s, const VehicleSpec& spec,
   o.validate();
   // The curve must keep the vehicle's radius plus half the planner's margin clear: the other half
   // is the budget for tracking error.
-  return MinimumSnapTrajectory(o).fit(path, s.world, q.radius + 0.5 * s.planner_margin);
+  return MinimumSnapTrajectory(o).fit(plan.path, s.world, q.radius + 0.5 * s.planner_margin,
+                                      plan.via_indices);
 }
 
 void progressLine(bool enabled, const std::string& text) {
@@ -73,7 +74,7 @@ QuadrotorPilots prepareQuadrotorPilots(Scenario& scenario, const WorldModel& wor
           q.plans[k].path.waypoints, spec.yaw_deg * M_PI / 180.0, radius));
     } else {
       MinimumSnapResult fit =
-          fitMinimumSnap(scenario, spec, world.vehicles()[v].params, q.plans[k].path, traj);
+          fitMinimumSnap(scenario, spec, world.vehicles()[v].params, q.plans[k], traj);
       if (!fit.success) {
         q.failure = "no feasible trajectory: " + fit.message;
         q.pilots.clear();

@@ -13,7 +13,10 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, do
   if (scenario.planner_name.empty()) {
     plan.success = true;
     plan.path.waypoints.push_back(vehicle.start);
-    for (const auto& w : vehicle.waypoints) plan.path.waypoints.push_back(w);
+    for (const auto& w : vehicle.waypoints) {
+      plan.path.waypoints.push_back(w);
+      plan.via_indices.push_back(plan.path.waypoints.size() - 1);
+    }
     return plan;
   }
   const double time_limit = params.getDouble("time_limit", 30.0, 0.001, 86400.0);
@@ -51,6 +54,7 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, do
     // Consecutive segments share their joining point.
     for (std::size_t k = 1; k < r.path.waypoints.size(); ++k)
       plan.path.waypoints.push_back(r.path.waypoints[k]);
+    plan.via_indices.push_back(plan.path.waypoints.size() - 1);
     from = vehicle.waypoints[i];
   }
   plan.success = true;

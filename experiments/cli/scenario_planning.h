@@ -14,17 +14,20 @@ struct VehiclePlan {
   bool success = false;
   Path path;
   double time_ms = 0.0;
-  std::map<std::string, double> counters;  // summed over segments
+  std::map<std::string, double> counters;     // summed over segments
   std::map<std::string, std::string> params;  // the planner's parameters in force
   std::string message;
   double inflation = 0.0;  // vehicle radius + margin the planner kept clear
-  std::map<std::string, double> trajectory_counters;
-  std::vector<std::string> ignored_params;  // taken by other planners, not by this one  // from the minimum-snap fit, if any
+  std::map<std::string, double> trajectory_counters;  // from the minimum-snap fit, if any
+  std::vector<std::string> ignored_params;            // taken by other planners, not by this one
+  // Indices in `path` of the vehicle's waypoints (the points it was asked to visit, the goal
+  // last): a trajectory through the path must not cut past them.
+  std::vector<std::size_t> via_indices;
 };
 
 // planner_params is consumed (parameters are marked used); `vehicle_radius` comes from the model.
 // Throws InputError for an unknown planner or bad parameters.
-VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle,
-                        double vehicle_radius, ParamSet planner_params);
+VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, double vehicle_radius,
+                        ParamSet planner_params);
 
 }  // namespace cosim

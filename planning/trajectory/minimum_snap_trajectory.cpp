@@ -46,17 +46,47 @@ MinimumSnapTrajectory::MinimumSnapTrajectory(const MinimumSnapOptions& options)
 }
 
 MinimumSnapResult MinimumSnapTrajectory::fit(const Path& path) const {
-  return fitImpl(path, nullptr, 0.0);
+  return fitImpl(path, nullptr, 0.0, {});
 }
 
-MinimumSnapResult MinimumSnapTrajectory::fit(const Path& path, const World& world,
-                                             double inflation) const {
+MinimumSnapResult MinimumSnapTrajectory::fit(const Path& path, const World& world, double inflation,
+                                             const std::vector<std::size_t>& via) const {
   if (!(inflation >= 0.0)) throw InputError("trajectory", "inflation", "must be >= 0");
-  return fitImpl(path, &world, inflation);
+  return fitImpl(path, &world, inflation, via);
+}
+
+std::vector<Eigen::Vector3d> MinimumSnapTrajectory::thinWaypoints(
+    const Path& path, const World* world, double inflation,
+    const std::vector<std::size_t>& via) const {
+  const std::size_t n = path.waypoints.size();
+  if (n < 2) return path.waypoints;
+  std::vector<std::size_t> keep{0};
+  for (std::size_t i : via)
+    if (i > 0 && i + 1 < n) keep.push_back(i);
+  keep.push_back(n - 1);
+  std::sort(keep.begin(), keep.end());
+  keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+
+  std::vector<Eigen::Vector3d> out;
+  for (std::size_t j = 0; j + 1 < keep.size(); ++j) {
+    std::vector<Eigen::Vector3d> leg(path.waypoints.begin() + static_cast<long>(keep[j]),
+                                     path.waypoints.begin() + static_cast<long>(keep[j + 1]) + 1);
+    leg = dropDuplicateWaypoints(leg, kDuplicateDistance);
+    leg = dropCollinearWaypoints(leg, options_.collinear_tolerance);
+    if (world && options_.shortcut) {
+      const InflatedWorld wider(*world, inflation + options_.shortcut_margin, leg);
+      leg = shortcutWaypoints(leg, wider);
+    }
+    // Consecutive legs share their joining point.
+    out.insert(out.end(), leg.begin() + (out.empty() ? 0 : 1), leg.end());
+  }
+  // A via point on top of its neighbour would make a segment of zero length.
+  return dropDuplicateWaypoints(out, kDuplicateDistance);
 }
 
 MinimumSnapResult MinimumSnapTrajectory::fitImpl(const Path& path, const World* world,
-                                                 double inflation) const {
+                                                 double inflation,
+                                                 const std::vector<std::size_t>& via) const {
   const Deadline clock(1e9);  // only to report time_ms
   MinimumSnapResult result;
   result.counters["input_waypoints"] = static_cast<double>(path.size());
@@ -66,13 +96,7 @@ MinimumSnapResult MinimumSnapTrajectory::fitImpl(const Path& path, const World* 
   }
 
   // 1. Thinning.
-  std::vector<Eigen::Vector3d> waypoints =
-      dropDuplicateWaypoints(path.waypoints, kDuplicateDistance);
-  waypoints = dropCollinearWaypoints(waypoints, options_.collinear_tolerance);
-  if (world && options_.shortcut) {
-    const InflatedWorld wider(*world, inflation + options_.shortcut_margin, waypoints);
-    waypoints = shortcutWaypoints(waypoints, wider);
-  }
+  std::vector<Eigen::Vector3d> waypoints = thinWaypoints(path, world, inflation, via);
   result.counters["thinned_waypoints"] = static_cast<double>(waypoints.size());
 
   if (waypoints.size() == 1) {  // start = goal: hold the point

@@ -58,11 +58,18 @@ class MinimumSnapTrajectory {
   // In free space: no shortcuts, no collision check.
   MinimumSnapResult fit(const Path& path) const;
   // In `world` for a vehicle needing `inflation` metres of clearance (distance to an obstacle
-  // <= inflation is a collision).
-  MinimumSnapResult fit(const Path& path, const World& world, double inflation) const;
+  // <= inflation is a collision). `via`: indices of path points the curve must pass through
+  // (waypoints the user asked to visit); thinning and shortcuts work between them, never past
+  // them. The path's ends are always kept.
+  MinimumSnapResult fit(const Path& path, const World& world, double inflation,
+                        const std::vector<std::size_t>& via = {}) const;
 
  private:
-  MinimumSnapResult fitImpl(const Path& path, const World* world, double inflation) const;
+  MinimumSnapResult fitImpl(const Path& path, const World* world, double inflation,
+                            const std::vector<std::size_t>& via) const;
+  // Step 1: duplicates, straight runs and (with a world) line-of-sight shortcuts, leg by leg.
+  std::vector<Eigen::Vector3d> thinWaypoints(const Path& path, const World* world, double inflation,
+                                             const std::vector<std::size_t>& via) const;
   MinimumSnapOptions options_;
 };
 

@@ -269,3 +269,25 @@ TEST(MinimumSnapTrajectory, StartEqualsGoalHoldsThePoint) {
   EXPECT_EQ(r.trajectory.duration(), 0.0);
   EXPECT_EQ(r.trajectory.sample(5.0).position, Vector3d(1, 2, 3));
 }
+
+// A waypoint the user asked to visit survives thinning: line-of-sight shortcuts and straight-run
+// merging work between such points, never past them.
+TEST(MinimumSnapTrajectory, ShortcutsNeverSkipAViaPoint) {
+  const World world = cornerWorld();
+  // A detour out to y = 6 and back: in the open, the shortcut goes straight to the goal.
+  const Path path{{Vector3d(0, 1, 1), Vector3d(0, 6, 1), Vector3d(1, 6, 1), Vector3d(2, 1, 1)}};
+  const MinimumSnapTrajectory generator;
+  const MinimumSnapResult free_to_cut = generator.fit(path, world, 0.3);
+  ASSERT_TRUE(free_to_cut.success) << free_to_cut.message;
+  EXPECT_EQ(free_to_cut.waypoints.size(), 2u);
+
+  const MinimumSnapResult kept = generator.fit(path, world, 0.3, {1});
+  ASSERT_TRUE(kept.success) << kept.message;
+  ASSERT_GE(kept.waypoints.size(), 3u);
+  EXPECT_EQ(kept.waypoints.waypoints[1], Vector3d(0, 6, 1));
+  // The curve passes through it.
+  double nearest = 1e9;
+  for (double t = 0; t <= kept.trajectory.duration(); t += 0.01)
+    nearest = std::min(nearest, (kept.trajectory.sample(t).position - Vector3d(0, 6, 1)).norm());
+  EXPECT_LT(nearest, 0.02);
+}
