@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -204,6 +205,39 @@ TEST_F(SweepCommandTest, AnInterruptedSweepResumesWithoutDuplicatedOrTruncatedRo
     ids.insert(rows[i][0]);
   }
   EXPECT_EQ(ids.size(), 8u);
+}
+
+}  // namespace
+}  // namespace cosim
+
+namespace cosim {
+namespace {
+
+// CONTRACT.md's sweep example names the bundled forest and canyon scenarios (paths relative to
+// the project); with one planner and one seed it is two jobs, both flown to the goal.
+TEST(SweepContractExample, TheContractsForestAndCanyonExampleRunsFromTheProjectFolder) {
+  const fs::path dir = test::freshDir("sweep-contract-example");
+  fs::create_directories(dir);
+  std::ofstream(dir / "example.yaml")
+      << "scenarios: [experiments/scenarios/forest.yaml, experiments/scenarios/canyon.yaml]\n"
+         "vary:\n  planner.name: [theta_star]\n  sim.seed: [1]\noutput: {video: false}\n";
+  const auto r = runCosim(
+      "sweep " + (dir / "example.yaml").string() + " --out " + (dir / "out").string() + " --quiet",
+      COSIM_SOURCE_DIR);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(dir / "out" / "results.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  const auto& header = rows[0];
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) - header.begin());
+  };
+  for (int job = 1; job <= 2; ++job) {
+    EXPECT_EQ(rows[job].at(column("status")), "ok");
+    EXPECT_EQ(rows[job].at(column("reached_goal")), "true");
+    EXPECT_EQ(rows[job].at(column("collisions")), "0");
+  }
+  EXPECT_EQ(rows[2].at(column("scenario")), "experiments/scenarios/canyon.yaml");
+  fs::remove_all(dir);
 }
 
 }  // namespace
