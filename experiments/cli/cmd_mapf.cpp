@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "experiments/cli/command.h"
+#include "experiments/cli/ground_run_pipeline.h"
 #include "experiments/cli/interrupt_flag.h"
 #include "experiments/cli/mapf_execution.h"
 #include "experiments/cli/output_files.h"
@@ -20,6 +21,7 @@
 #include "planning/mapf/solution_validator.h"
 #include "sim/json_writer.h"
 #include "sim/scenario.h"
+#include "sim/world_model.h"
 
 namespace cosim::cli {
 
@@ -119,6 +121,31 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
     }
     checkMapfInstance(inst, a->blocks.empty() ? a->scen : "--block");
 
+    // The execution's scenario, checked before planning: a robot model that does not load or
+    // does not fit the cells is bad input found at once, not after a plan has been written.
+    MapfExecutionSetup setup;
+    if (a->execute) {
+      setup.map_path = std::filesystem::absolute(a->map).string();
+      for (const std::string& b : a->blocks) setup.extra_blocked.push_back(parseCell(b));
+      setup.starts = inst.starts;
+      setup.goals = inst.goals;
+      setup.planner = a->planner;
+      setup.planner_sets = a->sets;
+      if (a->window > 0) setup.planner_sets.push_back("window=" + std::to_string(a->window));
+      setup.connectivity = inst.connectivity;
+      setup.time_limit_s = a->time_limit;
+      setup.seed = a->seed;
+      setup.robot = a->robot;
+      setup.cell = a->cell > 0 ? a->cell : (inst.connectivity == 8 ? 0.7 : 0.5);
+      setup.max_time_s = a->max_time;
+      const Scenario check = parseScenario(mapfExecutionScenarioYaml(setup), "--execute");
+      double radius = 0.0;
+      const WorldModel robots = WorldModel::build(check);
+      for (const VehicleHandles& v : robots.vehicles())
+        radius = std::max(radius, v.params.radius);
+      checkRobotsFitGridMap(check, radius, inst.connectivity);
+    }
+
     MapfQuery query;
     query.instance = &inst;
     query.time_limit_s = a->time_limit;
@@ -171,20 +198,6 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
       return;
     }
 
-    MapfExecutionSetup setup;
-    setup.map_path = std::filesystem::absolute(a->map).string();
-    for (const std::string& b : a->blocks) setup.extra_blocked.push_back(parseCell(b));
-    setup.starts = inst.starts;
-    setup.goals = inst.goals;
-    setup.planner = a->planner;
-    setup.planner_sets = a->sets;
-    if (a->window > 0) setup.planner_sets.push_back("window=" + std::to_string(a->window));
-    setup.connectivity = inst.connectivity;
-    setup.time_limit_s = a->time_limit;
-    setup.seed = a->seed;
-    setup.robot = a->robot;
-    setup.cell = a->cell > 0 ? a->cell : (inst.connectivity == 8 ? 0.7 : 0.5);
-    setup.max_time_s = a->max_time;
     const std::filesystem::path exec_dir = dir / "execution";
     std::filesystem::create_directories(exec_dir);
     Scenario scenario =

@@ -118,15 +118,7 @@ GroundPlan planTeam(Scenario& s, const WorldModel& world, double speed) {
   plan.inflation = largestRadius(world) + s.planner_margin;
   MapfInstance instance;
   if (s.grid_map.present()) {
-    // Robots in neighbouring cells must not touch: centres one cell apart (4-connected), or
-    // passing on crossing diagonals, sqrt(2)/2 cell apart at closest (8-connected; see
-    // planning/mapf/solution_validator.h).
-    const double room = (connectivity == 8 ? std::sqrt(2.0) / 4.0 : 0.5) * resolution;
-    if (plan.inflation > room)
-      throw InputError(s.file, "world.grid_map.cell",
-                       "robots of radius " + std::to_string(largestRadius(world)) +
-                           " m plus planner.margin need cells of at least " +
-                           std::to_string(resolution * plan.inflation / room) + " m");
+    checkRobotsFitGridMap(s, largestRadius(world), connectivity);
     instance.grid = s.grid_map.grid;
   } else {
     instance.grid = planarGrid(s, resolution, plan.inflation);
@@ -416,6 +408,20 @@ Scenario aerialScenario(const Scenario& s) {
 }
 
 }  // namespace
+
+void checkRobotsFitGridMap(const Scenario& s, double robot_radius, int connectivity) {
+  // Robots in neighbouring cells must not touch: centres one cell apart (4-connected), or
+  // passing on crossing diagonals, sqrt(2)/2 cell apart at closest (8-connected; see
+  // planning/mapf/solution_validator.h).
+  const double cell = s.grid_map.cell;
+  const double room = (connectivity == 8 ? std::sqrt(2.0) / 4.0 : 0.5) * cell;
+  const double need = robot_radius + s.planner_margin;
+  if (need > room)
+    throw InputError(s.file, "world.grid_map.cell",
+                     "robots of radius " + std::to_string(robot_radius) +
+                         " m plus planner.margin need cells of at least " +
+                         std::to_string(cell * need / room) + " m");
+}
 
 bool isGroundRun(const Scenario& s) {
   if (!s.moving_obstacles.empty()) return true;

@@ -10,6 +10,10 @@
 
 namespace cosim {
 
+// Throws InputError (at world.grid_map.cell) unless robots of `robot_radius` plus the planner's
+// margin fit the cells of the scenario's grid map for a team plan of `connectivity` (4 or 8).
+void checkRobotsFitGridMap(const Scenario& scenario, double robot_radius, int connectivity);
+
 // True if the scenario is for this pipeline: a ground robot, or moving obstacles.
 bool isGroundRun(const Scenario& scenario);
 

@@ -133,3 +133,16 @@ TEST(MapfCommand, ExecuteDrivesTheCbsPlanWithRobotsInPhysicsWithoutContacts) {
   EXPECT_NE(r.out.find("6/6 robots arrived, 0 contacts"), std::string::npos) << r.out;
   std::filesystem::remove_all(dir);
 }
+
+// Robots too wide for the cells are bad input found before planning: exit 2, nothing written.
+TEST(MapfCommand, ExecuteRefusesCellsTooSmallForTheRobotBeforePlanning) {
+  const auto dir = test::freshDir("mapf-execute-small-cells");
+  const auto r = runCosim("mapf " COSIM_TEST_DATA_DIR "/mapf/empty-8-8.map " COSIM_TEST_DATA_DIR
+                          "/mapf/empty-8-8-random-1.scen --agents 4 --planner cbs --execute "
+                          "--connectivity 8 --cell 0.5 --out " +
+                          dir.string());
+  EXPECT_EQ(r.status, 2);
+  // omni_base (radius 0.15 m) plus the 0.05 m margin needs 0.2 / (sqrt(2) / 4) = 0.566 m cells.
+  EXPECT_NE(r.err.find("need cells of at least 0.565685 m"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir));
+}
