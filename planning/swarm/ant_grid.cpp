@@ -1,13 +1,11 @@
 #include "planning/swarm/ant_grid.h"
 
 #include <cmath>
-#include <limits>
 #include <random>
 
-#include "planning/deadline.h"
 #include "planning/swarm/grid_walk_002.h"
+#include "planning/swarm/layer_walk_search_002.h"
 #include "planning/swarm/path_shortcut_002.h"
-#include "planning/swarm/planar_layer_002.h"
 
 namespace cosim {
 
@@ -38,22 +36,19 @@ double AntGrid::headingCost(double previous_angle, bool has_previous, double mov
 }
 
 GridPlanResult AntGrid::solveGrid(const GridQuery& query) {
-  const Deadline deadline(query.time_limit_s);
-  const PlanarLayer layer = planarLayerFor(query);
-  if (!layer.error.empty()) return planarFailure(layer.error, 0, deadline);
-  const OccupancyGrid& grid = layer.grid;
-  const ExtendedNeighbourhood moves(p_.directions);
-  GridWalk walker(grid, moves);
+  LayerWalkSearch search(query, p_.directions);
+  if (!search.layer().error.empty()) return search.failure(search.layer().error);
+  const OccupancyGrid& grid = search.grid();
+  const ExtendedNeighbourhood& moves = search.moves();
   const PathShortcut shortcut(grid, moves);
   std::mt19937_64 rng(query.seed);
   std::vector<double> tau(grid.cellCount(), p_.initial_pheromone);
 
-  std::vector<Cell> path, best;
+  std::vector<Cell> path;
   std::vector<int> dirs;
   std::vector<std::vector<Cell>> iteration_paths(p_.ants);
-  double best_length = std::numeric_limits<double>::infinity();
   double weights[32];
-  const Cell goal = layer.goal;
+  const Cell goal = search.layer().goal;
   auto choose = [&](const Cell& c, int arrived, const int* candidates, int n) {
     const double goal_angle = std::atan2(goal.y - c.y, goal.x - c.x);
     const double previous = arrived >= 0 ? moves.offset(arrived).angle : 0.0;
@@ -66,27 +61,13 @@ GridPlanResult AntGrid::solveGrid(const GridQuery& query) {
     return rouletteIndex(weights, n, rng);
   };
 
-  int iterations_done = 0, best_iteration = 0;
-  bool time_up = false;
-  for (int it = 0; it < p_.iterations && !time_up; ++it) {
-    double iteration_best = std::numeric_limits<double>::infinity();
+  int iterations_done = 0;
+  for (int it = 0; it < p_.iterations && !search.stopped(); ++it) {
     int ants_done = 0;
     for (int k = 0; k < p_.ants; ++k) {
-      const WalkOutcome outcome = walker.walk(layer.start, goal, choose, deadline, path, dirs);
-      if (outcome == WalkOutcome::Unreachable)
-        return planarFailure("goal unreachable from start", walker.steps(), deadline);
-      if (outcome == WalkOutcome::TimeUp) {
-        time_up = true;
-        break;
-      }
+      if (!search.walk(choose, path, dirs)) break;
       if (p_.local_search) shortcut.improve(path);
-      const double length = gridPathLength(path);
-      iteration_best = std::min(iteration_best, length);
-      if (length < best_length - 1e-12) {
-        best_length = length;
-        best = path;
-        best_iteration = it + 1;
-      }
+      search.offer(path, gridPathLength(path), it + 1);
       iteration_paths[ants_done++] = path;
     }
     if (ants_done == 0) break;
@@ -94,7 +75,7 @@ GridPlanResult AntGrid::solveGrid(const GridQuery& query) {
     // tau(t+1) = tau(t) - lambda tau(t) + Q/num on the nodes of the best ant. "The best ant" is
     // the elite (best-so-far) ant, as the seed's "elite" wording suggests.
     for (double& t : tau) t -= p_.evaporation * t;
-    for (const Cell& c : best) tau[grid.index(c)] += p_.deposit / p_.ants;
+    for (const Cell& c : search.best()) tau[grid.index(c)] += p_.deposit / p_.ants;
     // Stop when every ant built the same path (the seed's convergence criterion).
     bool converged = ants_done == p_.ants;
     for (int k = 1; k < ants_done && converged; ++k)
@@ -102,8 +83,7 @@ GridPlanResult AntGrid::solveGrid(const GridQuery& query) {
     if (converged) break;
   }
 
-  return planarResult(layer, best, "time limit reached before any ant arrived", iterations_done,
-                      best_iteration, walker.steps(), deadline);
+  return search.result("time limit reached before any ant arrived", iterations_done);
 }
 
 }  // namespace cosim

@@ -1,14 +1,12 @@
 #include "planning/swarm/genetic_algorithm.h"
 
 #include <cmath>
-#include <limits>
 #include <random>
 
-#include "planning/deadline.h"
 #include "planning/swarm/ant_grid.h"
 #include "planning/swarm/grid_walk_002.h"
+#include "planning/swarm/layer_walk_search_002.h"
 #include "planning/swarm/path_shortcut_002.h"
-#include "planning/swarm/planar_layer_002.h"
 
 namespace cosim {
 
@@ -59,17 +57,15 @@ double dist(const Cell& a, const Cell& b) {
 }  // namespace
 
 GridPlanResult GeneticAlgorithm::solveGrid(const GridQuery& query) {
-  const Deadline deadline(query.time_limit_s);
-  const PlanarLayer layer = planarLayerFor(query);
-  if (!layer.error.empty()) return planarFailure(layer.error, 0, deadline);
-  const OccupancyGrid& grid = layer.grid;
-  const ExtendedNeighbourhood moves(p_.directions);
-  GridWalk walker(grid, moves);
+  LayerWalkSearch search(query, p_.directions);
+  if (!search.layer().error.empty()) return search.failure(search.layer().error);
+  const OccupancyGrid& grid = search.grid();
+  const ExtendedNeighbourhood& moves = search.moves();
   const PathShortcut shortcut(grid, moves);
   CellPositions positions(grid);
   std::mt19937_64 rng(query.seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const Cell goal = layer.goal;
+  const Cell goal = search.layer().goal;
 
   // Initial population: walks guided by the ants' heuristic eta = 1 / h (no pheromone).
   double weights[32];
@@ -90,16 +86,13 @@ GridPlanResult GeneticAlgorithm::solveGrid(const GridQuery& query) {
   std::vector<int> dirs;
   for (int k = 0; k < p_.population; ++k) {
     Chromosome x;
-    const WalkOutcome outcome = walker.walk(layer.start, goal, choose, deadline, x.cells, dirs);
-    if (outcome == WalkOutcome::Unreachable)
-      return planarFailure("goal unreachable from start", walker.steps(), deadline);
-    if (outcome == WalkOutcome::TimeUp) break;
+    if (!search.walk(choose, x.cells, dirs)) break;
     finish(x);
     population.push_back(std::move(x));
   }
+  if (search.unreachable()) return search.result("", 0);  // "goal unreachable from start"
   if (population.empty())
-    return planarFailure("time limit reached before the first chromosome was built", walker.steps(),
-                         deadline);
+    return search.failure("time limit reached before the first chromosome was built");
 
   auto bestOf = [](const std::vector<Chromosome>& pop) {
     std::size_t b = 0;
@@ -154,10 +147,11 @@ GridPlanResult GeneticAlgorithm::solveGrid(const GridQuery& query) {
     }
   };
 
-  Chromosome best = population[bestOf(population)];
-  int generations_done = 0, best_generation = 0;
+  const std::size_t first_best = bestOf(population);
+  search.offer(population[first_best].cells, population[first_best].length, 0);
+  int generations_done = 0;
   std::vector<Chromosome> next;
-  for (int g = 0; g < p_.generations && !deadline.expired(); ++g) {
+  for (int g = 0; g < p_.generations && !search.deadline().expired(); ++g) {
     next.clear();
     next.push_back(population[bestOf(population)]);  // elitism
     while (next.size() < population.size()) {
@@ -179,14 +173,10 @@ GridPlanResult GeneticAlgorithm::solveGrid(const GridQuery& query) {
     population.swap(next);
     ++generations_done;
     const Chromosome& gb = population[bestOf(population)];
-    if (gb.length < best.length - 1e-12) {
-      best = gb;
-      best_generation = g + 1;
-    }
+    search.offer(gb.cells, gb.length, g + 1);
   }
 
-  return planarResult(layer, best.cells, "", generations_done, best_generation, walker.steps(),
-                      deadline);
+  return search.result("", generations_done);
 }
 
 }  // namespace cosim

@@ -5,11 +5,10 @@
 #include <limits>
 #include <random>
 
-#include "planning/deadline.h"
 #include "planning/grid/grid_distance.h"
 #include "planning/swarm/grid_walk_002.h"
+#include "planning/swarm/layer_walk_search_002.h"
 #include "planning/swarm/path_shortcut_002.h"
-#include "planning/swarm/planar_layer_002.h"
 
 namespace cosim {
 
@@ -43,19 +42,17 @@ class LazyTrails {
 }  // namespace
 
 GridPlanResult Mmas::solveGrid(const GridQuery& query) {
-  const Deadline deadline(query.time_limit_s);
-  const PlanarLayer layer = planarLayerFor(query);
-  if (!layer.error.empty()) return planarFailure(layer.error, 0, deadline);
-  const OccupancyGrid& grid = layer.grid;
-  const ExtendedNeighbourhood moves(p_.directions);
+  LayerWalkSearch search(query, p_.directions);
+  if (!search.layer().error.empty()) return search.failure(search.layer().error);
+  const OccupancyGrid& grid = search.grid();
+  const ExtendedNeighbourhood& moves = search.moves();
   const int D = moves.directions();
-  GridWalk walker(grid, moves);
   const PathShortcut shortcut(grid, moves);
   std::mt19937_64 rng(query.seed);
-  const Cell goal = layer.goal;
+  const Cell start = search.layer().start, goal = search.layer().goal;
   // Until the first path exists, tau_max is estimated from the straight-line (octile) length.
   const double first_estimate =
-      std::max(1.0, octileDistance(layer.start.x - goal.x, layer.start.y - goal.y, 0));
+      std::max(1.0, octileDistance(start.x - goal.x, start.y - goal.y, 0));
   LazyTrails tau(grid.cellCount() * D, p_.iterations, p_.rho, 1.0 / (p_.rho * first_estimate));
 
   int now = 0;
@@ -77,37 +74,26 @@ GridPlanResult Mmas::solveGrid(const GridQuery& query) {
   };
 
   // No path can be shorter than this free-space bound; reaching it ends the search early.
-  const double dx = std::abs(layer.start.x - goal.x), dy = std::abs(layer.start.y - goal.y);
+  const double dx = std::abs(start.x - goal.x), dy = std::abs(start.y - goal.y);
   const double lower_bound = D == 4 ? dx + dy
                              : D == 8
                                  ? octileDistance(static_cast<int>(dx), static_cast<int>(dy), 0)
                                  : std::hypot(dx, dy);
-  std::vector<Cell> path, iteration_best_path, best;
+  std::vector<Cell> path, iteration_best_path;
   std::vector<int> dirs;
-  double best_length = std::numeric_limits<double>::infinity();
-  int iterations_done = 0, best_iteration = 0, improvements = 0;
-  bool time_up = false;
-  for (int it = 0; it < p_.iterations && !time_up; ++it) {
+  const std::vector<Cell>& best = search.best();
+  int iterations_done = 0, improvements = 0;
+  for (int it = 0; it < p_.iterations && !search.stopped(); ++it) {
     double iteration_best = std::numeric_limits<double>::infinity();
     iteration_best_path.clear();
     for (int k = 0; k < p_.ants; ++k) {
-      const WalkOutcome outcome = walker.walk(layer.start, goal, choose, deadline, path, dirs);
-      if (outcome == WalkOutcome::Unreachable)
-        return planarFailure("goal unreachable from start", walker.steps(), deadline);
-      if (outcome == WalkOutcome::TimeUp) {
-        time_up = true;
-        break;
-      }
+      if (!search.walk(choose, path, dirs)) break;
       const double length = gridPathLength(path);
       if (length < iteration_best) {
         iteration_best = length;
         iteration_best_path = path;
       }
-      if (length < best_length - 1e-12) {
-        best_length = length;
-        best = path;
-        best_iteration = it + 1;
-      }
+      search.offer(path, length, it + 1);
     }
     if (iteration_best_path.empty()) break;
     if (p_.local_search) {
@@ -115,15 +101,13 @@ GridPlanResult Mmas::solveGrid(const GridQuery& query) {
       // here it costs more than the walks, and only the iteration-best ant deposits).
       improvements += shortcut.improve(iteration_best_path);
       iteration_best = gridPathLength(iteration_best_path);
-      if (iteration_best < best_length - 1e-12) {
-        best_length = iteration_best;
-        best = iteration_best_path;
-        best_iteration = it + 1;
-      }
+      search.offer(iteration_best_path, iteration_best, it + 1);
     }
     ++iterations_done;
+    const double best_length = search.bestLength();
     if (best_length <= lower_bound + 1e-9) break;  // provably optimal
-    if (p_.stall_iterations > 0 && iterations_done - best_iteration >= p_.stall_iterations) break;
+    if (p_.stall_iterations > 0 && iterations_done - search.bestIteration() >= p_.stall_iterations)
+      break;
     ++now;  // one evaporation step for every trail (applied lazily)
     const double tau_max = 1.0 / (p_.rho * best_length);
     const double root = std::pow(p_.p_best, 1.0 / std::max<std::size_t>(1, best.size() - 1));
@@ -142,9 +126,10 @@ GridPlanResult Mmas::solveGrid(const GridQuery& query) {
     }
   }
 
-  GridPlanResult result = planarResult(layer, best, "time limit reached before any ant arrived",
-                                       iterations_done, best_iteration, walker.steps(), deadline);
-  result.counters["local_search_moves"] = improvements;
+  GridPlanResult result =
+      search.result("time limit reached before any ant arrived", iterations_done);
+  // An unreachable goal is reported with the walk steps alone, like the other grid planners.
+  if (!search.unreachable()) result.counters["local_search_moves"] = improvements;
   return result;
 }
 

@@ -45,27 +45,4 @@ std::vector<Cell> liftFromLayer(const std::vector<Cell>& cells, const PlanarLaye
   return out;
 }
 
-GridPlanResult planarFailure(const std::string& message, std::uint64_t steps,
-                             const Deadline& deadline) {
-  GridPlanResult result;
-  result.message = message;
-  result.counters["expansions"] = static_cast<double>(steps);
-  result.time_ms = deadline.elapsedMs();
-  return result;
-}
-
-GridPlanResult planarResult(const PlanarLayer& layer, const std::vector<Cell>& best,
-                            const std::string& failure, int iterations, int best_iteration,
-                            std::uint64_t steps, const Deadline& deadline) {
-  GridPlanResult result = planarFailure(best.empty() ? failure : "", steps, deadline);
-  result.counters["iterations"] = iterations;
-  result.counters["best_iteration"] = best_iteration;
-  if (!best.empty()) {
-    result.success = true;
-    result.cells = liftFromLayer(best, layer);
-    result.length = gridPathLength(result.cells);
-  }
-  return result;
-}
-
 }  // namespace cosim

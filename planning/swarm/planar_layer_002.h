@@ -3,11 +3,9 @@
 // scenario voxelised by GridWorldPlanner) they plan on the layer that contains the start, to the
 // goal's column on that layer, and then climb or descend straight to the goal in that column;
 // if that column is blocked the query fails with a message that says so.
-#include <cstdint>
 #include <string>
 #include <vector>
 
-#include "planning/deadline.h"
 #include "planning/grid/grid_planner.h"
 
 namespace cosim {
@@ -24,14 +22,5 @@ PlanarLayer planarLayerFor(const GridQuery& query);
 
 // Turns a plan on the layer back into cells of the query's grid (and appends the climb).
 std::vector<Cell> liftFromLayer(const std::vector<Cell>& cells, const PlanarLayer& layer);
-
-// The planners' common endings. A failure with its reason and the walk steps made so far:
-GridPlanResult planarFailure(const std::string& message, std::uint64_t steps,
-                             const Deadline& deadline);
-// The best path found (lifted to the query's grid), or `failure` if there is none, with the
-// counters iterations, best_iteration and expansions (walk steps).
-GridPlanResult planarResult(const PlanarLayer& layer, const std::vector<Cell>& best,
-                            const std::string& failure, int iterations, int best_iteration,
-                            std::uint64_t steps, const Deadline& deadline);
 
 }  // namespace cosim

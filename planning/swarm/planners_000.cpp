@@ -1,8 +1,8 @@
 #include "planning/swarm/planners_000.h"
 
 #include "planning/navigation/d_star_lite.h"
-#include "planning/navigation/navigator_grid_planner.h"
 #include "planning/navigation/robot_navigation_ant.h"
+#include "planning/swarm/grid_planner_factory.h"
 
 namespace cosim {
 
@@ -34,6 +34,14 @@ RnaParams readRnaParams(ParamSet& params, bool wave_front) {
     p.msac.ants = params.getInt("ants", p.msac.ants, 1, 127);
     p.msac.iterations = params.getInt("iterations", p.msac.iterations, 1, 1000);
   }
+  return p;
+}
+
+DStarLiteParams readDStarLiteParams(ParamSet& params) {
+  DStarLiteParams p;
+  p.sight = params.getInt("sight", p.sight, 1, 1000);
+  p.conditional_diagonal = readConditionalDiagonal(params);
+  p.prediction = readPrediction(params);
   return p;
 }
 }  // namespace
@@ -79,18 +87,12 @@ void registerAnt000Planners(PlannerRegistry& r) {
   r.addGridPlanner("msac", "swarm",
                    "Multi-Scout Ants Cooperation: two greedy scout-ant groups from start and goal "
                    "(seed 000)",
-                   [](ParamSet& params) -> std::unique_ptr<GridPlanner> {
-                     return std::make_unique<Msac>(readMsacParams(params));
-                   });
+                   gridPlannerFactory<Msac>(readMsacParams));
   r.addGridPlanner("saco", "swarm", "Simple Ant Colony Optimization, cell pheromone (seed 000)",
-                   [](ParamSet& params) -> std::unique_ptr<GridPlanner> {
-                     return std::make_unique<Saco>(readSacoParams(params, "saco"));
-                   });
+                   gridPlannerFactory<Saco>(readSacoParams, std::string("saco")));
   r.addGridPlanner("sacodm", "swarm",
                    "SACO with distance (beta) and memory (gamma) terms (seed 000)",
-                   [](ParamSet& params) -> std::unique_ptr<GridPlanner> {
-                     return std::make_unique<Saco>(readSacoParams(params, "sacodm"));
-                   });
+                   gridPlannerFactory<Saco>(readSacoParams, std::string("sacodm")));
   for (const bool wave_front : {false, true}) {
     const std::string name = wave_front ? "wf_rna" : "rna";
     r.addGridPlanner(name, "navigation",
@@ -98,23 +100,12 @@ void registerAnt000Planners(PlannerRegistry& r) {
                                   "seen only through its field of view (seed 000)"
                                 : "Robot Navigation Ant: drives through the map seen only through "
                                   "its field of view, re-planning with MSAC each step (seed 000)",
-                     [name, wave_front](ParamSet& params) -> std::unique_ptr<GridPlanner> {
-                       const RnaParams p = readRnaParams(params, wave_front);
-                       return std::make_unique<NavigatorGridPlanner>(
-                           name, [p] { return std::make_unique<RobotNavigationAnt>(p); });
-                     });
+                     navigatorFactory<RobotNavigationAnt>(name, readRnaParams, wave_front));
   }
   r.addGridPlanner("d_star_lite", "navigation",
                    "D* Lite: incremental replanning while driving through a map seen only "
                    "through the field of view (Koenig & Likhachev 2002)",
-                   [](ParamSet& params) -> std::unique_ptr<GridPlanner> {
-                     DStarLiteParams p;
-                     p.sight = params.getInt("sight", p.sight, 1, 1000);
-                     p.conditional_diagonal = readConditionalDiagonal(params);
-                     p.prediction = readPrediction(params);
-                     return std::make_unique<NavigatorGridPlanner>(
-                         "d_star_lite", [p] { return std::make_unique<DStarLite>(p); });
-                   });
+                   navigatorFactory<DStarLite>("d_star_lite", readDStarLiteParams));
 }
 
 }  // namespace cosim

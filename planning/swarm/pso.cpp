@@ -4,10 +4,8 @@
 #include <limits>
 #include <random>
 
-#include "planning/deadline.h"
 #include "planning/grid/grid_distance.h"
-#include "planning/swarm/grid_walk_002.h"
-#include "planning/swarm/planar_layer_002.h"
+#include "planning/swarm/layer_walk_search_002.h"
 
 namespace cosim {
 
@@ -18,20 +16,17 @@ constexpr std::size_t kMaxStateFloats = std::size_t(1) << 27;  // 512 MiB
 }  // namespace
 
 GridPlanResult Pso::solveGrid(const GridQuery& query) {
-  const Deadline deadline(query.time_limit_s);
-  const PlanarLayer layer = planarLayerFor(query);
-  if (!layer.error.empty()) return planarFailure(layer.error, 0, deadline);
-  const OccupancyGrid& grid = layer.grid;
+  LayerWalkSearch search(query, p_.directions);
+  if (!search.layer().error.empty()) return search.failure(search.layer().error);
+  const OccupancyGrid& grid = search.grid();
   const std::size_t cells = grid.cellCount();
   const std::size_t P = static_cast<std::size_t>(p_.particles);
   if (3 * P * cells > kMaxStateFloats)
-    return planarFailure("grid too large for pso (" + std::to_string(cells) + " cells x " +
-                             std::to_string(P) + " particles)",
-                         0, deadline);
-  const ExtendedNeighbourhood moves(p_.directions);
-  GridWalk walker(grid, moves);
+    return search.failure("grid too large for pso (" + std::to_string(cells) + " cells x " +
+                          std::to_string(P) + " particles)");
+  const ExtendedNeighbourhood& moves = search.moves();
   std::mt19937_64 rng(query.seed);
-  const Cell goal = layer.goal;
+  const Cell goal = search.layer().goal;
 
   std::vector<float> x(P * cells), v(P * cells, 0.0f), pbest(P * cells);
   std::vector<double> pbest_length(P, std::numeric_limits<double>::infinity());
@@ -53,36 +48,23 @@ GridPlanResult Pso::solveGrid(const GridQuery& query) {
     return best;
   };
 
-  std::vector<Cell> path, best;
+  std::vector<Cell> path;
   std::vector<int> dirs;
-  double best_length = std::numeric_limits<double>::infinity();
   std::size_t gbest = 0;
-  int iterations_done = 0, best_iteration = 0;
+  int iterations_done = 0;
   const float vmax = static_cast<float>(p_.v_max);
   for (int it = 0; it < p_.iterations; ++it) {
-    bool time_up = false;
     for (std::size_t k = 0; k < P; ++k) {
       priorities = &x[k * cells];
-      const WalkOutcome outcome = walker.walk(layer.start, goal, choose, deadline, path, dirs);
-      if (outcome == WalkOutcome::Unreachable)
-        return planarFailure("goal unreachable from start", walker.steps(), deadline);
-      if (outcome == WalkOutcome::TimeUp) {
-        time_up = true;
-        break;
-      }
+      if (!search.walk(choose, path, dirs)) break;
       const double length = gridPathLength(path);
       if (length < pbest_length[k]) {
         pbest_length[k] = length;
         std::copy(x.begin() + k * cells, x.begin() + (k + 1) * cells, pbest.begin() + k * cells);
       }
-      if (length < best_length - 1e-12) {
-        best_length = length;
-        best = path;
-        gbest = k;
-        best_iteration = it + 1;
-      }
+      if (search.offer(path, length, it + 1)) gbest = k;
     }
-    if (time_up || best.empty()) break;
+    if (search.stopped() || search.best().empty()) break;
     ++iterations_done;
     if (it + 1 == p_.iterations) break;
     // Velocity and position update; r1, r2 per dimension from one 64-bit draw (two 32-bit
@@ -106,8 +88,7 @@ GridPlanResult Pso::solveGrid(const GridQuery& query) {
     }
   }
 
-  return planarResult(layer, best, "time limit reached before any particle was decoded",
-                      iterations_done, best_iteration, walker.steps(), deadline);
+  return search.result("time limit reached before any particle was decoded", iterations_done);
 }
 
 }  // namespace cosim
