@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 #include "render/log_lookup.h"
 
@@ -36,7 +37,9 @@ Eigen::Vector3d CameraPose::eye() const {
 }
 
 CameraRig::CameraRig(const Scenario& scenario, const RunLog& log, double aspect)
-    : scenario_(scenario), log_(log), aspect_(aspect), duration_(logEndTime(log)) {}
+    : scenario_(scenario), log_(log), aspect_(aspect), duration_(logEndTime(log)) {
+  overview_ = overview();
+}
 
 CameraPose CameraRig::chase(double t) const {
   CameraPose p;
@@ -59,6 +62,52 @@ CameraPose CameraRig::chase(double t) const {
   return p;
 }
 
+CameraPose CameraRig::overview() const {
+  CameraPose p;
+  p.fovy_deg = kModelFovy;
+  p.azimuth = 225.0;  // from beyond the (max x, max y) corner, looking back at the start side
+  p.elevation = -45.0;
+  const Eigen::Vector3d lo = scenario_.world.bounds_min, hi = scenario_.world.bounds_max;
+  std::vector<Eigen::Vector3d> points;
+  for (int c = 0; c < 8; ++c)
+    points.emplace_back(c & 1 ? hi.x() : lo.x(), c & 2 ? hi.y() : lo.y(), c & 4 ? hi.z() : lo.z());
+  for (const VehicleSpec& v : scenario_.vehicles) {
+    points.push_back(v.start);
+    points.insert(points.end(), v.waypoints.begin(), v.waypoints.end());
+  }
+  for (const VehicleLog& v : log_.vehicles) {
+    points.push_back(v.goal);
+    points.insert(points.end(), v.planned_path.begin(), v.planned_path.end());
+    if (!v.samples.empty()) points.push_back(v.samples.front().pos);
+  }
+  // The camera's axes (MuJoCo's free camera: up is forward turned 90 degrees up).
+  const double a = p.azimuth * kDeg, e = p.elevation * kDeg;
+  const Eigen::Vector3d forward(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
+  const Eigen::Vector3d up(-std::sin(e) * std::cos(a), -std::sin(e) * std::sin(a), std::cos(e));
+  const Eigen::Vector3d right = forward.cross(up);
+  // A point at depth z from the eye is inside the frame with the margin when its offsets from
+  // the view axis satisfy |x| <= kx z and |y| <= ky z. In the camera's axes these are linear in
+  // the eye position: x - kx z <= ex - kx ez and x + kx z >= ex + kx ez (the same for y). The
+  // closest eye satisfying all of them centres the points' extreme bounds on each axis and
+  // stands back as far as the tighter axis needs.
+  const double ky = std::tan(0.5 * kModelFovy * kDeg) * (1.0 - 2.0 * kOverviewMargin);
+  const double kx = ky * aspect_;
+  double a_x = -HUGE_VAL, b_x = HUGE_VAL, a_y = -HUGE_VAL, b_y = HUGE_VAL;
+  for (const Eigen::Vector3d& q : points) {
+    const double x = q.dot(right), y = q.dot(up), z = q.dot(forward);
+    a_x = std::max(a_x, x - kx * z);
+    b_x = std::min(b_x, x + kx * z);
+    a_y = std::max(a_y, y - ky * z);
+    b_y = std::min(b_y, y + ky * z);
+  }
+  const double ez = std::min((b_x - a_x) / (2.0 * kx), (b_y - a_y) / (2.0 * ky));
+  const Eigen::Vector3d eye = 0.5 * (a_x + b_x) * right + 0.5 * (a_y + b_y) * up + ez * forward;
+  // Look at the depth of the world's centre (the lookat only sets where the camera turns).
+  p.distance = std::max(1e-3, (0.5 * (lo + hi) - eye).dot(forward));
+  p.lookat = eye + p.distance * forward;
+  return p;
+}
+
 CameraPose CameraRig::pose(CameraKind kind, double t) const {
   const Eigen::Vector3d lo = scenario_.world.bounds_min, hi = scenario_.world.bounds_max;
   const Eigen::Vector3d centre = 0.5 * (lo + hi);
@@ -70,11 +119,7 @@ CameraPose CameraRig::pose(CameraKind kind, double t) const {
       if (!log_.vehicles.empty() && !log_.vehicles.front().samples.empty()) return chase(t);
       [[fallthrough]];
     case CameraKind::Overview:
-      p.lookat = {centre.x(), centre.y(), lo.z() + 0.2 * (hi.z() - lo.z())};
-      p.azimuth = 225.0;  // from beyond the (max x, max y) corner, looking back at the start side
-      p.elevation = -45.0;
-      p.distance = 0.88 * extent;
-      return p;
+      return overview_;
     case CameraKind::Orbit: {
       // One revolution over the flight (at least 20 s per turn, so short flights do not spin).
       const double period = std::max(20.0, duration_);

@@ -36,13 +36,20 @@ class CameraRig {
 
   CameraPose pose(CameraKind kind, double t) const;
 
+  // The overview: from beyond the world's (max x, max y) corner, 45 degrees down, placed so
+  // the world's bounding box and every vehicle's start and goal fill the frame with `margin`
+  // (a fraction of the frame's width and height) to spare on each side.
+  static constexpr double kOverviewMargin = 0.06;
+
  private:
   CameraPose chase(double t) const;
+  CameraPose overview() const;
 
   const Scenario& scenario_;
   const RunLog& log_;
   double aspect_;
   double duration_;
+  CameraPose overview_;  // fixed for the whole run
 };
 
 }  // namespace cosim

@@ -59,12 +59,12 @@ std::string num(double v) {
 }
 
 // Viridis for the error palette, as in the videos.
-std::string errorPalette(double scale) {
+std::string errorPalette(double scale, const std::string& label) {
   std::ostringstream s;
   s << "set palette defined (";
   for (int i = 0; i <= 8; ++i)
     s << (i ? ", " : "") << i / 8.0 << " '" << hexColour(errorColour(i / 8.0)) << "'";
-  s << ")\nset cbrange [0:" << num(scale) << "]\nset cblabel 'tracking error [m]'\n";
+  s << ")\nset cbrange [0:" << num(scale) << "]\nset cblabel " << gnuplotString(label) << "\n";
   return s.str();
 }
 
@@ -149,7 +149,7 @@ std::string axisName(int axis) {
 }
 
 // The paths over the obstacles along two world axes (top: x,y; side: x or y, z).
-std::string pathPlot(const RunLog& log, int h, int v, bool against_trajectory) {
+std::string pathPlot(const RunLog& log, int h, int v, const std::vector<ErrorReference>& refs) {
   const bool several = log.vehicles.size() > 1;
   std::ostringstream p;
   p << "plot ";
@@ -166,7 +166,7 @@ std::string pathPlot(const RunLog& log, int h, int v, bool against_trajectory) {
     const std::string planned = hexColour(several ? agentColour(a) : kPlannedPathColour);
     const std::string id = std::to_string(a);
     if (!vl.samples.empty()) {
-      if (against_trajectory) {
+      if (refs[a] == ErrorReference::Trajectory) {
         sep();
         p << "'v" << id << ".dat' using " << rh << ":" << rv
           << " with lines lw 1.2 dt (6,4) lc rgb '" << hexColour(kReferenceColour) << "' title "
@@ -199,14 +199,16 @@ std::string pathPlot(const RunLog& log, int h, int v, bool against_trajectory) {
 std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scenario,
                                          const std::filesystem::path& dir) {
   WorkDir work(dir);
-  const bool against = scenario.trajectory_mode != "waypoints";
   const World& world = scenario.world;
+  // Each vehicle's error against its own reference, as in its metrics (log_lookup.h).
+  std::vector<ErrorReference> refs;
+  for (std::size_t a = 0; a < log.vehicles.size(); ++a) refs.push_back(errorReference(scenario, a));
   double max_error = 0.0;
   std::ostringstream error_plot, error_marks;
   error_plot << "plot ";
   for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
     const VehicleLog& v = log.vehicles[a];
-    const std::vector<double> err = trackingErrors(v, against);
+    const std::vector<double> err = trackingErrors(v, refs[a]);
     for (double e : err) max_error = std::max(max_error, e);
     writeVehicleData(v, err, work.path() / dataFile('v', a));
     std::vector<Eigen::Vector3d> planned = v.planned_path;
@@ -217,7 +219,7 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
     const bool several = log.vehicles.size() > 1;
     const std::string colour =
         hexColour(several ? agentColour(a) : Eigen::Vector3f(0.13f, 0.35f, 0.65f));
-    const FlightMetrics m = computeFlightMetrics(v, world, against);
+    const FlightMetrics m = computeFlightMetrics(v, world, refs[a] != ErrorReference::PlannedPath);
     error_plot << (a ? ", \\\n     " : "") << "'v" << a
                << ".dat' using 1:8 with lines lw 2 lc rgb '" << colour << "' title "
                << gnuplotString((several ? v.name + ": " : std::string()) + "RMSE " +
@@ -238,7 +240,13 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
   const std::string planner =
       scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
-  const std::string reference = against ? "the reference trajectory" : "the planned path";
+  bool one_reference = true;
+  for (ErrorReference r : refs) one_reference = one_reference && r == refs.front();
+  const std::string reference_name = !one_reference ? "each vehicle's own reference"
+                                     : refs.empty()
+                                         ? "the planned path"
+                                         : std::string("the ") + errorReferenceName(refs.front());
+  const std::string colour_label = "error to " + reference_name + " [m]";
 
   std::ostringstream common;
   common << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid lc rgb '#dddddd' lw 1\n"
@@ -247,19 +255,19 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
 
   std::ostringstream error;
   error << common.str() << "set title "
-        << gnuplotString("Tracking error against " + reference + " (" + planner + ")")
+        << gnuplotString("Tracking error against " + reference_name + " (" + planner + ")")
         << "\nset xlabel 'time [s]'\nset ylabel 'position error [m]'\nset yrange [0:*]\nset xrange "
            "[0:*]\n"
         << "set key top right\n"
         << error_marks.str() << error_plot.str() << "\n";
 
   std::ostringstream top;
-  top << common.str() << errorPalette(scale) << obstacleObjects(world, 0, 1) << "set title "
-      << gnuplotString("Top view: planned vs flown path (" + planner + ")") << "\n"
+  top << common.str() << errorPalette(scale, colour_label) << obstacleObjects(world, 0, 1)
+      << "set title " << gnuplotString("Top view: planned vs flown path (" + planner + ")") << "\n"
       << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
       << "set xrange [" << num(lo.x()) << ":" << num(hi.x()) << "]\nset yrange [" << num(lo.y())
       << ":" << num(hi.y()) << "]\nset key outside below horizontal center\n"
-      << pathPlot(log, 0, 1, against) << "\n";
+      << pathPlot(log, 0, 1, refs) << "\n";
 
   // Side view along the axis the flight crosses most (the other horizontal axis is depth).
   int along = 0;
@@ -268,13 +276,14 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
     along = std::abs(d.y()) > std::abs(d.x()) ? 1 : 0;
   }
   std::ostringstream side;
-  side << common.str() << errorPalette(scale) << obstacleObjects(world, along, 2) << "set title "
+  side << common.str() << errorPalette(scale, colour_label) << obstacleObjects(world, along, 2)
+       << "set title "
        << gnuplotString("Side view (looking along " + axisName(1 - along) + "; height exaggerated)")
        << "\n"
        << "set xlabel '" << axisName(along) << " [m]'\nset ylabel 'z [m]'\nset size ratio 0.42\n"
        << "set xrange [" << num(lo[along]) << ":" << num(hi[along]) << "]\nset yrange ["
        << num(lo.z()) << ":" << num(hi.z()) << "]\nset key outside below horizontal center\n"
-       << pathPlot(log, along, 2, against) << "\n";
+       << pathPlot(log, along, 2, refs) << "\n";
 
   // The top view keeps equal axes: the canvas height follows the world's aspect ratio (the
   // plot is ~760 px wide; title, axes and key take ~190 px).

@@ -25,6 +25,10 @@ int FrameAnnotations::lineHeight() const {
   return con_->charHeight + pad_ / 2;
 }
 
+int FrameAnnotations::linesFitting(double fraction) const {
+  return static_cast<int>((fraction * viewport_.height - 2 * pad_) / lineHeight());
+}
+
 void FrameAnnotations::box(int x, int y, int w, int h) {
   mjr_rectangle({x, y, w, h}, 1.0f, 1.0f, 1.0f, 0.78f);
 }
@@ -65,10 +69,12 @@ void FrameAnnotations::legend(const std::vector<LegendEntry>& entries) {
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const int y = y0 + h - pad_ - static_cast<int>(i + 1) * lineHeight();
     const int sy = y + con_->charHeight / 3, sh = std::max(3, con_->charHeight / 3);
-    const int pieces = entries[i].gradient ? 8 : 1;
+    const auto& stripes = entries[i].stripes;
+    const int pieces = entries[i].gradient ? 8 : std::max<int>(1, stripes.size());
     for (int k = 0; k < pieces; ++k) {
-      const Eigen::Vector3f c =
-          entries[i].gradient ? errorColour((k + 0.5) / pieces) : entries[i].colour;
+      const Eigen::Vector3f c = entries[i].gradient ? errorColour((k + 0.5) / pieces)
+                                : stripes.empty()   ? entries[i].colour
+                                                    : stripes[k];
       const int x0 = x + pad_ + swatch * k / pieces, x1 = x + pad_ + swatch * (k + 1) / pieces;
       mjr_rectangle({x0, sy, x1 - x0, sh}, c.x(), c.y(), c.z(), 1.0f);
     }
@@ -76,11 +82,14 @@ void FrameAnnotations::legend(const std::vector<LegendEntry>& entries) {
   }
 }
 
-void FrameAnnotations::errorScale(double scale_max, const std::string& title) {
+void FrameAnnotations::errorScale(double scale_max, const std::string& title, int slot) {
   const int bar_w = std::max(60, viewport_.width / 5), bar_h = std::max(6, con_->charHeight / 2);
-  const int w = bar_w + 2 * pad_ + 2 * con_->charWidth[static_cast<int>('0')];
+  // Wide enough for the title too (the end labels stand half outside the bar).
+  const int w =
+      std::max(bar_w + 2 * con_->charWidth[static_cast<int>('0')], textWidth(title)) + 2 * pad_;
   const int h = 2 * lineHeight() + bar_h + 2 * pad_;
-  const int x = viewport_.left + viewport_.width - pad_ - w, y = viewport_.bottom + pad_;
+  const int x = viewport_.left + viewport_.width - pad_ - w,
+            y = viewport_.bottom + pad_ + slot * (h + pad_);
   box(x, y, w, h);
   const int bx = x + (w - bar_w) / 2, by = y + pad_ + lineHeight();
   const int steps = 48;

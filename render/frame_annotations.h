@@ -6,14 +6,18 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cosim {
 
 struct LegendEntry {
+  LegendEntry(std::string label_, const Eigen::Vector3f& colour_, bool gradient_ = false)
+      : label(std::move(label_)), colour(colour_), gradient(gradient_) {}
   std::string label;
   Eigen::Vector3f colour;
-  bool gradient = false;  // the swatch shows the error colour scale instead
+  bool gradient = false;                 // the swatch shows the error colour scale instead
+  std::vector<Eigen::Vector3f> stripes;  // if given: the swatch shows these colours side by side
 };
 
 class FrameAnnotations {
@@ -22,10 +26,13 @@ class FrameAnnotations {
 
   // Label/value lines in a box at the top left.
   void stateBox(const std::vector<std::pair<std::string, std::string>>& lines);
+  // How many state box lines fit in `fraction` of the frame's height.
+  int linesFitting(double fraction) const;
   // Colour swatches with labels in a box at the bottom left.
   void legend(const std::vector<LegendEntry>& entries);
-  // A horizontal viridis bar at the bottom right from 0 to scale_max, with its title.
-  void errorScale(double scale_max, const std::string& title);
+  // A horizontal viridis bar at the bottom right from 0 to scale_max, with its title. slot: 0
+  // at the bottom, 1 above it, ... (one scale per kind of error).
+  void errorScale(double scale_max, const std::string& title, int slot = 0);
 
  private:
   int textWidth(const std::string& s) const;

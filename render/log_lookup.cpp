@@ -12,13 +12,46 @@ std::size_t sampleIndexAt(const VehicleLog& v, double t) {
   return it == v.samples.begin() ? 0 : static_cast<std::size_t>(it - v.samples.begin() - 1);
 }
 
-std::vector<double> trackingErrors(const VehicleLog& v, bool against_trajectory) {
+ErrorReference errorReference(const Scenario& scenario, std::size_t index) {
+  bool has_ground = false;
+  for (const VehicleSpec& v : scenario.vehicles) has_ground = has_ground || v.ground;
+  if (index < scenario.vehicles.size() && scenario.vehicles[index].ground)
+    return ErrorReference::TimedPlan;
+  // With ground robots, the top-level sections are theirs and `aerial` is the quadrotors'.
+  const std::string& mode = has_ground ? scenario.aerial.trajectory_mode : scenario.trajectory_mode;
+  return mode != "waypoints" ? ErrorReference::Trajectory : ErrorReference::PlannedPath;
+}
+
+const char* errorReferenceName(ErrorReference r) {
+  switch (r) {
+    case ErrorReference::TimedPlan:
+      return "timed plan";
+    case ErrorReference::Trajectory:
+      return "reference trajectory";
+    case ErrorReference::PlannedPath:
+      return "planned path";
+  }
+  return "";
+}
+
+const char* errorReferenceShortName(ErrorReference r) {
+  switch (r) {
+    case ErrorReference::TimedPlan:
+      return "plan";
+    case ErrorReference::Trajectory:
+      return "reference";
+    case ErrorReference::PlannedPath:
+      return "path";
+  }
+  return "";
+}
+
+std::vector<double> trackingErrors(const VehicleLog& v, ErrorReference reference) {
   std::vector<double> e;
   e.reserve(v.samples.size());
+  const bool to_path = reference == ErrorReference::PlannedPath && v.planned_path.size() >= 2;
   for (const LogSample& s : v.samples)
-    e.push_back(against_trajectory || v.planned_path.size() < 2
-                    ? (s.pos - s.ref_pos).norm()
-                    : distanceToPolyline(s.pos, v.planned_path));
+    e.push_back(to_path ? distanceToPolyline(s.pos, v.planned_path) : (s.pos - s.ref_pos).norm());
   return e;
 }
 

@@ -4,8 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "render/frame_annotations.h"
-#include "render/log_lookup.h"
+#include "render/state_box_lines.h"
 #include "render/trail_decimation.h"
 #include "sim/ground_vehicle_handles.h"
 
@@ -27,7 +26,6 @@ RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, cons
       scenario_(scenario),
       log_(log),
       rig_(scenario, log, static_cast<double>(width) / height),
-      against_trajectory_(scenario.trajectory_mode != "waypoints"),
       end_time_(logEndTime(log)) {
   const mjModel* m = world.model();
   ctx_ = std::make_unique<OffscreenContext>(m, width, height);
@@ -39,12 +37,22 @@ RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, cons
                         (kTrailSegmentBudget + kReferenceDashBudget + 64));
   mjv_defaultCamera(&camera_);
   mjv_defaultOption(&option_);
-  double max_error = 0.0;
-  for (const VehicleLog& v : log.vehicles) {
-    errors_.push_back(trackingErrors(v, against_trajectory_));
-    for (double e : errors_.back()) max_error = std::max(max_error, e);
+  // Each vehicle's error as its metrics measure it; one colour scale per kind of reference, so
+  // a quadrotor's millimetres are not drawn on the robots' centimetre scale (or vice versa).
+  std::vector<double> max_error;
+  for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
+    references_.push_back(errorReference(scenario, a));
+    errors_.push_back(trackingErrors(log.vehicles[a], references_.back()));
+    std::size_t k = 0;
+    while (k < scales_.size() && scales_[k].reference != references_.back()) ++k;
+    if (k == scales_.size()) {
+      scales_.push_back({references_.back()});
+      max_error.push_back(0.0);
+    }
+    scale_of_.push_back(k);
+    for (double e : errors_.back()) max_error[k] = std::max(max_error[k], e);
   }
-  error_scale_ = errorScaleMax(max_error);
+  for (std::size_t k = 0; k < scales_.size(); ++k) scales_[k].top = errorScaleMax(max_error[k]);
   for (std::size_t i = 0; i < scenario.world.obstacles.size(); ++i)
     obstacle_geoms_.push_back(mj_name2id(m, mjOBJ_GEOM, ("obstacle" + std::to_string(i)).c_str()));
 }
@@ -158,6 +166,10 @@ void RunRenderer::addSphere(const Eigen::Vector3d& p, double radius, const Eigen
   ++scene_.ngeom;
 }
 
+bool RunRenderer::isGround(std::size_t vehicle) const {
+  return vehicle < scenario_.vehicles.size() && scenario_.vehicles[vehicle].ground;
+}
+
 Eigen::Vector3f RunRenderer::plannedColour(std::size_t vehicle) const {
   return log_.vehicles.size() == 1 ? kPlannedPathColour : agentColour(vehicle);
 }
@@ -171,7 +183,7 @@ void RunRenderer::addTrail(std::size_t vehicle, double t) {
       TrailDecimation o;
       o.tolerance = 0.3 * line_radius_;
       o.max_segment = std::max(40.0 * line_radius_, 0.5);
-      o.max_error_step = 0.06 * error_scale_;
+      o.max_error_step = 0.06 * errorScale(a);
       std::vector<std::size_t> kept = decimateTrail(log_.vehicles[a].samples, errors_[a], o);
       while (kept.size() > static_cast<std::size_t>(kTrailSegmentBudget)) {
         o.tolerance *= 2.0;
@@ -186,12 +198,13 @@ void RunRenderer::addTrail(std::size_t vehicle, double t) {
   const VehicleLog& v = log_.vehicles[vehicle];
   const std::vector<double>& err = errors_[vehicle];
   const std::vector<std::size_t>& kept = trail_vertices_[vehicle];
+  const double scale = errorScale(vehicle);
   const std::size_t last = sampleIndexAt(v, t);
   std::size_t from = 0;
   for (std::size_t k = 1; k < kept.size() && from < last; ++k) {
     const std::size_t i = std::min(kept[k], last);  // the trail ends at the vehicle
     addSegment(v.samples[from].pos, v.samples[i].pos,
-               errorColour(0.5 * (err[from] + err[i]) / error_scale_), line_radius_);
+               errorColour(0.5 * (err[from] + err[i]) / scale), line_radius_);
     from = i;
   }
 }
@@ -216,7 +229,7 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
     if (v.samples.empty()) continue;
     // The reference trajectory (only when it is a trajectory; a waypoint reference is the
     // planned path itself): dashes along the whole flight.
-    if (against_trajectory_) {
+    if (references_[a] == ErrorReference::Trajectory) {
       double length = 0.0;
       for (std::size_t i = 1; i < v.samples.size(); ++i)
         length += (v.samples[i].ref_pos - v.samples[i - 1].ref_pos).norm();
@@ -244,41 +257,95 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
 
 void RunRenderer::annotate(double t) {
   FrameAnnotations ann(ctx_->context(), ctx_->viewport());
-  std::vector<std::pair<std::string, std::string>> lines;
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%.2f s", t);
-  lines.emplace_back("time", buf);
-  const std::string error_name = against_trajectory_ ? "error to reference" : "error to path";
+  std::vector<VehicleState> states;
+  bool ground = false, flying = false;
   for (std::size_t a = 0; a < log_.vehicles.size(); ++a) {
     const VehicleLog& v = log_.vehicles[a];
+    ground = ground || isGround(a);
+    flying = flying || !isGround(a);
     if (v.samples.empty()) continue;
     const std::size_t i = sampleIndexAt(v, t);
-    const std::string who = log_.vehicles.size() > 1 ? v.name + " " : "";
-    std::snprintf(buf, sizeof buf, "%.2f m/s", v.samples[i].vel.norm());
-    lines.emplace_back(who + "speed", buf);
-    std::snprintf(buf, sizeof buf, "%.3f m", errors_[a][i]);
-    lines.emplace_back(who + error_name, buf);
-    if (lines.size() > 9) break;  // many agents: the first few; the figures have all
+    VehicleState& s = states.emplace_back();
+    s.name = v.name;
+    s.ground = isGround(a);
+    s.speed = v.samples[i].vel.norm();
+    s.error = errors_[a][i];
+    s.reference = references_[a];
+    // As the simulation decides arrival (ground robots on the floor plane), from the log alone
+    // so a re-render says the same.
+    Eigen::Vector3d off = v.samples[i].pos - v.goal;
+    if (s.ground) off.z() = 0.0;
+    s.at_goal = off.norm() < scenario_.sim.goal_tolerance;
   }
-  lines.emplace_back("planner",
-                     scenario_.planner_name.empty() ? "given waypoints" : scenario_.planner_name);
-  ann.stateBox(lines);
-
-  std::vector<LegendEntry> legend;
-  if (log_.vehicles.size() == 1) {
-    legend.push_back({"planned path", kPlannedPathColour});
+  const auto plannerName = [](const std::string& name) {
+    return name.empty() ? std::string("given waypoints") : name;
+  };
+  std::vector<StateLine> planners;
+  if (ground && flying) {
+    planners.emplace_back("robot planner", plannerName(scenario_.planner_name));
+    planners.emplace_back("quadrotor planner", plannerName(scenario_.aerial.planner_name));
   } else {
-    for (std::size_t a = 0; a < log_.vehicles.size() && a < 6; ++a)
-      legend.push_back({log_.vehicles[a].name + " planned", agentColour(a)});
+    planners.emplace_back("planner", plannerName(scenario_.planner_name));
   }
-  if (against_trajectory_) legend.push_back({"reference trajectory (dashed)", kReferenceColour});
-  legend.push_back({"flown path (colour = error)", errorColour(0.6), /*gradient=*/true});
-  if (log_.vehicles.size() == 1) {
+  // The state box may take up to 45 % of the frame's height (the legend is below it).
+  const int room = std::max(5, ann.linesFitting(0.45));
+  ann.stateBox(stateBoxLines(t, states, planners, static_cast<std::size_t>(room)));
+  ann.legend(legendEntries(static_cast<std::size_t>(std::max(3, ann.linesFitting(0.4)))));
+  for (std::size_t k = 0; k < scales_.size(); ++k) {
+    // One scale: its full name; one per kind of vehicle: the kind, and short names.
+    const ErrorReference r = scales_[k].reference;
+    const std::string title =
+        scales_.size() == 1
+            ? std::string("error to ") + errorReferenceName(r) + " [m]"
+            : std::string(r == ErrorReference::TimedPlan ? "robots" : "quadrotors") +
+                  ": error to " + errorReferenceShortName(r) + " [m]";
+    ann.errorScale(scales_[k].top, title, static_cast<int>(k));
+  }
+}
+
+std::vector<LegendEntry> RunRenderer::legendEntries(std::size_t room) const {
+  std::vector<LegendEntry> legend;
+  const std::size_t n = log_.vehicles.size();
+  const bool has_reference = std::find(references_.begin(), references_.end(),
+                                       ErrorReference::Trajectory) != references_.end();
+  if (n == 1) {
+    legend.push_back({"planned path", kPlannedPathColour});
+  } else if (n + 1 + (has_reference ? 1 : 0) > room) {
+    // A small frame: every vehicle's planned path in one striped entry.
+    LegendEntry all{"planned paths (one colour each)", agentColour(0)};
+    for (std::size_t a = 0; a < n && a < 8; ++a) all.stripes.push_back(agentColour(a));
+    legend.push_back(all);
+  } else if (n <= 6) {
+    for (std::size_t a = 0; a < n; ++a)
+      legend.push_back({log_.vehicles[a].name + " planned", agentColour(a)});
+  } else {
+    // Many vehicles: the quadrotors by name (the first four), the robots as one striped entry.
+    LegendEntry robots{"robots planned (one colour each)", agentColour(0)};
+    LegendEntry others{"more quadrotors planned", agentColour(0)};
+    std::size_t named = 0;
+    for (std::size_t a = 0; a < n; ++a) {
+      if (isGround(a)) {
+        if (robots.stripes.size() < 8) robots.stripes.push_back(agentColour(a));
+      } else if (named < 4) {
+        legend.push_back({log_.vehicles[a].name + " planned", agentColour(a)});
+        ++named;
+      } else if (others.stripes.size() < 8) {
+        others.stripes.push_back(agentColour(a));
+      }
+    }
+    if (!others.stripes.empty()) legend.push_back(others);
+    if (!robots.stripes.empty()) legend.push_back(robots);
+  }
+  if (has_reference) legend.push_back({"reference trajectory (dashed)", kReferenceColour});
+  legend.push_back({scales_.size() == 1 ? std::string("flown path (colour = error to ") +
+                                              errorReferenceName(scales_[0].reference) + ")"
+                                        : "flown paths (colour = error, scales at right)",
+                    errorColour(0.6), /*gradient=*/true});
+  if (n == 1) {
     legend.push_back({"start", kStartColour});
     legend.push_back({"goal", kGoalColour});
   }
-  ann.legend(legend);
-  ann.errorScale(error_scale_, "tracking error [m]");
+  return legend;
 }
 
 void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>& rgb,

@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "render/camera_rig.h"
+#include "render/frame_annotations.h"
+#include "render/log_lookup.h"
 #include "render/offscreen_context.h"
 #include "render/overlay_palette.h"
 #include "sim/run_log.h"
@@ -39,7 +41,14 @@ class RunRenderer {
   bool project(const Eigen::Vector3d& p, Eigen::Vector2d& pixel) const;
 
   double endTime() const { return end_time_; }
-  double errorScale() const { return error_scale_; }  // m, the trail colour scale's top
+  // m, the top of the colour scale vehicle's trail is coloured on. Vehicles whose errors are
+  // measured against the same kind of reference (log_lookup.h) share a scale; a mixed run has
+  // one for the robots and one for the quadrotors, each with its own bar and title.
+  double errorScale(std::size_t vehicle) const { return scales_[scale_of_[vehicle]].top; }
+  ErrorReference errorReferenceOf(std::size_t vehicle) const { return references_[vehicle]; }
+  const std::vector<double>& trackingErrorsOf(std::size_t vehicle) const {
+    return errors_[vehicle];
+  }
   int width() const { return ctx_->width(); }
   int height() const { return ctx_->height(); }
 
@@ -53,20 +62,29 @@ class RunRenderer {
                   double radius, float alpha = 1.0f);
   void addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector3f& rgb, float alpha);
   void annotate(double t);
+  // room: the most entries the frame has room for.
+  std::vector<LegendEntry> legendEntries(std::size_t room) const;
+  bool isGround(std::size_t vehicle) const;
   Eigen::Vector3f plannedColour(std::size_t vehicle) const;
+
+  struct ErrorScale {
+    ErrorReference reference;
+    double top = 0.1;  // m
+  };
 
   const WorldModel& world_;
   const Scenario& scenario_;
   const RunLog& log_;
   CameraRig rig_;
-  bool against_trajectory_;
+  std::vector<ErrorReference> references_;   // per vehicle
   std::vector<std::vector<double>> errors_;  // per vehicle, per sample
+  std::vector<ErrorScale> scales_;           // one per kind of reference, in order of vehicles
+  std::vector<std::size_t> scale_of_;        // per vehicle, into scales_
   std::vector<int> obstacle_geoms_;          // geom id of each scenario obstacle (-1 if absent)
   // Kept trail vertices per vehicle, for the line width they were decimated for (recomputed
   // when the camera changes it).
   std::vector<std::vector<std::size_t>> trail_vertices_;
   double trail_line_radius_ = -1.0;
-  double error_scale_ = 0.1;
   double end_time_ = 0.0;
   mjData* data_ = nullptr;
   mjvScene scene_;

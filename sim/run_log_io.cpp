@@ -123,9 +123,24 @@ std::string pathCsv(const RunLog& log) {
   return out;
 }
 
+std::string movingObstaclesCsv(const RunLog& log) {
+  std::string out = "t,name,x,y,z\n";
+  for (const MovingObstacleLog& o : log.moving_obstacles) {
+    for (std::size_t i = 0; i < o.t.size() && i < o.pos.size(); ++i) {
+      char buf[128];
+      std::snprintf(buf, sizeof buf, "%.9g,", o.t[i]);
+      out += buf;
+      out += o.name;
+      std::snprintf(buf, sizeof buf, ",%.9g,%.9g,%.9g\n", o.pos[i].x(), o.pos[i].y(), o.pos[i].z());
+      out += buf;
+    }
+  }
+  return out;
+}
+
 void readTimeseriesCsv(const std::string& path, RunLog& log) {
-  const CsvTable t = readCsv(path, {"t", "ref_x", "ref_y", "ref_z", "x", "y", "z", "qw", "qx",
-                                    "qy", "qz", "vx", "vy", "vz", "vehicle"});
+  const CsvTable t = readCsv(path, {"t", "ref_x", "ref_y", "ref_z", "x", "y", "z", "qw", "qx", "qy",
+                                    "qz", "vx", "vy", "vz", "vehicle"});
   for (std::size_t i = 0; i < t.rows.size(); ++i) {
     const auto& r = t.rows[i];
     auto f = [&](const char* name) { return field(t, r, name, path, i); };
@@ -155,6 +170,30 @@ void readPathCsv(const std::string& path, RunLog& log) {
       log.vehicles.front().planned_path.push_back(p);
     else
       vehicleNamed(log, "").planned_path.push_back(p);
+  }
+}
+
+void readMovingObstaclesCsv(const std::string& path, RunLog& log) {
+  const CsvTable t = readCsv(path, {"t", "name", "x", "y", "z"});
+  const std::size_t first = log.moving_obstacles.size();
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const auto& r = t.rows[i];
+    const std::string& name = r[t.column.at("name")];
+    auto it = std::find_if(log.moving_obstacles.begin() + static_cast<std::ptrdiff_t>(first),
+                           log.moving_obstacles.end(),
+                           [&](const MovingObstacleLog& o) { return o.name == name; });
+    if (it == log.moving_obstacles.end()) {
+      log.moving_obstacles.emplace_back().name = name;
+      it = log.moving_obstacles.end() - 1;
+    }
+    const double time = field(t, r, "t", path, i);
+    // The renderer looks positions up by time (a binary search).
+    if (!it->t.empty() && time < it->t.back())
+      throw InputError(path, "line " + std::to_string(i + 2),
+                       "time goes backwards for obstacle '" + name + "'");
+    it->t.push_back(time);
+    it->pos.emplace_back(field(t, r, "x", path, i), field(t, r, "y", path, i),
+                         field(t, r, "z", path, i));
   }
 }
 

@@ -38,7 +38,8 @@ std::string recordedScenarioFile(const std::filesystem::path& dir) {
 void addRenderCommand(CLI::App& app, CommandContext& ctx) {
   auto* cmd = app.add_subcommand(
       "render",
-      "Re-render a logged run from its scenario.yaml, timeseries.csv and path.csv, without\n"
+      "Re-render a logged run from its scenario.yaml, timeseries.csv, path.csv and\n"
+      "moving_obstacles.csv (if the run had moving obstacles), without\n"
       "simulating again. Writes a video (.mp4), a PNG frame sequence (--frames), or, if --out\n"
       "ends in .png, one frame (the last, or the one at --at).");
   struct Args {
@@ -96,6 +97,10 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
     // vehicle column (its rows belong to the first vehicle).
     readTimeseriesCsv((dir / "timeseries.csv").string(), log);
     readPathCsv((dir / "path.csv").string(), log);
+    // Where the moving obstacles were (without it they would stand at their start); runs
+    // logged before the file existed have none.
+    if (!s.moving_obstacles.empty() && std::filesystem::exists(dir / "moving_obstacles.csv"))
+      readMovingObstaclesCsv((dir / "moving_obstacles.csv").string(), log);
     const WorldModel world = WorldModel::build(s);  // its off-screen buffer fits the frame size
     for (std::size_t v = 0; v < log.vehicles.size() && v < s.vehicles.size(); ++v) {
       log.vehicles[v].goal = s.vehicles[v].goal();

@@ -23,6 +23,8 @@ bool writeRunFiles(const WorldModel& world, const Scenario& scenario, const RunL
           "\n");
   writeFileAtomically(dir / "path.csv", pathCsv(log));
   writeFileAtomically(dir / "timeseries.csv", timeseriesCsv(log));
+  if (!log.moving_obstacles.empty())
+    writeFileAtomically(dir / "moving_obstacles.csv", movingObstaclesCsv(log));
 
   // Rendered from the log: final.png, figures/, the videos, and index.html showing them.
   RenderedRun rendered;

@@ -60,3 +60,33 @@ TEST(CameraRig, UnknownCameraNameIsRejected) {
   EXPECT_THROW(cameraKind("sideways"), std::invalid_argument);
   EXPECT_EQ(cameraKind("orbit"), CameraKind::Orbit);
 }
+
+TEST(CameraRig, OverviewFramesTheWorldAndEveryStartAndGoalWithAMargin) {
+  // The goal at the world's corner nearest the overview camera (the default scenario's goal sat
+  // on the frame's bottom edge with the old fixed distance).
+  Scenario s = renderTestScenario(320, 180);
+  s.vehicles[0].waypoints = {{19, 19, 0.5}};
+  RunLog log = straightFlightLog(2.0);
+  log.vehicles[0].goal = {19, 19, 0.5};
+  log.vehicles[0].planned_path.back() = {19, 19, 0.5};
+  const WorldModel world = WorldModel::build(s);
+  RunRenderer renderer(world, s, log, 320, 180);
+  std::vector<std::uint8_t> rgb;
+  renderer.render(renderer.endTime(), "overview", rgb, false);
+  std::vector<Eigen::Vector3d> points = {{3, 3, 2}, {19, 19, 0.5}};
+  for (int c = 0; c < 8; ++c) points.emplace_back(c & 1 ? 20 : 0, c & 2 ? 20 : 0, c & 4 ? 6 : 0);
+  // Projected with the camera MuJoCo rendered with: inside the frame, 5 % clear of each edge.
+  double closest = 1.0;  // the smallest distance to an edge, as a fraction of the frame
+  for (const Eigen::Vector3d& p : points) {
+    Eigen::Vector2d px;
+    ASSERT_TRUE(renderer.project(p, px));
+    const double fx = px.x() / 320.0, fy = px.y() / 180.0;
+    EXPECT_GE(fx, 0.05) << p.transpose();
+    EXPECT_LE(fx, 0.95) << p.transpose();
+    EXPECT_GE(fy, 0.05) << p.transpose();
+    EXPECT_LE(fy, 0.95) << p.transpose();
+    closest = std::min({closest, fx, 1 - fx, fy, 1 - fy});
+  }
+  // Framed from the points, not from afar: the outermost point sits at the margin.
+  EXPECT_NEAR(closest, CameraRig::kOverviewMargin, 0.005);
+}

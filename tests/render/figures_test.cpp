@@ -50,7 +50,8 @@ TEST(Figures, RunFiguresAreWrittenAsPngAndSvgWithTheirContent) {
   EXPECT_NE(top.find("Top view"), std::string::npos);
   EXPECT_NE(top.find("planned path"), std::string::npos);
   EXPECT_NE(top.find("reference trajectory"), std::string::npos);
-  EXPECT_NE(top.find("tracking error [m]"), std::string::npos);
+  // The colour bar says what the colour measures (a minimum-snap flight: its trajectory).
+  EXPECT_NE(top.find("error to the reference trajectory [m]"), std::string::npos);
   // The error figure names the RMSE of the synthetic lag 0.25 sin(pi k/300) over its 301
   // samples: 0.25 sqrt(150/301) = 0.176 m, and its maximum 0.25 m.
   const std::string error = slurp(dir / "figures" / "error.svg");
