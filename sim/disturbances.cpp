@@ -9,7 +9,7 @@ Disturbances::Disturbances(const DisturbanceSettings& settings, const WorldModel
                            double floor_z, std::uint64_t seed)
     : s_(settings), world_(world), floor_z_(floor_z), rng_(seed ^ 0x9e3779b97f4a7c15ULL) {
   for (const VehicleHandles& v : world.vehicles()) {
-    // The bounding radius is arm + rotor radius (+ a little): the rotor radius is what is left.
+    // (A ground robot's entry is unused.) The bounding radius is arm + rotor radius (+ a little): the rotor radius is what is left.
     const double arm = v.params.rotor_xy[0].norm();
     rotor_radius_.push_back(std::max(0.01, v.params.radius - arm));
   }
@@ -25,6 +25,7 @@ void Disturbances::apply(const mjModel*, mjData* d, double dt) {
   wind_now_ = s_.wind + gust_;
   for (std::size_t k = 0; k < world_.vehicles().size(); ++k) {
     const VehicleHandles& v = world_.vehicles()[k];
+    if (v.ground) continue;  // air drag and wind on a robot's wheels are not what is modelled
     const mjtNum* q = d->qpos + v.qpos_adr;
     const mjtNum* u = d->qvel + v.qvel_adr;
     const Eigen::Vector3d vel(u[0], u[1], u[2]);

@@ -1,5 +1,5 @@
 #pragma once
-// External disturbances applied to each quadrotor as forces in MuJoCo (d->xfrc_applied, world
+// External disturbances applied to each quadrotor (ground robots feel none) as forces in MuJoCo (d->xfrc_applied, world
 // frame), so that robustness can be evaluated:
 // - rotor drag: a force against the velocity relative to the air, F = -k_d (v - w) (linear rotor
 //   drag, as in Kai, Allibert, Hua and Hamel, "Nonlinear feedback control of quadrotors

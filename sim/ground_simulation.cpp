@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "sim/contact_monitor.h"
+#include "sim/disturbances.h"
 #include "sim/ground_vehicle_handles.h"
 #include "sim/moving_obstacle_motion.h"
 #include "sim/simulation_health.h"
@@ -113,6 +114,10 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
   placeObstacles(0.0);
   mj_forward(m, d);
 
+  // Wind, rotor drag and ground effect act on the quadrotors flying over the robots.
+  Disturbances disturbances(scenario.disturbances, world, scenario.world.bounds_min.z(),
+                            scenario.sim.seed);
+  const bool disturbed = scenario.disturbances.any();
   const AerialStepRules rules(cfg, scenario.world, options.aerial_hold_after_arrival,
                               options.max_saturated_time);
   std::vector<AerialPilotStep> flights;
@@ -210,6 +215,7 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
       }
     }
     placeObstacles(d->time);
+    if (disturbed) disturbances.apply(m, d, m->opt.timestep);
     mj_step(m, d);
     contacts.update(d, log);
     if (const char* fault = physicsFault(m, d)) {

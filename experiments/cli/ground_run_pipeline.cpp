@@ -439,6 +439,10 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
     throw InputError(scenario.file, "world.moving_obstacles",
                      "moving obstacles need ground robots (omni_base, diff_drive or a URDF): "
                      "quadrotors do not sense them");
+  if (scenario.disturbances.any() && quadrotor_ids.empty())
+    throw InputError(scenario.file, "disturbances",
+                     "wind, rotor drag and ground effect act on quadrotors; this scenario has "
+                     "none (ground robots feel no disturbances)");
   RunSummary summary;
   const WorldModel world = WorldModel::build(scenario);
   Scenario robots = scenario;

@@ -156,3 +156,37 @@ TEST(GroundTeamWithUavs, AerialSectionIsStrict) {
 
 }  // namespace
 }  // namespace cosim
+
+namespace cosim {
+namespace {
+
+// Wind and rotor drag push the quadrotors (their tracking error grows) and leave the robots
+// alone (their execution is the same to the last digit); a ground-only scenario with wind is bad
+// input rather than a silently calm run.
+TEST(GroundTeamWithUavs, WindActsOnTheQuadrotorsOnly) {
+  std::string calm, windy;
+  ASSERT_EQ(runText(kTeamWithUavs, "mixed-calm", calm).status, 0);
+  const RunSummary r =
+      runText(kTeamWithUavs, "mixed-windy", windy,
+              {"disturbances.wind=[1.5, 0, 0]", "disturbances.gust=0.3", "disturbances.drag=0.05"});
+  EXPECT_EQ(r.status, 0) << r.message;
+  EXPECT_GT(test::jsonNumber(windy, "uav_rmse_m"), 3.0 * test::jsonNumber(calm, "uav_rmse_m"));
+  EXPECT_EQ(test::jsonNumber(windy, "rmse_m"), test::jsonNumber(calm, "rmse_m"));
+  EXPECT_EQ(test::jsonNumber(windy, "executed_makespan_s"),
+            test::jsonNumber(calm, "executed_makespan_s"));
+
+  const std::string robots_only =
+      "world:\n  bounds: {min: [0, 0, 0], max: [4.2, 4.2, 2.5]}\nvehicles:\n"
+      "  - {name: a0, model: omni_base, start: [0.35, 0.35, 0], goal: [3.85, 3.85, 0]}\n"
+      "disturbances: {wind: [3, 0, 0]}\n";
+  std::string metrics;
+  try {
+    runText(robots_only, "ground-windy", metrics);
+    ADD_FAILURE() << "wind on a robots-only scenario was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.place(), "disturbances");
+  }
+}
+
+}  // namespace
+}  // namespace cosim
