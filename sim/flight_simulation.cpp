@@ -1,12 +1,9 @@
 #include "sim/flight_simulation.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
-#include "sim/contact_monitor.h"
-#include "sim/disturbances.h"
-#include "sim/simulation_health.h"
+#include "sim/physics_stepper.h"
 
 namespace cosim {
 
@@ -20,10 +17,8 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
   mj_forward(m, d);
 
   const SimSettings& cfg = options.settings;
-  const int steps_per_control =
-      std::max(1, static_cast<int>(std::lround(1.0 / (cfg.timestep * cfg.control_rate))));
-  const double control_dt = steps_per_control * m->opt.timestep;
-  const long max_steps = static_cast<long>(std::ceil(cfg.max_time / m->opt.timestep));
+  PhysicsStepper physics(world, scenario, cfg);
+  const double control_dt = physics.controlDt();
   const auto& vehicles = world.vehicles();
 
   const AerialStepRules rules(cfg, scenario.world, options.hold_after_arrival,
@@ -36,16 +31,11 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
     log.vehicles.push_back(
         steps.back().begin(static_cast<std::size_t>(cfg.max_time / control_dt) + 2));
   }
-  ContactMonitor contacts(m, world, scenario);
-  Disturbances disturbances(scenario.disturbances, world, scenario.world.bounds_min.z(),
-                            scenario.sim.seed);
-  const bool disturbed = scenario.disturbances.any();
 
-  const auto wall_start = std::chrono::steady_clock::now();
-  long step = 0;
+  physics.startClock();
   log.end_reason = "max_time";
-  for (; step < max_steps; ++step) {
-    if (step % steps_per_control == 0) {
+  for (long step = 0; step < physics.maxSteps(); ++step) {
+    if (step % physics.stepsPerControl() == 0) {
       if (options.interrupt && options.interrupt->load()) {
         log.end_reason = "interrupted";
         break;
@@ -63,20 +53,12 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
         break;
       }
     }
-    if (disturbed) disturbances.apply(m, d, m->opt.timestep);
-    mj_step(m, d);
-    contacts.update(d, log);
-    if (const char* fault = physicsFault(m, d)) {
+    if (const char* fault = physics.step(d, log)) {
       log.end_reason = fault;
-      ++step;
       break;
     }
   }
-  log.wall_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  log.sim_time = d->time;
-  log.physics_steps = step;
-  for (int i = 0; i < mjNWARNING; ++i) log.mujoco_warnings += d->warning[i].number;
+  physics.finish(d, log);
   mj_deleteData(d);
   return log;
 }

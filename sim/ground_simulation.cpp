@@ -1,15 +1,12 @@
 #include "sim/ground_simulation.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 
-#include "sim/contact_monitor.h"
-#include "sim/disturbances.h"
 #include "sim/ground_vehicle_handles.h"
 #include "sim/moving_obstacle_motion.h"
-#include "sim/simulation_health.h"
+#include "sim/physics_stepper.h"
 
 namespace cosim {
 
@@ -82,12 +79,10 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
     if (!v.ground) startHovering(m, d, v);
   }
   const SimSettings& cfg = options.settings;
-  const int steps_per_control =
-      std::max(1, static_cast<int>(std::lround(1.0 / (cfg.timestep * cfg.control_rate))));
-  const double control_dt = steps_per_control * m->opt.timestep;
+  PhysicsStepper physics(world, scenario, cfg);
+  const double control_dt = physics.controlDt();
   const int controls_per_log =
       std::max(1, static_cast<int>(std::ceil(1.0 / (options.log_rate * control_dt) - 1e-9)));
-  const long max_steps = static_cast<long>(std::ceil(cfg.max_time / m->opt.timestep));
 
   // Moving obstacles: mocap bodies placed from their trajectories.
   auto obstacle_xy =
@@ -114,10 +109,6 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
   placeObstacles(0.0);
   mj_forward(m, d);
 
-  // Wind, rotor drag and ground effect act on the quadrotors flying over the robots.
-  Disturbances disturbances(scenario.disturbances, world, scenario.world.bounds_min.z(),
-                            scenario.sim.seed);
-  const bool disturbed = scenario.disturbances.any();
   const AerialStepRules rules(cfg, scenario.world, options.aerial_hold_after_arrival,
                               options.max_saturated_time);
   std::vector<AerialPilotStep> flights;
@@ -136,14 +127,13 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
     vl.planned_path = p.planned_path;
     p.controller->reset();
   }
-  ContactMonitor contacts(m, world, scenario);
   std::vector<PlanarState> states(robots.size());
 
-  const auto wall_start = std::chrono::steady_clock::now();
-  long step = 0, control_count = 0;
+  physics.startClock();
+  long control_count = 0;
   log.end_reason = "max_time";
-  for (; step < max_steps; ++step) {
-    if (step % steps_per_control == 0) {
+  for (long step = 0; step < physics.maxSteps(); ++step) {
+    if (step % physics.stepsPerControl() == 0) {
       if (options.interrupt && options.interrupt->load()) {
         log.end_reason = "interrupted";
         break;
@@ -215,20 +205,13 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
       }
     }
     placeObstacles(d->time);
-    if (disturbed) disturbances.apply(m, d, m->opt.timestep);
-    mj_step(m, d);
-    contacts.update(d, log);
-    if (const char* fault = physicsFault(m, d)) {
+    // (Wind, rotor drag and ground effect act on the quadrotors flying over the robots.)
+    if (const char* fault = physics.step(d, log)) {
       log.end_reason = fault;
-      ++step;
       break;
     }
   }
-  log.wall_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  log.sim_time = d->time;
-  log.physics_steps = step;
-  for (int i = 0; i < mjNWARNING; ++i) log.mujoco_warnings += d->warning[i].number;
+  physics.finish(d, log);
   mj_deleteData(d);
   return log;
 }
