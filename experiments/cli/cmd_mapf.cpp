@@ -123,8 +123,9 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
 
     // The execution's scenario, checked before planning: a robot model that does not load or
     // does not fit the cells is bad input found at once, not after a plan has been written.
-    MapfExecutionSetup setup;
+    Scenario execution;
     if (a->execute) {
+      MapfExecutionSetup setup;
       setup.map_path = std::filesystem::absolute(a->map).string();
       for (const std::string& b : a->blocks) setup.extra_blocked.push_back(parseCell(b));
       setup.starts = inst.starts;
@@ -135,15 +136,16 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
       setup.connectivity = inst.connectivity;
       setup.time_limit_s = a->time_limit;
       setup.seed = a->seed;
-      setup.robot = a->robot;
+      // A URDF file named relative to here must still be found from DIR/execution/scenario.yaml.
+      const bool urdf = a->robot.size() > 5 && a->robot.substr(a->robot.size() - 5) == ".urdf";
+      setup.robot = urdf ? std::filesystem::absolute(a->robot).string() : a->robot;
       setup.cell = a->cell > 0 ? a->cell : (inst.connectivity == 8 ? 0.7 : 0.5);
       setup.max_time_s = a->max_time;
-      const Scenario check = parseScenario(mapfExecutionScenarioYaml(setup), "--execute");
+      execution = parseScenario(mapfExecutionScenarioYaml(setup), "--execute");
       double radius = 0.0;
-      const WorldModel robots = WorldModel::build(check);
-      for (const VehicleHandles& v : robots.vehicles())
-        radius = std::max(radius, v.params.radius);
-      checkRobotsFitGridMap(check, radius, inst.connectivity);
+      const WorldModel robots = WorldModel::build(execution);
+      for (const VehicleHandles& v : robots.vehicles()) radius = std::max(radius, v.params.radius);
+      checkRobotsFitGridMap(execution, radius, inst.connectivity);
     }
 
     MapfQuery query;
@@ -200,14 +202,13 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
 
     const std::filesystem::path exec_dir = dir / "execution";
     std::filesystem::create_directories(exec_dir);
-    Scenario scenario =
-        parseScenario(mapfExecutionScenarioYaml(setup), (exec_dir / "scenario.yaml").string());
+    execution.file = (exec_dir / "scenario.yaml").string();  // where the run writes it
     RunRequest request;
     request.out_dir = exec_dir;
     request.video = a->video;
     request.progress = true;
     request.interrupt = &installInterruptFlag();
-    const RunSummary run = executeRun(scenario, request);
+    const RunSummary run = executeRun(execution, request);
     if (run.message == "interrupted") {
       std::cerr << "cosim: interrupted; " << exec_dir.string() << " holds no finished run\n";
       ctx.status = 1;
