@@ -7,11 +7,21 @@
 
 namespace cosim {
 
+// What the controller knows of the vehicle: the estimator's output (sim/ with `sensors` and
+// `estimator`), or the exact state with ideal sensing.
 struct VehicleState {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();          // world, m
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // world, m/s
   Eigen::Quaterniond attitude = Eigen::Quaterniond::Identity();  // body to world
-  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // body frame, rad/s
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // body frame, rad/s (gyro - bias)
+  // The accelerometer's reading less its estimated bias: specific force (acceleration minus
+  // gravity) in the body frame, m/s^2; (0, 0, g) in hover. Incremental controllers (INDI) feed
+  // back on it.
+  Eigen::Vector3d specific_force = Eigen::Vector3d::Zero();
+  // Each rotor's thrust as the controller can know it: the measured rotor speed (ESC telemetry,
+  // or the optical encoders of Tal and Karaman 2021) through the controller's own thrust
+  // coefficient, k_f w^2, N. Same order as ControlOutput::rotor_thrusts.
+  Eigen::Vector4d rotor_thrusts = Eigen::Vector4d::Zero();
 };
 
 // The reference in the flat outputs (position and yaw) with derivatives for feed-forward.
@@ -20,8 +30,10 @@ struct FlatReference {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d acceleration = Eigen::Vector3d::Zero();
   Eigen::Vector3d jerk = Eigen::Vector3d::Zero();
+  Eigen::Vector3d snap = Eigen::Vector3d::Zero();
   double yaw = 0.0;  // rad
-  double yaw_rate = 0.0;
+  double yaw_rate = 0.0;          // rad/s
+  double yaw_acceleration = 0.0;  // rad/s^2
 };
 
 struct ControlOutput {

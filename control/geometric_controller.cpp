@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "control/thrust_direction.h"
+
 namespace cosim {
 namespace {
 
@@ -13,8 +15,12 @@ Eigen::Vector3d vee(const Eigen::Matrix3d& S) {
 
 }  // namespace
 
-GeometricController::GeometricController(const QuadrotorParams& params, const GeometricGains& gains)
-    : params_(params), gains_(gains), mixer_(params) {}
+GeometricController::GeometricController(const QuadrotorParams& params, const GeometricGains& gains,
+                                         bool drag_compensation)
+    : params_(params),
+      gains_(gains),
+      D_(drag_compensation ? params.linearDragPerMass() : Eigen::Vector3d::Zero()),
+      mixer_(params) {}
 
 void GeometricController::reset() {
   integral_.setZero();
@@ -40,29 +46,32 @@ ControlOutput GeometricController::update(const VehicleState& s, const FlatRefer
   }
 
   // Desired thrust per unit mass, eq. 15 with z up: A = -k_x e_x - k_v e_v - k_i int e_x + g e3
-  // + a_d. Its tilt is limited by shrinking the horizontal part (height is kept first).
-  Eigen::Vector3d A = -gains_.k_x.cwiseProduct(e_x) - gains_.k_v.cwiseProduct(e_v) -
-                      gains_.k_i * integral_ + g * e3 + ref.acceleration;
-  A.z() = std::max(A.z(), 0.1 * g);
-  const double max_h = A.z() * std::tan(gains_.max_tilt_deg * M_PI / 180.0);
-  const double h = A.head<2>().norm();
-  if (h > max_h) A.head<2>() *= max_h / h;
+  // + a_d, plus the rotor drag R D R^T v_d with drag compensation (Faessler et al.; zero D
+  // otherwise). Its tilt is limited by shrinking the horizontal part (height is kept first).
+  const Eigen::Matrix3d R = s.attitude.toRotationMatrix();
+  const Eigen::Matrix3d D = D_.asDiagonal();
+  const Eigen::Vector3d A = limitTilt(
+      -gains_.k_x.cwiseProduct(e_x) - gains_.k_v.cwiseProduct(e_v) - gains_.k_i * integral_ +
+          g * e3 + ref.acceleration + R * D * R.transpose() * ref.velocity,
+      0.1 * g, gains_.max_tilt_deg);
 
   // Desired attitude: b3 along A, b1 as close to the reference heading as b3 allows.
-  const Eigen::Vector3d b3d = A.normalized();
-  const Eigen::Vector3d b1c(std::cos(ref.yaw), std::sin(ref.yaw), 0.0);
-  const Eigen::Vector3d b2d = b3d.cross(b1c).normalized();
-  const Eigen::Vector3d b1d = b2d.cross(b3d);
-  R_d_ << b1d, b2d, b3d;
+  R_d_ = attitudeAlong(A, ref.yaw);
+  const Eigen::Vector3d b1d = R_d_.col(0), b2d = R_d_.col(1), b3d = R_d_.col(2);
 
   // Desired body rates from the jerk (Mellinger and Kumar eq. 7): the change of the thrust
-  // direction is the jerk's part normal to b3, divided by the thrust per unit mass.
-  const Eigen::Vector3d h_w = (ref.jerk - b3d.dot(ref.jerk) * b3d) / A.norm();
-  omega_d_ = {-h_w.dot(b2d), h_w.dot(b1d), ref.yaw_rate * b3d.z()};
+  // direction is the jerk's part normal to b3, divided by the thrust per unit mass. With drag
+  // (Faessler et al.) the jerk is j + R_d D R_d^T a_d and the thrust c + (d - d_z) b3 . v_d
+  // (floored at c / 2, as IndiController::feedForward does).
+  const Eigen::Vector3d j_D = ref.jerk + R_d_ * D * R_d_.transpose() * ref.acceleration;
+  const double c = A.norm();
+  const double b3_v = b3d.dot(ref.velocity);
+  omega_d_ = {-j_D.dot(b2d) / std::max(c + (D_.y() - D_.z()) * b3_v, 0.5 * c),
+              j_D.dot(b1d) / std::max(c + (D_.x() - D_.z()) * b3_v, 0.5 * c),
+              ref.yaw_rate * b3d.z()};
 
   // Attitude errors on SO(3) (eqs. 10-11) and the moment (eq. 16); the desired angular
   // acceleration is taken as zero (it would need the reference snap).
-  const Eigen::Matrix3d R = s.attitude.toRotationMatrix();
   const Eigen::Vector3d e_R = 0.5 * vee(R_d_.transpose() * R - R.transpose() * R_d_);
   const Eigen::Vector3d omega_d_body = R.transpose() * R_d_ * omega_d_;
   const Eigen::Vector3d& w = s.angular_velocity;

@@ -6,6 +6,16 @@
 // recovering from a 90-degree roll. The desired body rates come from the reference jerk by
 // differential flatness (Mellinger and Kumar 2011, eq. 7), so the attitude loop does not lag the
 // trajectory.
+//
+// With drag_compensation, the rotor drag of Faessler, Franchi and Scaramuzza 2018 ("Differential
+// flatness of quadrotor dynamics subject to rotor drag for accurate tracking of high-speed
+// trajectories", RA-L 3(2); dv/dt = c z_B - g e3 - R D R^T v, D = diag(d_x, d_y, d_z) per unit
+// mass from QuadrotorParams::linearDragPerMass) enters the feed-forward: the desired thrust gains
+// R D R^T v_ref (the drag the reference velocity will meet; R is the current attitude, through
+// which the drag acts, where Faessler et al. use the reference attitude: the two agree on the
+// trajectory), and the body rates use the drag-corrected jerk j + R_d D R_d^T a_ref over the
+// thrust corrected by (d_x - d_z) z_B . v_ref (their body-rate equations with d_x = d_y, as
+// linearDragPerMass gives; the terms in d_x - d_y that couple the rates are left out).
 #include "control/flight_controller.h"
 #include "control/mixer.h"
 
@@ -28,7 +38,8 @@ struct GeometricGains {
 
 class GeometricController : public FlightController {
  public:
-  GeometricController(const QuadrotorParams& params, const GeometricGains& gains = {});
+  GeometricController(const QuadrotorParams& params, const GeometricGains& gains = {},
+                      bool drag_compensation = false);
   std::string name() const override { return "geometric"; }
   void reset() override;
   ControlOutput update(const VehicleState& state, const FlatReference& ref, double dt) override;
@@ -40,6 +51,7 @@ class GeometricController : public FlightController {
  private:
   QuadrotorParams params_;
   GeometricGains gains_;
+  Eigen::Vector3d D_;  // drag per unit mass in the feed-forward, 1/s (zero without compensation)
   Mixer mixer_;
   Eigen::Vector3d integral_ = Eigen::Vector3d::Zero();  // of the position error, m s
   bool saturated_ = false;                              // the mixer gave something up last step

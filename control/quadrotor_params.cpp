@@ -1,8 +1,23 @@
 #include "control/quadrotor_params.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cosim {
+
+double QuadrotorParams::rotorSpeedFor(double thrust) const {
+  const double w = std::sqrt(std::max(thrust, 0.0) / thrust_coefficient);
+  return std::clamp(w, min_rotor_speed, max_rotor_speed);
+}
+
+double QuadrotorParams::hoverRotorSpeed() const {
+  return rotorSpeedFor(mass * gravity / 4.0);
+}
+
+Eigen::Vector3d QuadrotorParams::linearDragPerMass() const {
+  const double d = 4.0 * hoverRotorSpeed() * rotor_drag_coefficient / mass;
+  return {d, d, 0.0};
+}
 
 std::array<Eigen::Vector2d, 4> QuadrotorParams::xLayout(double arm) {
   std::array<Eigen::Vector2d, 4> xy;

@@ -2,25 +2,6 @@
 
 namespace cosim {
 
-VehicleState readVehicleState(const mjModel*, const mjData* d, const VehicleHandles& v) {
-  const mjtNum* q = d->qpos + v.qpos_adr;
-  const mjtNum* u = d->qvel + v.qvel_adr;
-  VehicleState s;
-  s.position = {q[0], q[1], q[2]};
-  s.attitude = Eigen::Quaterniond(q[3], q[4], q[5], q[6]).normalized();
-  s.velocity = {u[0], u[1], u[2]};          // free joint: linear velocity in the world frame
-  s.angular_velocity = {u[3], u[4], u[5]};  // free joint: angular velocity in the body frame
-  return s;
-}
-
-void startHovering(const mjModel* m, mjData* d, const VehicleHandles& v) {
-  const double hover = v.params.mass * v.params.gravity / 4.0;
-  for (int i = 0; i < 4; ++i) {
-    d->ctrl[v.actuators[i]] = hover;
-    actuatorActivation(m, d, v.actuators[i]) = hover;
-  }
-}
-
 AerialStepRules::AerialStepRules(const SimSettings& settings, const World& world,
                                  double hold_after_arrival, double max_saturated_time)
     : goal_tolerance(settings.goal_tolerance),
@@ -30,10 +11,15 @@ AerialStepRules::AerialStepRules(const SimSettings& settings, const World& world
       far(10.0 * (world.bounds_max - world.bounds_min).norm()) {}
 
 AerialPilotStep::AerialPilotStep(const VehicleHandles& vehicle, VehiclePilot& pilot,
-                                 const AerialStepRules& rules)
-    : vehicle_(&vehicle), pilot_(&pilot), rules_(rules) {}
+                                 const AerialStepRules& rules, const AerialSensing& sensing,
+                                 std::size_t vehicle_index)
+    : vehicle_(&vehicle),
+      pilot_(&pilot),
+      rules_(rules),
+      airframe_(pilot.believed_airframe ? pilot.believed_airframe : &vehicle.params),
+      estimator_(sensing.estimator, sensing.sensors, *airframe_, sensing.seed, vehicle_index) {}
 
-VehicleLog AerialPilotStep::begin(std::size_t expected_samples) {
+VehicleLog AerialPilotStep::begin(const mjData* d, std::size_t expected_samples) {
   VehicleLog vl;
   vl.name = vehicle_->name;
   vl.radius = vehicle_->params.radius;
@@ -42,29 +28,37 @@ VehicleLog AerialPilotStep::begin(std::size_t expected_samples) {
   vl.planned_path = pilot_->planned_path;
   vl.samples.reserve(expected_samples);
   pilot_->controller->reset();
+  estimator_.begin(d, *vehicle_);
   saturated_since_ = -1.0;
   return vl;
 }
 
-AerialPilotStep::Outcome AerialPilotStep::step(const mjModel* m, mjData* d, double control_dt,
-                                               VehicleLog& vl, bool record) {
+AerialPilotStep::Outcome AerialPilotStep::step(const mjData* d, QuadrotorPlant& plant,
+                                               double control_dt, VehicleLog& vl, bool record) {
   const VehicleHandles& v = *vehicle_;
-  const VehicleState s = readVehicleState(m, d, v);
-  const FlatReference ref = pilot_->reference->reference(d->time, s);
-  const ControlOutput out = pilot_->controller->update(s, ref, control_dt);
-  for (int i = 0; i < 4; ++i) d->ctrl[v.actuators[i]] = out.rotor_thrusts[i];
+  const VehicleState truth = readVehicleState(d, v);
+  const VehicleState seen = estimator_.estimate(d, v, plant);
+  const FlatReference ref = pilot_->reference->reference(d->time, seen);
+  const ControlOutput out = pilot_->controller->update(seen, ref, control_dt);
+  Eigen::Vector4d speeds;
+  for (int i = 0; i < 4; ++i) speeds[i] = airframe_->rotorSpeedFor(out.rotor_thrusts[i]);
+  plant.rotors().command(speeds);
 
   if (record) {
     LogSample& x = vl.samples.emplace_back();
     x.t = d->time;
     x.ref_pos = ref.position;
     x.ref_vel = ref.velocity;
-    x.pos = s.position;
-    x.vel = s.velocity;
-    x.att = s.attitude;
-    x.omega = s.angular_velocity;
+    x.pos = truth.position;
+    x.vel = truth.velocity;
+    x.att = truth.attitude;
+    x.omega = truth.angular_velocity;
+    x.est_pos = seen.position;
+    x.est_vel = seen.velocity;
+    x.est_att = seen.attitude;
     x.rotor_cmd = out.rotor_thrusts;
-    for (int i = 0; i < 4; ++i) x.rotor_thrust[i] = actuatorActivation(m, d, v.actuators[i]);
+    x.rotor_speed = plant.rotors().speeds();
+    for (int i = 0; i < 4; ++i) x.rotor_thrust[i] = d->ctrl[v.actuators[i]];
     x.saturated = out.saturated;
   }
   Outcome o;
@@ -76,14 +70,14 @@ AerialPilotStep::Outcome AerialPilotStep::step(const mjModel* m, mjData* d, doub
     o.saturated = true;
   }
 
-  // Arrival: on the final set-point and within the goal tolerance.
+  // Arrival: on the final set-point and within the goal tolerance (of the true position).
   if (!vl.reached_goal && pilot_->reference->atFinalSetpoint() &&
-      (s.position - pilot_->goal).norm() < rules_.goal_tolerance) {
+      (truth.position - pilot_->goal).norm() < rules_.goal_tolerance) {
     vl.reached_goal = true;
     vl.arrival_time = d->time;
   }
   o.done = vl.reached_goal && d->time >= vl.arrival_time + rules_.hold_after_arrival;
-  o.diverged = !s.position.allFinite() || (s.position - rules_.centre).norm() > rules_.far;
+  o.diverged = !truth.position.allFinite() || (truth.position - rules_.centre).norm() > rules_.far;
   return o;
 }
 

@@ -1,15 +1,19 @@
 #pragma once
 // One quadrotor's share of a simulation loop, for every loop that flies quadrotors
-// (sim/flight_simulation.h; sim/ground_simulation.h flies them over ground robots): the hover
-// start, then at each control step: measure the state, ask the reference for the set-point, run
-// the controller, command the rotors, log a sample, and book arrival, saturation and divergence.
+// (sim/flight_simulation.h; sim/ground_simulation.h flies them over ground robots): at each
+// control step: estimate the state from what the sensors delivered (sim/state_estimator.h), ask
+// the reference for the set-point, run the controller, turn its rotor thrusts into rotor-speed
+// commands with the flight software's thrust coefficient, log a sample, and book arrival,
+// saturation and divergence (judged on the true state).
 #include <Eigen/Core>
 #include <cstddef>
 #include <vector>
 
 #include "control/flight_controller.h"
 #include "control/reference_source.h"
+#include "sim/quadrotor_plant.h"
 #include "sim/run_log.h"
+#include "sim/state_estimator.h"
 #include "sim/world_model.h"
 
 namespace cosim {
@@ -20,6 +24,8 @@ struct VehiclePilot {
   ReferenceSource* reference = nullptr;
   Eigen::Vector3d goal = Eigen::Vector3d::Zero();
   std::vector<Eigen::Vector3d> planned_path;  // for the log
+  // What the flight software believes of the airframe (sim/model_error.h); nullptr: the truth.
+  const QuadrotorParams* believed_airframe = nullptr;
 };
 
 // When a quadrotor has arrived, has failed, or is lost.
@@ -37,34 +43,39 @@ struct AerialStepRules {
   double far = 1e9;  // m
 };
 
-// The measured state of a vehicle's free body.
-VehicleState readVehicleState(const mjModel* m, const mjData* d, const VehicleHandles& v);
-
-// Rotors already spinning at hover thrust (commands and the motor filters' states): the motor lag
-// would otherwise drop the vehicle for its first tens of milliseconds.
-void startHovering(const mjModel* m, mjData* d, const VehicleHandles& v);
+// How the quadrotors of a run sense themselves: the scenario's sensors and estimator, and the
+// seed their noise streams derive from.
+struct AerialSensing {
+  SensorSettings sensors;
+  EstimatorSettings estimator;
+  std::uint64_t seed = 1;
+};
 
 class AerialPilotStep {
  public:
-  AerialPilotStep(const VehicleHandles& vehicle, VehiclePilot& pilot, const AerialStepRules& rules);
+  AerialPilotStep(const VehicleHandles& vehicle, VehiclePilot& pilot, const AerialStepRules& rules,
+                  const AerialSensing& sensing, std::size_t vehicle_index);
 
   // The vehicle's log entry (name, size, thrust limit, goal, planned path, room for
-  // `expected_samples`); resets the controller.
-  VehicleLog begin(std::size_t expected_samples);
+  // `expected_samples`); resets the controller and starts the estimator at the state in d.
+  VehicleLog begin(const mjData* d, std::size_t expected_samples);
 
   struct Outcome {
     bool done = false;       // arrived and held the goal for hold_after_arrival
     bool saturated = false;  // saturated for longer than max_saturated_time
     bool diverged = false;
   };
-  // One control step at d->time: writes the rotor commands into d->ctrl and, if `record`, a
-  // sample into `log`. Arrival and saturation are booked at every step, recorded or not.
-  Outcome step(const mjModel* m, mjData* d, double control_dt, VehicleLog& log, bool record);
+  // One control step at d->time: commands the plant's rotors and, if `record`, writes a sample
+  // into `log`. Arrival and saturation are booked at every step, recorded or not.
+  Outcome step(const mjData* d, QuadrotorPlant& plant, double control_dt, VehicleLog& log,
+               bool record);
 
  private:
   const VehicleHandles* vehicle_;
   VehiclePilot* pilot_;
   AerialStepRules rules_;
+  const QuadrotorParams* airframe_;  // believed
+  StateEstimator estimator_;
   double saturated_since_ = -1.0;  // since when the mixer has been saturated (negative: it is not)
 };
 

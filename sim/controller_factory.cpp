@@ -1,7 +1,9 @@
 #include "sim/controller_factory.h"
 
 #include "control/cascade_controller.h"
+#include "control/dsl_pid_controller.h"
 #include "control/geometric_controller.h"
+#include "control/indi_controller.h"
 #include "planning/input_error.h"
 
 namespace cosim {
@@ -47,18 +49,65 @@ GeometricGains readGeometricGains(ParamSet& p) {
   return g;
 }
 
+// Horizontal axes share one gain; z has its own.
+Eigen::Vector3d readHorizontalAndZ(ParamSet& p, const std::string& prefix,
+                                   const Eigen::Vector3d& fallback, double hi) {
+  const double xy = p.getDouble(prefix + "_xy", fallback.x(), 0.0, hi);
+  return {xy, xy, p.getDouble(prefix + "_z", fallback.z(), 0.0, hi)};
+}
+
+IndiGains readIndiGains(ParamSet& p) {
+  IndiGains g;
+  g.k_x = readHorizontalAndZ(p, "k_x", g.k_x, 1e4);
+  g.k_v = readHorizontalAndZ(p, "k_v", g.k_v, 1e4);
+  g.k_xi = readAxes(p, "k_xi", g.k_xi);
+  g.k_omega = readAxes(p, "k_omega", g.k_omega);
+  g.filter_cutoff_hz = p.getDouble("filter_cutoff_hz", g.filter_cutoff_hz, 0.1, 1e4);
+  g.max_tilt_deg = p.getDouble("max_tilt_deg", g.max_tilt_deg, 1.0, 89.0);
+  return g;
+}
+
+// In DSLPIDControl.py's own units (the CF2X's N and PWM; see control/dsl_pid_controller.h).
+DslPidGains readDslPidGains(ParamSet& p) {
+  DslPidGains g;
+  g.p_for = readHorizontalAndZ(p, "p_for", g.p_for, 1e3);
+  g.i_for = readHorizontalAndZ(p, "i_for", g.i_for, 1e3);
+  g.d_for = readHorizontalAndZ(p, "d_for", g.d_for, 1e3);
+  g.i_pos_limit_xy = p.getDouble("i_pos_limit_xy", g.i_pos_limit_xy, 0.0, 1e3);
+  g.i_pos_limit_z = p.getDouble("i_pos_limit_z", g.i_pos_limit_z, 0.0, 1e3);
+  const auto readTorqueAxes = [&](const std::string& prefix, const Eigen::Vector3d& fallback) {
+    const double rp = p.getDouble(prefix + "_rp", fallback.x(), 0.0, 1e7);
+    return Eigen::Vector3d(rp, rp, p.getDouble(prefix + "_yaw", fallback.z(), 0.0, 1e7));
+  };
+  g.p_tor = readTorqueAxes("p_tor", g.p_tor);
+  g.i_tor = readTorqueAxes("i_tor", g.i_tor);
+  g.d_tor = readTorqueAxes("d_tor", g.d_tor);
+  g.i_rpy_limit_rp = p.getDouble("i_rpy_limit_rp", g.i_rpy_limit_rp, 0.0, 1e4);
+  g.i_rpy_limit_yaw = p.getDouble("i_rpy_limit_yaw", g.i_rpy_limit_yaw, 0.0, 1e4);
+  g.max_torque_pwm = p.getDouble("max_torque_pwm", g.max_torque_pwm, 0.0, 65535.0);
+  return g;
+}
+
 }  // namespace
 
 std::unique_ptr<FlightController> makeFlightController(const std::string& name, ParamSet& gains,
-                                                       const QuadrotorParams& params) {
+                                                       const QuadrotorParams& params,
+                                                       bool drag_compensation) {
   std::unique_ptr<FlightController> c;
   if (name == "cascade") {
     c = std::make_unique<CascadeController>(params, readCascadeGains(gains));
   } else if (name == "geometric") {
-    c = std::make_unique<GeometricController>(params, readGeometricGains(gains));
+    c = std::make_unique<GeometricController>(params, readGeometricGains(gains), drag_compensation);
+  } else if (name == "indi") {
+    c = std::make_unique<IndiController>(params, readIndiGains(gains), drag_compensation);
+  } else if (name == "dsl_pid") {
+    c = std::make_unique<DslPidController>(params, readDslPidGains(gains));
   } else {
     throw InputError(gains.file(), "key controller.name", "unknown controller '" + name + "'");
   }
+  if (drag_compensation && name != "geometric" && name != "indi")
+    throw InputError(gains.file(), "key controller.drag_compensation",
+                     "drag_compensation applies to geometric and indi, not to '" + name + "'");
   gains.requireAllUsed("controller '" + name + "'");
   return c;
 }

@@ -1,6 +1,8 @@
 #pragma once
-// Builds the scenario's flight controller by name, with gains from the scenario's
-// controller.gains (every gain optional, misspelt ones an error).
+// Builds the scenario's flight controller by name (cascade, geometric, indi, dsl_pid), with gains
+// from the scenario's controller.gains (every gain optional, misspelt ones an error).
+// drag_compensation (controller.drag_compensation) puts the rotor drag of Faessler et al. 2018
+// into the feed-forward of geometric and indi; with another controller it is bad input.
 #include <memory>
 
 #include "control/flight_controller.h"
@@ -10,6 +12,7 @@
 namespace cosim {
 
 std::unique_ptr<FlightController> makeFlightController(const std::string& name, ParamSet& gains,
-                                                       const QuadrotorParams& params);
+                                                       const QuadrotorParams& params,
+                                                       bool drag_compensation = false);
 
 }  // namespace cosim

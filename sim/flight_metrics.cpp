@@ -30,7 +30,7 @@ FlightMetrics computeFlightMetrics(const VehicleLog& log, const World& world,
 
   const double t_end = log.reached_goal ? log.arrival_time : log.samples.back().t;
   m.flight_time_s = t_end - log.samples.front().t;
-  double sum_sq = 0.0;
+  double sum_sq = 0.0, estimation_sq = 0.0;
   std::size_t n = 0, saturated = 0;
   m.min_clearance_m = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < log.samples.size(); ++i) {
@@ -45,6 +45,7 @@ FlightMetrics computeFlightMetrics(const VehicleLog& log, const World& world,
     if (log.max_thrust > 0)
       m.peak_thrust_fraction = std::max(m.peak_thrust_fraction, s.rotor_thrust.maxCoeff() / log.max_thrust);
     saturated += s.saturated ? 1 : 0;
+    estimation_sq += (s.est_pos - s.pos).squaredNorm();
     // Clearance over the whole run (hovering at the goal can be close to something too).
     m.min_clearance_m = std::min(m.min_clearance_m, world.distanceToObstacles(s.pos) - log.radius);
     if (s.t > t_end) continue;  // tracking error only up to arrival
@@ -56,6 +57,7 @@ FlightMetrics computeFlightMetrics(const VehicleLog& log, const World& world,
   }
   m.rmse_m = n ? std::sqrt(sum_sq / static_cast<double>(n)) : 0.0;
   m.saturated_fraction = static_cast<double>(saturated) / static_cast<double>(log.samples.size());
+  m.estimation_rmse_m = std::sqrt(estimation_sq / static_cast<double>(log.samples.size()));
   return m;
 }
 

@@ -23,6 +23,9 @@ struct FlightMetrics {
   double saturated_fraction = 0.0;    // share of control steps with mixer saturation
   double energy_proxy = 0.0;      // integral of sum_i thrust_i^1.5 dt (induced power ~ T^1.5)
   double max_speed_mps = 0.0;
+  // The estimator's 3D position error against the truth, RMS over the whole run (0 with ideal
+  // sensing: the controller saw the truth).
+  double estimation_rmse_m = 0.0;
 };
 
 // error_against_trajectory: true when the reference is a time-parametrised trajectory.

@@ -12,24 +12,23 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
   const mjModel* m = world.model();
   mjData* d = mj_makeData(m);
   mj_resetData(m, d);
-  // Vehicles start hovering.
-  for (const VehicleHandles& v : world.vehicles()) startHovering(m, d, v);
-  mj_forward(m, d);
-
   const SimSettings& cfg = options.settings;
   PhysicsStepper physics(world, scenario, cfg);
+  physics.startHovering(d);  // vehicles start hovering
+  mj_forward(m, d);
   const double control_dt = physics.controlDt();
   const auto& vehicles = world.vehicles();
 
   const AerialStepRules rules(cfg, scenario.world, options.hold_after_arrival,
                               options.max_saturated_time);
+  const AerialSensing sensing{scenario.sensors, scenario.estimator, cfg.seed};
 
   RunLog log;
   std::vector<AerialPilotStep> steps;
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
-    steps.emplace_back(vehicles[v], pilots[v], rules);
+    steps.emplace_back(vehicles[v], pilots[v], rules, sensing, v);
     log.vehicles.push_back(
-        steps.back().begin(static_cast<std::size_t>(cfg.max_time / control_dt) + 2));
+        steps.back().begin(d, static_cast<std::size_t>(cfg.max_time / control_dt) + 2));
   }
 
   physics.startClock();
@@ -42,7 +41,8 @@ RunLog simulateFlight(const WorldModel& world, const Scenario& scenario,
       }
       bool all_done = true;
       for (std::size_t v = 0; v < vehicles.size(); ++v) {
-        const AerialPilotStep::Outcome o = steps[v].step(m, d, control_dt, log.vehicles[v], true);
+        const AerialPilotStep::Outcome o =
+            steps[v].step(d, physics.plant(v), control_dt, log.vehicles[v], true);
         if (o.saturated) log.end_reason = "saturated";
         all_done = all_done && o.done;
         if (o.diverged) log.end_reason = "diverged";

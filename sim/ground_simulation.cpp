@@ -74,12 +74,11 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
 
   mjData* d = mj_makeData(m);
   mj_resetData(m, d);
-  for (const auto& v : vehicles) {
+  for (const auto& v : vehicles)
     if (v.drive.planar_root) setPlanarPose(d, v, v.drive.planar_origin, v.drive.start_yaw);
-    if (!v.ground) startHovering(m, d, v);
-  }
   const SimSettings& cfg = options.settings;
   PhysicsStepper physics(world, scenario, cfg);
+  physics.startHovering(d);
   const double control_dt = physics.controlDt();
   const int controls_per_log =
       std::max(1, static_cast<int>(std::ceil(1.0 / (options.log_rate * control_dt) - 1e-9)));
@@ -111,12 +110,13 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
 
   const AerialStepRules rules(cfg, scenario.world, options.aerial_hold_after_arrival,
                               options.max_saturated_time);
+  const AerialSensing sensing{scenario.sensors, scenario.estimator, cfg.seed};
   std::vector<AerialPilotStep> flights;
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
     if (!vehicles[v].ground) {
-      AerialPilotStep& f = flights.emplace_back(vehicles[v], quadrotors[pilot[v]], rules);
-      log.vehicles.push_back(
-          f.begin(static_cast<std::size_t>(cfg.max_time / (controls_per_log * control_dt)) + 2));
+      AerialPilotStep& f = flights.emplace_back(vehicles[v], quadrotors[pilot[v]], rules, sensing, v);
+      log.vehicles.push_back(f.begin(
+          d, static_cast<std::size_t>(cfg.max_time / (controls_per_log * control_dt)) + 2));
       continue;
     }
     const GroundPilot& p = robots[pilot[v]];
@@ -149,7 +149,8 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
       for (std::size_t v = 0; v < vehicles.size(); ++v) {
         VehicleLog& vl = log.vehicles[v];
         if (!vehicles[v].ground) {
-          const AerialPilotStep::Outcome o = flights[pilot[v]].step(m, d, control_dt, vl, record);
+          const AerialPilotStep::Outcome o =
+              flights[pilot[v]].step(d, physics.plant(v), control_dt, vl, record);
           all_done = all_done && o.done;
           diverged = diverged || o.diverged;
           saturated = saturated || o.saturated;
@@ -182,6 +183,9 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
         x.vel = {s.velocity.x(), s.velocity.y(), 0.0};
         x.att = attitude(d, vehicles[v]);
         x.omega = {0.0, 0.0, s.yaw_rate};
+        x.est_pos = x.pos;  // a robot's controller reads its exact state
+        x.est_vel = x.vel;
+        x.est_att = x.att;
         // "Rotor" columns of a ground robot: its drive servos' set-points and forces.
         for (int i = 0; i < 4 && vehicles[v].actuators[i] >= 0; ++i) {
           x.rotor_cmd[i] = d->ctrl[vehicles[v].actuators[i]];

@@ -10,19 +10,46 @@ namespace cosim {
 PhysicsStepper::PhysicsStepper(const WorldModel& world, const Scenario& scenario,
                                const SimSettings& settings)
     : m_(world.model()),
+      world_(world),
       steps_per_control_(std::max(
           1, static_cast<int>(std::lround(1.0 / (settings.timestep * settings.control_rate))))),
       control_dt_(steps_per_control_ * m_->opt.timestep),
       max_steps_(static_cast<long>(std::ceil(settings.max_time / m_->opt.timestep))),
       contacts_(m_, world, scenario),
-      disturbances_(scenario.disturbances, world, scenario.world.bounds_min.z(), scenario.sim.seed),
-      disturbed_(scenario.disturbances.any()) {}
+      aerodynamics_(scenario.disturbances, world, scenario.sim.seed),
+      sensing_(!scenario.sensors.ideal()) {
+  const auto& vehicles = world.vehicles();
+  for (std::size_t v = 0; v < vehicles.size(); ++v) {
+    plants_.push_back(vehicles[v].ground
+                          ? nullptr
+                          : std::make_unique<QuadrotorPlant>(vehicles[v], scenario.sensors,
+                                                             scenario.sim.seed, v));
+    rotors_.push_back(plants_.back() ? &plants_.back()->rotors() : nullptr);
+  }
+}
+
+void PhysicsStepper::startHovering(mjData* d) {
+  const auto& vehicles = world_.vehicles();
+  for (std::size_t v = 0; v < vehicles.size(); ++v) {
+    if (!plants_[v]) continue;
+    const QuadrotorParams& p = vehicles[v].params;
+    plants_[v]->rotors().reset(Eigen::Vector4d::Constant(p.hoverRotorSpeed()));
+    const Eigen::Vector4d thrust = plants_[v]->rotors().thrusts();
+    for (int i = 0; i < 4; ++i) d->ctrl[vehicles[v].actuators[i]] = thrust[i];
+  }
+}
 
 const char* PhysicsStepper::step(mjData* d, RunLog& log) {
-  if (disturbed_) disturbances_.apply(m_, d, m_->opt.timestep);
+  const double dt = m_->opt.timestep;
+  for (auto& p : plants_)
+    if (p) p->rotors().advance(dt);
+  aerodynamics_.apply(m_, d, rotors_, dt);
   mj_step(m_, d);
   ++steps_;
   contacts_.update(d, log);
+  if (sensing_)
+    for (auto& p : plants_)
+      if (p) p->sense(d);
   return physicsFault(m_, d);
 }
 

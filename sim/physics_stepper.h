@@ -1,14 +1,18 @@
 #pragma once
 // The physics half that both simulation loops (sim/flight_simulation, sim/ground_simulation)
-// share: how many physics steps a control period and the time limit are, one physics step with
-// what must surround it (disturbances on the quadrotors, mj_step, contact bookkeeping, the check
-// that the state can still be trusted), and the figures a finished run's log records.
+// share: how many physics steps a control period and the time limit are, the quadrotors' rotors
+// and sensors (sim/quadrotor_plant.h), one physics step with what must surround it (the rotors
+// advance, the air acts on the quadrotors, mj_step, contact bookkeeping, the sensors sample, the
+// check that the state can still be trusted), and the figures a finished run's log records.
 #include <mujoco/mujoco.h>
 
 #include <chrono>
+#include <memory>
+#include <vector>
 
+#include "sim/aerodynamics.h"
 #include "sim/contact_monitor.h"
-#include "sim/disturbances.h"
+#include "sim/quadrotor_plant.h"
 #include "sim/run_log.h"
 #include "sim/scenario.h"
 #include "sim/world_model.h"
@@ -24,6 +28,12 @@ class PhysicsStepper {
   long maxSteps() const { return max_steps_; }      // settings.max_time in physics steps
   long stepsTaken() const { return steps_; }
 
+  // Vehicle v's rotors and sensors (v a quadrotor of the world).
+  QuadrotorPlant& plant(std::size_t v) { return *plants_[v]; }
+  // Every quadrotor's rotors spinning at hover speed (its true weight shared by four), and their
+  // thrust in d->ctrl: the vehicles start hovering rather than dropping for the rotors' lag.
+  void startHovering(mjData* d);
+
   // Starts the wall clock of the loop (call just before it).
   void startClock() { wall_start_ = std::chrono::steady_clock::now(); }
   // One physics step. Returns the run's end_reason if the state can no longer be trusted
@@ -35,12 +45,15 @@ class PhysicsStepper {
 
  private:
   const mjModel* m_;
+  const WorldModel& world_;
   int steps_per_control_;
   double control_dt_;
   long max_steps_;
   ContactMonitor contacts_;
-  Disturbances disturbances_;
-  bool disturbed_;
+  Aerodynamics aerodynamics_;
+  std::vector<std::unique_ptr<QuadrotorPlant>> plants_;  // nullptr for ground robots
+  std::vector<const RotorModel*> rotors_;                // the same, as Aerodynamics wants them
+  bool sensing_;                                         // any sensor to sample
   std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
   long steps_ = 0;
 };

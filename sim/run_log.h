@@ -17,8 +17,13 @@ struct LogSample {
   Eigen::Vector3d vel = Eigen::Vector3d::Zero();
   Eigen::Quaterniond att = Eigen::Quaterniond::Identity();
   Eigen::Vector3d omega = Eigen::Vector3d::Zero();         // body rates, rad/s
+  // What the controller saw (the estimate; the truth above with ideal sensing).
+  Eigen::Vector3d est_pos = Eigen::Vector3d::Zero();
+  Eigen::Vector3d est_vel = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond est_att = Eigen::Quaterniond::Identity();
   Eigen::Vector4d rotor_cmd = Eigen::Vector4d::Zero();     // commanded thrusts, N
-  Eigen::Vector4d rotor_thrust = Eigen::Vector4d::Zero();  // actual (after the motor lag), N
+  Eigen::Vector4d rotor_thrust = Eigen::Vector4d::Zero();  // actual (rotor lag, air effects), N
+  Eigen::Vector4d rotor_speed = Eigen::Vector4d::Zero();   // rad/s
   bool saturated = false;
 };
 

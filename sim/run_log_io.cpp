@@ -15,7 +15,8 @@ namespace {
 
 const char* const kTimeseriesHeader =
     "t,ref_x,ref_y,ref_z,ref_vx,ref_vy,ref_vz,x,y,z,vx,vy,vz,qw,qx,qy,qz,roll_deg,pitch_deg,"
-    "yaw_deg,p,q,r,cmd0,cmd1,cmd2,cmd3,thrust0,thrust1,thrust2,thrust3,saturated,vehicle";
+    "yaw_deg,p,q,r,cmd0,cmd1,cmd2,cmd3,thrust0,thrust1,thrust2,thrust3,saturated,est_x,est_y,est_z,"
+    "est_vx,est_vy,est_vz,est_qw,est_qx,est_qy,est_qz,w0,w1,w2,w3,vehicle";
 
 void put(std::string& out, double v) {
   char buf[32];
@@ -103,6 +104,13 @@ std::string timeseriesCsv(const RunLog& log) {
       for (int i = 0; i < 4; ++i) put(out, s.rotor_cmd[i]);
       for (int i = 0; i < 4; ++i) put(out, s.rotor_thrust[i]);
       out += s.saturated ? "1," : "0,";
+      for (int i = 0; i < 3; ++i) put(out, s.est_pos[i]);
+      for (int i = 0; i < 3; ++i) put(out, s.est_vel[i]);
+      put(out, s.est_att.w());
+      put(out, s.est_att.x());
+      put(out, s.est_att.y());
+      put(out, s.est_att.z());
+      for (int i = 0; i < 4; ++i) put(out, s.rotor_speed[i]);
       out += v.name + "\n";
     }
   }
@@ -153,6 +161,16 @@ void readTimeseriesCsv(const std::string& path, RunLog& log) {
     s.att = Eigen::Quaterniond(f("qw"), f("qx"), f("qy"), f("qz")).normalized();
     if (t.column.count("thrust3"))
       s.rotor_thrust = {f("thrust0"), f("thrust1"), f("thrust2"), f("thrust3")};
+    // The estimate (logs from before sensing was simulated have none: the truth was seen).
+    if (t.column.count("est_qz")) {
+      s.est_pos = {f("est_x"), f("est_y"), f("est_z")};
+      s.est_vel = {f("est_vx"), f("est_vy"), f("est_vz")};
+      s.est_att = Eigen::Quaterniond(f("est_qw"), f("est_qx"), f("est_qy"), f("est_qz")).normalized();
+    } else {
+      s.est_pos = s.pos;
+      s.est_vel = s.vel;
+      s.est_att = s.att;
+    }
     vehicleNamed(log, r[t.column.at("vehicle")]).samples.push_back(s);
   }
 }

@@ -10,6 +10,8 @@
 #include "planning/param_set.h"
 #include "planning/world/world.h"
 #include "sim/disturbance_settings.h"
+#include "sim/model_error.h"
+#include "sim/sensors/sensor_settings.h"
 
 namespace cosim {
 
@@ -84,6 +86,7 @@ struct AerialSections {
   std::string trajectory_mode = "waypoints";
   ParamSet trajectory_params;
   std::string controller_name = "cascade";
+  bool controller_drag_compensation = false;
   ParamSet controller_gains;
 };
 
@@ -104,13 +107,18 @@ struct Scenario {
   std::string trajectory_mode = "waypoints";  // waypoints | minimum_snap
   ParamSet trajectory_params;                 // max_speed, switch_radius, ...
 
-  std::string controller_name = "cascade";  // cascade | geometric
+  std::string controller_name = "cascade";  // cascade | geometric | indi | dsl_pid
+  // controller.drag_compensation: rotor drag in the flatness feed-forward (geometric, indi).
+  bool controller_drag_compensation = false;
   ParamSet controller_gains;
 
   AerialSections aerial;  // for the quadrotors when there are ground robots too
 
   SimSettings sim;
   DisturbanceSettings disturbances;
+  SensorSettings sensors;        // what each quadrotor measures (default: ideal)
+  EstimatorSettings estimator;   // what turns the measurements into the controller's state
+  ModelError model_error;        // the flight software's belief against the simulated truth
   RenderSettings render;
 };
 

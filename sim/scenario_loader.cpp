@@ -7,6 +7,7 @@
 #include "planning/input_error.h"
 #include "planning/worlds/grid_map_world.h"
 #include "sim/scenario.h"
+#include "sim/scenario_sensing.h"
 #include "sim/yaml_reader.h"
 
 namespace cosim {
@@ -282,10 +283,19 @@ void readMotionSections(const YamlReader& r, const YAML::Node& parent, const std
 
   if (parent["controller"]) {
     const YAML::Node c = parent["controller"];
-    r.checkKeys(c, prefix + "controller", {"name", "gains"});
+    r.checkKeys(c, prefix + "controller", {"name", "gains", "drag_compensation"});
     if (c["name"]) out.controller_name = r.text(c["name"], prefix + "controller.name");
-    if (out.controller_name != "cascade" && out.controller_name != "geometric")
-      r.fail(c["name"], prefix + "controller.name", "must be 'cascade' or 'geometric'");
+    const std::string& name = out.controller_name;
+    if (name != "cascade" && name != "geometric" && name != "indi" && name != "dsl_pid")
+      r.fail(c["name"], prefix + "controller.name",
+             "must be 'cascade', 'geometric', 'indi' or 'dsl_pid'");
+    if (c["drag_compensation"]) {
+      out.controller_drag_compensation =
+          r.boolean(c["drag_compensation"], prefix + "controller.drag_compensation");
+      if (out.controller_drag_compensation && name != "geometric" && name != "indi")
+        r.fail(c["drag_compensation"], prefix + "controller.drag_compensation",
+               "applies to the 'geometric' and 'indi' controllers, not '" + name + "'");
+    }
     if (c["gains"]) readParams(r, c["gains"], prefix + "controller.gains", {}, overrides, out.controller_gains);
   }
 }
@@ -319,7 +329,7 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
   for (const auto& o : overrides) applyYamlOverride(root, o);
   r.checkKeys(root, "",
               {"world", "vehicles", "planner", "trajectory", "controller", "aerial", "sim",
-               "disturbances", "render"});
+               "disturbances", "sensors", "estimator", "model_error", "render"});
 
   Scenario s;
   s.file = file;
@@ -434,8 +444,10 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
   // disturbances
   if (root["disturbances"]) {
     const YAML::Node n = root["disturbances"];
-    r.checkKeys(n, "disturbances", {"drag", "wind", "gust", "gust_tau", "ground_effect"});
+    r.checkKeys(n, "disturbances",
+                {"rotor_drag", "drag", "wind", "gust", "gust_tau", "ground_effect", "downwash"});
     DisturbanceSettings& d = s.disturbances;
+    if (n["rotor_drag"]) d.rotor_drag = r.boolean(n["rotor_drag"], "disturbances.rotor_drag");
     if (n["drag"]) d.drag_coefficient = r.number(n["drag"], "disturbances.drag", 0.0, 100.0);
     if (n["wind"]) {
       d.wind = r.vec3(n["wind"], "disturbances.wind");
@@ -445,7 +457,15 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
     if (n["gust_tau"]) d.gust_tau = r.number(n["gust_tau"], "disturbances.gust_tau", 0.01, 1000.0);
     if (n["ground_effect"])
       d.ground_effect = r.boolean(n["ground_effect"], "disturbances.ground_effect");
+    if (n["downwash"]) d.downwash = r.boolean(n["downwash"], "disturbances.downwash");
+    // The air moves a vehicle only through drag: wind without a drag term would do nothing.
+    if (d.hasWind() && !d.hasDrag())
+      r.fail(n["wind"] ? n["wind"] : n["gust"], n["wind"] ? "disturbances.wind" : "disturbances.gust",
+             "wind acts through drag and this scenario has none: add rotor_drag: true (the "
+             "airframe's per-rotor drag) or drag: K (N per m/s)");
   }
+
+  readSensingSections(r, root, s);
 
   // render
   if (root["render"]) {

@@ -10,6 +10,7 @@ FlatReference TrajectoryReference::reference(double t, const VehicleState&) {
   ref.velocity = s.velocity;
   ref.acceleration = s.acceleration;
   ref.jerk = s.jerk;
+  ref.snap = s.snap;
   ref.yaw = yaw_;
   return ref;
 }

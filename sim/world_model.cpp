@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <utility>
 #include <sstream>
 
 #include "planning/input_error.h"
@@ -69,7 +70,7 @@ void addObstacleGeom(XMLDocument& doc, XMLElement* worldbody, const Obstacle& o,
 }
 
 void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* actuator,
-                const VehicleSpec& v) {
+                XMLElement* custom, const VehicleSpec& v) {
   XMLDocument src;
   if (src.LoadFile(v.model_file.c_str()) != tinyxml2::XML_SUCCESS)
     throw InputError(v.model_file.string(), "", std::string("cannot parse model XML: ") + src.ErrorStr());
@@ -88,13 +89,31 @@ void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* actuator,
   copy->SetAttribute("euler", ("0 0 " + fmt(v.yaw_deg)).c_str());
   worldbody->InsertEndChild(copy);
 
-  if (XMLElement* acts = root->FirstChildElement("actuator")) {
-    for (XMLElement* a = acts->FirstChildElement(); a; a = a->NextSiblingElement()) {
+  // Actuators, and the rotor constants of <custom> (sim/ reads them as "<name>/thrust_coefficient"
+  // and so on), prefixed like the body.
+  const std::pair<const char*, XMLElement*> sections[] = {{"actuator", actuator}, {"custom", custom}};
+  for (const auto& [tag, into] : sections) {
+    XMLElement* from = root->FirstChildElement(tag);
+    for (XMLElement* a = from ? from->FirstChildElement() : nullptr; a; a = a->NextSiblingElement()) {
       XMLElement* ac = a->DeepClone(&doc)->ToElement();
       prefixNames(ac, prefix);
-      actuator->InsertEndChild(ac);
+      into->InsertEndChild(ac);
     }
   }
+}
+
+// The value of the vehicle's <custom><numeric name="<prefix><name>"> (see models/quad_1500g.xml),
+// which must be one finite number within [lo, hi].
+double rotorConstant(const mjModel* m, const std::string& prefix, const char* name, double lo,
+                     double hi, const std::string& file) {
+  const int id = mj_name2id(m, mjOBJ_NUMERIC, (prefix + name).c_str());
+  if (id < 0)
+    throw InputError(file, "<custom>", std::string("needs <numeric name=\"") + name + "\">");
+  const double v = m->numeric_data[m->numeric_adr[id]];
+  if (m->numeric_size[id] != 1 || !std::isfinite(v) || v < lo || v > hi)
+    throw InputError(file, std::string("<numeric name=\"") + name + "\">",
+                     "must be one number in [" + fmt(lo) + ", " + fmt(hi) + "]");
+  return v;
 }
 
 }  // namespace
@@ -186,13 +205,15 @@ std::string composeWorldXml(const Scenario& s) {
   }
 
   XMLElement* actuator = add(doc, mujoco, "actuator");
+  XMLElement* custom = doc.NewElement("custom");
   for (const VehicleSpec& v : s.vehicles) {
     if (v.ground)
       addUrdfVehicle(doc, worldbody, actuator, v, lo.z());
     else
-      addVehicle(doc, worldbody, actuator, v);
+      addVehicle(doc, worldbody, actuator, custom, v);
   }
   addMovingObstacleBodies(doc, worldbody, s);
+  if (custom->FirstChildElement()) mujoco->InsertEndChild(custom);
 
   tinyxml2::XMLPrinter printer;
   doc.Print(&printer);
@@ -252,15 +273,32 @@ WorldModel WorldModel::fromXml(const std::string& xml, const Scenario& scenario)
       const int site = mj_name2id(m, mjOBJ_SITE, (p + "rotor" + std::to_string(i)).c_str());
       if (a < 0 || site < 0 || m->actuator_trntype[a] != mjTRN_SITE)
         throw InputError(file, "<actuator>", "needs site actuators thrust0..3 on sites rotor0..3");
+      if (m->actuator_dyntype[a] != mjDYN_NONE)
+        throw InputError(file, "<actuator>",
+                         "thrust actuators take the rotor thrust directly (no dyntype): the rotor "
+                         "lag is sim/'s, from the <custom> time constants");
       h.actuators[i] = a;
       q.rotor_xy[i] = Eigen::Vector2d(m->site_pos[3 * site], m->site_pos[3 * site + 1]);
+      q.rotor_z = m->site_pos[3 * site + 2];
       const double k = m->actuator_gear[6 * a + 5];
       q.spin[i] = k >= 0 ? 1.0 : -1.0;
       q.torque_per_thrust = std::abs(k);
-      q.min_thrust = m->actuator_ctrlrange[2 * a];
-      q.max_thrust = m->actuator_ctrlrange[2 * a + 1];
-      q.motor_time_constant = m->actuator_dynprm[mjNDYN * a];
     }
+    q.thrust_coefficient = rotorConstant(m, p, "thrust_coefficient", 1e-12, 1.0, file);
+    q.min_rotor_speed = rotorConstant(m, p, "min_rotor_speed", 0.0, 1e5, file);
+    q.max_rotor_speed = rotorConstant(m, p, "max_rotor_speed", 1.0, 1e5, file);
+    if (q.max_rotor_speed <= q.min_rotor_speed)
+      throw InputError(file, "<numeric name=\"max_rotor_speed\">",
+                       "must exceed min_rotor_speed");
+    q.time_constant_up = rotorConstant(m, p, "time_constant_up", 1e-4, 10.0, file);
+    q.time_constant_down = rotorConstant(m, p, "time_constant_down", 1e-4, 10.0, file);
+    q.rotor_drag_coefficient = rotorConstant(m, p, "rotor_drag_coefficient", 0.0, 1.0, file);
+    q.rolling_moment_coefficient =
+        rotorConstant(m, p, "rolling_moment_coefficient", 0.0, 1.0, file);
+    q.propeller_radius = rotorConstant(m, p, "propeller_radius", 1e-3, 10.0, file);
+    q.zero_thrust_inflow = rotorConstant(m, p, "zero_thrust_inflow", 0.1, 1000.0, file);
+    q.min_thrust = q.thrust_coefficient * q.min_rotor_speed * q.min_rotor_speed;
+    q.max_thrust = q.thrust_coefficient * q.max_rotor_speed * q.max_rotor_speed;
     // Bounding radius about the centre of mass, over every geom of the vehicle.
     q.radius = 0.0;
     for (int g = 0; g < m->ngeom; ++g) {

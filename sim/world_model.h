@@ -52,13 +52,6 @@ class WorldModel {
   int floor_geom_ = -1;
 };
 
-// The internal state of a stateful actuator (a rotor's filtered thrust). MuJoCo 2.2 keeps the
-// activations of stateful actuators last, in actuator order, so actuator a's state is
-// act[a - (nu - na)]; every rotor actuator has a filter state.
-inline mjtNum& actuatorActivation(const mjModel* m, mjData* d, int actuator) {
-  return d->act[actuator - (m->nu - m->na)];
-}
-
 // The composed MJCF text (exposed for tests and for logging next to a run).
 std::string composeWorldXml(const Scenario& scenario);
 

@@ -25,6 +25,7 @@ struct NamedSection {
 const std::vector<NamedSection>& sections() {
   static const std::vector<NamedSection> list = {
       {"physics_loop", bench::benchPhysicsLoop},
+      {"sensing_loop", bench::benchSensingLoop},
       {"render_pipeline", bench::benchRenderPipeline},
       {"trajectory_generation", bench::benchTrajectoryGeneration},
       {"mapf_planners", bench::benchMapfPlanners},

@@ -21,6 +21,7 @@ std::string seed000Sacodm(const Options& options);
 std::string seed000Rna(const Options& options);
 std::string seed003Flight(const Options& options);
 std::string trackingAcceptance(const Options& options);
+std::string controllerStudy(const Options& options);
 }  // namespace cosim::reproduce
 
 namespace cosim::cli {
@@ -29,6 +30,10 @@ namespace {
 // The reproductions, by name.
 const std::vector<reproduce::Entry>& reproductions() {
   static const std::vector<reproduce::Entry> entries = {
+      {"controller-study",
+       "realism: figure-eight at rising speed, rotor drag, model error, mocap + EKF; geometric, "
+       "geometric_drag, indi, indi_drag, dsl_pid (Sun et al. 2022)",
+       reproduce::controllerStudy},
       {"tracking", "issue 6: every bundled 3D world, quad_1500g at 3 m/s and cf2 at 1 m/s, tracking errors",
        reproduce::trackingAcceptance},
       {"seed003-flight", "seed 003 Sec. 4.2: Theta* and RRT*FN paths on map 3 flown four ways in MuJoCo",

@@ -403,6 +403,7 @@ Scenario aerialScenario(const Scenario& s) {
   a.trajectory_mode = s.aerial.trajectory_mode;
   a.trajectory_params = s.aerial.trajectory_params;
   a.controller_name = s.aerial.controller_name;
+  a.controller_drag_compensation = s.aerial.controller_drag_compensation;
   a.controller_gains = s.aerial.controller_gains;
   return a;
 }

@@ -7,6 +7,7 @@
 #include "control/waypoint_reference.h"
 #include "planning/trajectory/minimum_snap_trajectory.h"
 #include "sim/controller_factory.h"
+#include "sim/model_error.h"
 #include "sim/trajectory_reference.h"
 
 namespace cosim {
@@ -66,6 +67,8 @@ QuadrotorPilots prepareQuadrotorPilots(Scenario& scenario, const WorldModel& wor
   for (std::size_t k = 0; k < vehicles.size(); ++k) {
     const std::size_t v = vehicles[k];
     const VehicleSpec& spec = scenario.vehicles[v];
+    const QuadrotorParams& airframe =
+        q.airframes.emplace_back(believedAirframe(world.vehicles()[v].params, scenario.model_error));
     ParamSet traj = scenario.trajectory_params;
     if (scenario.trajectory_mode == "waypoints") {
       const double radius = traj.getDouble("switch_radius", 0.2, 0.01, 100.0);
@@ -73,8 +76,7 @@ QuadrotorPilots prepareQuadrotorPilots(Scenario& scenario, const WorldModel& wor
       q.references.push_back(std::make_unique<WaypointReference>(
           q.plans[k].path.waypoints, spec.yaw_deg * M_PI / 180.0, radius));
     } else {
-      MinimumSnapResult fit =
-          fitMinimumSnap(scenario, spec, world.vehicles()[v].params, q.plans[k], traj);
+      MinimumSnapResult fit = fitMinimumSnap(scenario, spec, airframe, q.plans[k], traj);
       if (!fit.success) {
         q.failure = "no feasible trajectory: " + fit.message;
         q.pilots.clear();
@@ -85,9 +87,10 @@ QuadrotorPilots prepareQuadrotorPilots(Scenario& scenario, const WorldModel& wor
                                                                    spec.yaw_deg * M_PI / 180.0));
     }
     ParamSet gains = scenario.controller_gains;
-    q.controllers.push_back(
-        makeFlightController(scenario.controller_name, gains, world.vehicles()[v].params));
+    q.controllers.push_back(makeFlightController(scenario.controller_name, gains, airframe,
+                                                 scenario.controller_drag_compensation));
     VehiclePilot pilot;
+    pilot.believed_airframe = &airframe;
     pilot.controller = q.controllers.back().get();
     pilot.reference = q.references.back().get();
     pilot.goal = spec.goal();

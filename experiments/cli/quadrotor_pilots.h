@@ -5,6 +5,7 @@
 // controller (sim/controller_factory.h). Used by `cosim run` for quadrotors and for the
 // quadrotors flying over ground robots.
 #include <cstddef>
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +23,9 @@ struct QuadrotorPilots {
   std::vector<VehiclePlan> plans;  // one per quadrotor asked for
   std::vector<std::unique_ptr<ReferenceSource>> references;
   std::vector<std::unique_ptr<FlightController>> controllers;
+  // What each quadrotor's flight software believes of its airframe (sim/model_error.h); a deque,
+  // so the pilots' pointers into it stay valid.
+  std::deque<QuadrotorParams> airframes;
   std::vector<VehiclePilot> pilots;  // filled only when every quadrotor planned and fitted
   bool ready = false;
   std::string failure;  // "no path found: ..." or "no feasible trajectory: ..."

@@ -32,7 +32,8 @@ JsonObject flightMetricsJson(const FlightMetrics& m) {
       .add("peak_thrust_fraction", m.peak_thrust_fraction)
       .add("saturated_fraction", m.saturated_fraction)
       .add("energy_proxy", m.energy_proxy)
-      .add("max_speed_mps", m.max_speed_mps);
+      .add("max_speed_mps", m.max_speed_mps)
+      .add("estimation_rmse_m", m.estimation_rmse_m);
   return j;
 }
 
@@ -140,6 +141,9 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
       .add("saturated_fraction", m0.saturated_fraction)
       .add("energy_proxy", m0.energy_proxy)
       .add("max_speed_mps", m0.max_speed_mps)
+      .add("estimation_rmse_m", m0.estimation_rmse_m)
+      .add("sensors", scenario.sensors.preset)
+      .add("estimator", scenario.estimator.name)
       .add("controller", scenario.controller_name)
       .add("trajectory_mode", scenario.trajectory_mode)
       .add("vehicle_radius_m", world.vehicles().front().params.radius)

@@ -178,7 +178,7 @@ TEST(GroundTeamWithUavs, WindActsOnTheQuadrotorsOnly) {
   const std::string robots_only =
       "world:\n  bounds: {min: [0, 0, 0], max: [4.2, 4.2, 2.5]}\nvehicles:\n"
       "  - {name: a0, model: omni_base, start: [0.35, 0.35, 0], goal: [3.85, 3.85, 0]}\n"
-      "disturbances: {wind: [3, 0, 0]}\n";
+      "disturbances: {wind: [3, 0, 0], drag: 0.1}\n";
   std::string metrics;
   try {
     runText(robots_only, "ground-windy", metrics);

@@ -21,10 +21,19 @@ TEST(CascadeFlight, ModelParametersAreReadFromTheMjcf) {
   const QuadrotorParams& p = world.vehicles()[0].params;
   EXPECT_NEAR(p.mass, 1.5, 1e-9);
   EXPECT_NEAR(p.inertia.z(), 0.055225, 1e-9);
-  EXPECT_NEAR(p.max_thrust, 6.0, 1e-9);
-  EXPECT_NEAR(p.torque_per_thrust, 0.016, 1e-12);
-  EXPECT_NEAR(p.rotor_xy[0].norm(), 0.225, 1e-3);
+  // PX4's Iris (models/quad_1500g.xml): 5.84e-6 N s^2 x (1100 rad/s)^2 per rotor.
+  EXPECT_NEAR(p.max_thrust, 7.0664, 1e-9);
+  EXPECT_NEAR(p.torque_per_thrust, 0.06, 1e-12);
+  EXPECT_NEAR(p.rotor_xy[0].x(), 0.13, 1e-12);  // front-left rotor
+  EXPECT_NEAR(p.rotor_xy[0].y(), 0.22, 1e-12);
+  EXPECT_NEAR(p.rotor_z, 0.023, 1e-12);
   EXPECT_DOUBLE_EQ(p.spin[0], -p.spin[1]);
+  // The rotor constants of the file's <custom> section.
+  EXPECT_DOUBLE_EQ(p.thrust_coefficient, 5.84e-6);
+  EXPECT_DOUBLE_EQ(p.time_constant_up, 0.0125);
+  EXPECT_DOUBLE_EQ(p.time_constant_down, 0.025);
+  EXPECT_DOUBLE_EQ(p.rotor_drag_coefficient, 1.75e-4);
+  EXPECT_DOUBLE_EQ(p.propeller_radius, 0.128);
 }
 
 TEST(CascadeFlight, HoverHoldsPositionWithinOneCentimetreAfterSettling) {

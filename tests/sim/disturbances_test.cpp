@@ -61,8 +61,9 @@ TEST(Disturbances, GustsAreRandomButRepeatableUnderTheSameSeed) {
 }
 
 TEST(Disturbances, GroundEffectLiftsAVehicleHoveringLow) {
-  // At 0.25 m over the floor with 0.12 m rotors, thrust grows by 1/(1 - (0.12/1)^2) - 1 = 1.5 %;
-  // without integral action the hover settles higher by 1.5 % of m g / (m k_z) = 0.147/8 m.
+  // At 0.25 m over the floor (rotor hubs 0.273 m) with 0.128 m rotors, thrust grows by
+  // 1/(1 - (0.128/1.092)^2) - 1 = 1.4 %;
+  // without integral action the hover settles higher by 1.4 % of m g / (m k_z) = 0.137/8 m.
   DisturbanceSettings d;
   d.ground_effect = true;
   Scenario s = hoverScenario(d, 5.0);

@@ -1,0 +1,68 @@
+#pragma once
+// The parts of a quadrotor between the rigid body MuJoCo integrates and the flight software:
+// its four rotors (sim/rotor_model.h) and the sensors it carries (sim/sensors/). The physics owns
+// them (sim/physics_stepper.h): the rotors advance and the sensors sample the true state at every
+// physics step, each sensor at its own rate, and a measurement waits its latency before the
+// estimator may have it (takeDelivered).
+#include <mujoco/mujoco.h>
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <vector>
+
+#include "sim/rotor_model.h"
+#include "sim/sensors/imu_sensor.h"
+#include "sim/sensors/pose_sensor.h"
+#include "sim/sensors/sensor_settings.h"
+#include "sim/world_model.h"
+
+namespace cosim {
+
+// Measurements handed over at one control step, each list in order of validity time.
+struct SensorReadings {
+  std::vector<ImuMeasurement> imu;
+  std::vector<PositionMeasurement> position;
+  std::vector<AttitudeMeasurement> attitude;
+};
+
+// A seed for one sensor of one vehicle, derived from the scenario's seed (splitmix64), so that
+// every stream is independent and a run is repeatable.
+std::uint64_t sensorSeed(std::uint64_t scenario_seed, std::size_t vehicle, int sensor);
+
+class QuadrotorPlant {
+ public:
+  QuadrotorPlant(const VehicleHandles& vehicle, const SensorSettings& sensors,
+                 std::uint64_t scenario_seed, std::size_t vehicle_index);
+
+  RotorModel& rotors() { return rotors_; }
+  const RotorModel& rotors() const { return rotors_; }
+
+  // After mj_step: every sensor whose next sample is due measures the state at d->time.
+  void sense(const mjData* d);
+  // The measurements whose latency has passed by `now`, removed from the queue.
+  SensorReadings takeDelivered(double now);
+  // True specific force (acceleration minus gravity) in the body frame, from MuJoCo's last
+  // acceleration (what a perfect accelerometer would read).
+  Eigen::Vector3d trueSpecificForce(const mjData* d) const;
+
+ private:
+  struct Due {
+    double next = 0.0;    // s, time of the next sample
+    double period = 0.0;  // s
+    bool at(double t) const { return t >= next - 1e-9; }
+  };
+  const VehicleHandles* vehicle_;
+  double gravity_;
+  RotorModel rotors_;
+  std::unique_ptr<ImuSensor> imu_;
+  std::unique_ptr<PositionSensor> position_;
+  std::unique_ptr<AttitudeSensor> attitude_;
+  Due imu_due_, position_due_, attitude_due_;
+  double position_latency_ = 0.0, attitude_latency_ = 0.0;
+  SensorReadings ready_;  // delivered on the next takeDelivered (the IMU has no latency)
+  std::deque<PositionMeasurement> position_queue_;
+  std::deque<AttitudeMeasurement> attitude_queue_;
+};
+
+}  // namespace cosim

@@ -1,0 +1,53 @@
+#pragma once
+// What a scenario's `sensors:` and `estimator:` sections ask for (CONTRACT.md, "Sensing,
+// estimation, vehicle realism"). Presets and the source of each default are in
+// sim/sensors/sensor_presets.cpp; the sensor models in sim/sensors/imu_sensor.h and
+// sim/sensors/pose_sensor.h.
+#include <string>
+
+#include "estimation/measurements.h"
+
+namespace cosim {
+
+struct ImuSettings {
+  bool present = false;
+  double rate = 500.0;  // Hz
+  ImuNoise noise;
+  // Standard deviation of the constant bias each axis has when the IMU powers on (RotorS'
+  // "turn-on bias"), drawn once per run from the seeded stream.
+  double gyro_bias_init = 0.0;   // rad/s
+  double accel_bias_init = 0.0;  // m/s^2
+};
+
+// A position sensor: motion capture (mm, 100+ Hz, a few ms late) or GPS (dm-m, 5-10 Hz, about
+// 0.1 s late).
+struct PositionSensorSettings {
+  bool present = false;
+  double rate = 100.0;    // Hz
+  double noise = 0.001;   // m, standard deviation per axis
+  double latency = 0.01;  // s from the instant measured to the estimator
+};
+
+// An attitude sensor (motion capture).
+struct AttitudeSensorSettings {
+  bool present = false;
+  double rate = 100.0;     // Hz
+  double noise_deg = 0.5;  // deg, standard deviation per axis
+  double latency = 0.01;   // s
+};
+
+struct SensorSettings {
+  std::string preset = "ideal";  // ideal | mocap | onboard | custom (explicit blocks)
+  ImuSettings imu;
+  PositionSensorSettings position;
+  AttitudeSensorSettings attitude;
+  // Ideal: the controller reads the exact state with no delay (no sensor is simulated).
+  bool ideal() const { return !imu.present && !position.present && !attitude.present; }
+};
+
+// estimator: {name: ekf | ground_truth}. Absent: ground_truth with ideal sensing, ekf otherwise.
+struct EstimatorSettings {
+  std::string name = "ground_truth";
+};
+
+}  // namespace cosim
