@@ -145,6 +145,7 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
       .add("sensors", scenario.sensors.preset)
       .add("estimator", scenario.estimator.name)
       .add("controller", scenario.controller_name)
+      .add("drag_compensation", scenario.controller_drag_compensation)
       .add("trajectory_mode", scenario.trajectory_mode)
       .add("vehicle_radius_m", world.vehicles().front().params.radius)
       .add("inflation_m", plans.front().inflation)
