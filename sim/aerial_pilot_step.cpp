@@ -58,7 +58,7 @@ AerialPilotStep::Outcome AerialPilotStep::step(const mjData* d, QuadrotorPlant& 
     x.est_att = seen.attitude;
     x.rotor_cmd = out.rotor_thrusts;
     x.rotor_speed = plant.rotors().speeds();
-    for (int i = 0; i < 4; ++i) x.rotor_thrust[i] = d->ctrl[v.actuators[i]];
+    x.rotor_thrust = plant.appliedThrusts();
     x.saturated = out.saturated;
   }
   Outcome o;

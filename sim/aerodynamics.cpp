@@ -25,6 +25,27 @@ Eigen::Vector3d rotorHub(const mjData* d, const VehicleHandles& v, const Eigen::
 
 }  // namespace
 
+void rotorWrench(const QuadrotorParams& p, const Eigen::Vector4d& thrusts,
+                 Eigen::Vector3d& force_body, Eigen::Vector3d& torque_body) {
+  force_body = Eigen::Vector3d(0.0, 0.0, thrusts.sum());
+  torque_body.setZero();
+  for (int i = 0; i < 4; ++i) {
+    // r_i x (0, 0, T_i) = (y_i T_i, -x_i T_i, 0), plus the reaction s_i k T_i about z.
+    torque_body.x() += p.rotor_xy[i].y() * thrusts[i];
+    torque_body.y() -= p.rotor_xy[i].x() * thrusts[i];
+    torque_body.z() += p.spin[i] * p.torque_per_thrust * thrusts[i];
+  }
+}
+
+void setFreeJointWrench(mjData* d, const VehicleHandles& h, const Eigen::Vector3d& force_world,
+                        const Eigen::Vector3d& torque_body) {
+  mjtNum* q = d->qfrc_applied + h.qvel_adr;
+  for (int k = 0; k < 3; ++k) {
+    q[k] = force_world[k];
+    q[3 + k] = torque_body[k];
+  }
+}
+
 Aerodynamics::Aerodynamics(const DisturbanceSettings& settings, const WorldModel& world,
                            std::uint64_t seed)
     : s_(settings),
@@ -32,7 +53,7 @@ Aerodynamics::Aerodynamics(const DisturbanceSettings& settings, const WorldModel
       wind_(settings, seed),
       factors_(4 * world.vehicles().size(), 1.0) {}
 
-void Aerodynamics::apply(const mjModel* m, mjData* d, const std::vector<const RotorModel*>& rotors,
+void Aerodynamics::apply(const mjModel* m, mjData* d, const std::vector<QuadrotorPlant*>& plants,
                          double dt) {
   const auto& vehicles = world_.vehicles();
   if (s_.hasWind()) wind_.advance(dt);
@@ -43,9 +64,9 @@ void Aerodynamics::apply(const mjModel* m, mjData* d, const std::vector<const Ro
     std::vector<WakeSource> hubs;
     std::vector<std::size_t> owner;  // index into factors_
     for (std::size_t v = 0; v < vehicles.size(); ++v) {
-      if (!rotors[v]) continue;
+      if (!plants[v]) continue;
       const Eigen::Matrix3d R = bodyRotation(d, vehicles[v]);
-      const Eigen::Vector4d thrust = rotors[v]->thrusts();
+      const Eigen::Vector4d thrust = plants[v]->rotors().thrusts();
       for (int i = 0; i < 4; ++i) {
         hubs.push_back({rotorHub(d, vehicles[v], R, i), static_cast<int>(v),
                         vehicles[v].params.propeller_radius, thrust[i]});
@@ -60,11 +81,12 @@ void Aerodynamics::apply(const mjModel* m, mjData* d, const std::vector<const Ro
   }
 
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
-    if (!rotors[v]) continue;
+    if (!plants[v]) continue;
     const VehicleHandles& h = vehicles[v];
     const QuadrotorParams& p = h.params;
+    const RotorModel& rotors = plants[v]->rotors();
     const Eigen::Matrix3d R = bodyRotation(d, h);
-    const Eigen::Vector4d thrust = rotors[v]->thrusts();
+    Eigen::Vector4d thrust = rotors.thrusts();
     for (int i = 0; i < 4; ++i) {
       double& f = factors_[4 * v + i];
       if (s_.ground_effect) {
@@ -73,23 +95,23 @@ void Aerodynamics::apply(const mjModel* m, mjData* d, const std::vector<const Ro
                                               5.0 * p.propeller_radius);
         f *= groundEffectFactor(p.propeller_radius, z);
       }
-      d->ctrl[h.actuators[i]] = f * thrust[i];
+      thrust[i] *= f;
     }
-    if (!s_.hasDrag()) continue;
-    const mjtNum* u = d->qvel + h.qvel_adr;
-    AirframeMotion motion;
-    motion.R = R;
-    motion.velocity = {u[0], u[1], u[2]};
-    motion.angular_velocity = {u[3], u[4], u[5]};
-    motion.wind = wind_.velocity();
-    Wrench w;
-    if (s_.rotor_drag) w = rotorDragWrench(p, motion, rotors[v]->speeds());
-    w.force += -s_.drag_coefficient * (motion.velocity - motion.wind);
-    mjtNum* x = d->xfrc_applied + 6 * h.body;
-    for (int k = 0; k < 3; ++k) {
-      x[k] = w.force[k];
-      x[3 + k] = w.torque[k];
+    plants[v]->setAppliedThrusts(thrust);
+    Eigen::Vector3d force_body, torque_body;
+    rotorWrench(p, thrust, force_body, torque_body);
+    Wrench air;  // world frame
+    if (s_.hasDrag()) {
+      const mjtNum* u = d->qvel + h.qvel_adr;
+      AirframeMotion motion;
+      motion.R = R;
+      motion.velocity = {u[0], u[1], u[2]};
+      motion.angular_velocity = {u[3], u[4], u[5]};
+      motion.wind = wind_.velocity();
+      if (s_.rotor_drag) air = rotorDragWrench(p, motion, rotors.speeds());
+      air.force += -s_.drag_coefficient * (motion.velocity - motion.wind);
     }
+    setFreeJointWrench(d, h, R * force_body + air.force, torque_body + R.transpose() * air.torque);
   }
 }
 

@@ -37,17 +37,18 @@ Eigen::Quaterniond attitude(const mjData* d, const VehicleHandles& v) {
 }
 
 // The drive servos' set-points for a body-frame command.
-void actuate(mjData* d, const VehicleHandles& v, const PlanarState& s, const GroundCommand& c) {
+void actuate(PhysicsStepper& physics, std::size_t index, const VehicleHandles& v,
+             const PlanarState& s, const GroundCommand& c) {
   if (v.drive.kind == GroundDrive::Kind::Holonomic) {
     const double cy = std::cos(s.yaw), sy = std::sin(s.yaw);
-    d->ctrl[v.actuators[0]] = cy * c.forward - sy * c.lateral;
-    d->ctrl[v.actuators[1]] = sy * c.forward + cy * c.lateral;
-    d->ctrl[v.actuators[2]] = c.yaw_rate;
+    physics.commandDrive(index, 0, cy * c.forward - sy * c.lateral);
+    physics.commandDrive(index, 1, sy * c.forward + cy * c.lateral);
+    physics.commandDrive(index, 2, c.yaw_rate);
   } else {
     // Wheel speeds of a differential drive: (v -+ w s / 2) / r.
     const double half = 0.5 * v.drive.wheel_separation * c.yaw_rate;
-    d->ctrl[v.actuators[0]] = (c.forward - half) / v.drive.wheel_radius;
-    d->ctrl[v.actuators[1]] = (c.forward + half) / v.drive.wheel_radius;
+    physics.commandDrive(index, 0, (c.forward - half) / v.drive.wheel_radius);
+    physics.commandDrive(index, 1, (c.forward + half) / v.drive.wheel_radius);
   }
 }
 
@@ -161,7 +162,7 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
         PlanarReference ref = gp.path->sample(d->time);
         ref.yaw = gp.yaw;
         const GroundCommand cmd = gp.controller->update(s, ref, control_dt);
-        actuate(d, vehicles[v], s, cmd);
+        actuate(physics, v, vehicles[v], s, cmd);
 
         // Height: the free base's z; a planar base rides at its fixed height (logged as 0).
         const double z = vehicles[v].drive.planar_root ? 0.0 : d->qpos[vehicles[v].qpos_adr + 2];
@@ -187,9 +188,9 @@ RunLog simulateGround(const WorldModel& world, const Scenario& scenario,
         x.est_vel = x.vel;
         x.est_att = x.att;
         // "Rotor" columns of a ground robot: its drive servos' set-points and forces.
-        for (int i = 0; i < 4 && vehicles[v].actuators[i] >= 0; ++i) {
-          x.rotor_cmd[i] = d->ctrl[vehicles[v].actuators[i]];
-          x.rotor_thrust[i] = d->actuator_force[vehicles[v].actuators[i]];
+        for (int i = 0; i < vehicles[v].drive.servo_count; ++i) {
+          x.rotor_cmd[i] = physics.driveCommand(v, i);
+          x.rotor_thrust[i] = physics.driveForce(v, i);
         }
         x.saturated = cmd.saturated;
       }

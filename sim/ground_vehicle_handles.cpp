@@ -54,15 +54,6 @@ void readGroundVehicleHandles(const mjModel* m, const VehicleSpec& v, VehicleHan
     h.drive.planar_origin = {m->body_pos[3 * h.body], m->body_pos[3 * h.body + 1]};
     h.drive.start_yaw = v.yaw_deg * M_PI / 180.0;
   }
-  const bool holonomic = h.drive.kind == GroundDrive::Kind::Holonomic;
-  const char* const names[3] = {holonomic ? "drive_x" : "wheel_left",
-                                holonomic ? "drive_y" : "wheel_right", "drive_yaw"};
-  for (int i = 0; i < (holonomic ? 3 : 2); ++i) {
-    h.actuators[i] = mj_name2id(m, mjOBJ_ACTUATOR, (p + names[i]).c_str());
-    if (h.actuators[i] < 0)
-      throw InputError(file, "<robot>",
-                       std::string("the composed model lacks actuator ") + names[i]);
-  }
   QuadrotorParams& q = h.params;
   q.mass = m->body_subtreemass[h.body];
   q.gravity = -m->opt.gravity[2];

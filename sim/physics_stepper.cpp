@@ -24,8 +24,15 @@ PhysicsStepper::PhysicsStepper(const WorldModel& world, const Scenario& scenario
                           ? nullptr
                           : std::make_unique<QuadrotorPlant>(vehicles[v], scenario.sensors,
                                                              scenario.sim.seed, v));
-    rotors_.push_back(plants_.back() ? &plants_.back()->rotors() : nullptr);
+    plant_pointers_.push_back(plants_.back().get());
   }
+  drive_command_.assign(vehicles.size(), {0.0, 0.0, 0.0});
+  drive_force_.assign(vehicles.size(), {0.0, 0.0, 0.0});
+}
+
+void PhysicsStepper::commandDrive(std::size_t v, int servo, double speed) {
+  const GroundDrive::Servo& s = world_.vehicles()[v].drive.servos[servo];
+  drive_command_[v][servo] = std::clamp(speed, -s.max_speed, s.max_speed);
 }
 
 void PhysicsStepper::startHovering(mjData* d) {
@@ -34,16 +41,28 @@ void PhysicsStepper::startHovering(mjData* d) {
     if (!plants_[v]) continue;
     const QuadrotorParams& p = vehicles[v].params;
     plants_[v]->rotors().reset(Eigen::Vector4d::Constant(p.hoverRotorSpeed()));
-    const Eigen::Vector4d thrust = plants_[v]->rotors().thrusts();
-    for (int i = 0; i < 4; ++i) d->ctrl[vehicles[v].actuators[i]] = thrust[i];
   }
+  // The wrench of hovering rotors, so that the first mj_forward sees it too.
+  aerodynamics_.apply(m_, d, plant_pointers_, 0.0);
 }
 
 const char* PhysicsStepper::step(mjData* d, RunLog& log) {
   const double dt = m_->opt.timestep;
   for (auto& p : plants_)
     if (p) p->rotors().advance(dt);
-  aerodynamics_.apply(m_, d, rotors_, dt);
+  aerodynamics_.apply(m_, d, plant_pointers_, dt);
+  // The robots' velocity servos, with the joint speeds at the start of the step (as a MuJoCo
+  // velocity actuator computes its force).
+  const auto& vehicles = world_.vehicles();
+  for (std::size_t v = 0; v < vehicles.size(); ++v) {
+    const GroundDrive& drive = vehicles[v].drive;
+    for (int i = 0; i < drive.servo_count; ++i) {
+      const GroundDrive::Servo& s = drive.servos[i];
+      const double f =
+          std::clamp(s.kv * (drive_command_[v][i] - d->qvel[s.dof]), -s.max_force, s.max_force);
+      d->qfrc_applied[s.dof] = drive_force_[v][i] = f;
+    }
+  }
   mj_step(m_, d);
   ++steps_;
   contacts_.update(d, log);

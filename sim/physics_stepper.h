@@ -6,6 +6,7 @@
 // check that the state can still be trusted), and the figures a finished run's log records.
 #include <mujoco/mujoco.h>
 
+#include <array>
 #include <chrono>
 #include <memory>
 #include <vector>
@@ -30,8 +31,14 @@ class PhysicsStepper {
 
   // Vehicle v's rotors and sensors (v a quadrotor of the world).
   QuadrotorPlant& plant(std::size_t v) { return *plants_[v]; }
-  // Every quadrotor's rotors spinning at hover speed (its true weight shared by four), and their
-  // thrust in d->ctrl: the vehicles start hovering rather than dropping for the rotors' lag.
+  // Ground robot v's drive servos (sim/urdf_vehicle.h, GroundDrive::servos): the speed each is
+  // commanded (held until the next command; clamped to the servo's range) and the force it
+  // applied in the last physics step.
+  void commandDrive(std::size_t v, int servo, double speed);
+  double driveCommand(std::size_t v, int servo) const { return drive_command_[v][servo]; }
+  double driveForce(std::size_t v, int servo) const { return drive_force_[v][servo]; }
+  // Every quadrotor's rotors spinning at hover speed (its true weight shared by four): the
+  // vehicles start hovering rather than dropping for the rotors' lag.
   void startHovering(mjData* d);
 
   // Starts the wall clock of the loop (call just before it).
@@ -52,8 +59,9 @@ class PhysicsStepper {
   ContactMonitor contacts_;
   Aerodynamics aerodynamics_;
   std::vector<std::unique_ptr<QuadrotorPlant>> plants_;  // nullptr for ground robots
-  std::vector<const RotorModel*> rotors_;                // the same, as Aerodynamics wants them
+  std::vector<QuadrotorPlant*> plant_pointers_;          // the same, as Aerodynamics wants them
   bool sensing_;                                         // any sensor to sample
+  std::vector<std::array<double, 3>> drive_command_, drive_force_;  // per vehicle, per servo
   std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
   long steps_ = 0;
 };

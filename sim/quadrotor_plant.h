@@ -37,6 +37,10 @@ class QuadrotorPlant {
 
   RotorModel& rotors() { return rotors_; }
   const RotorModel& rotors() const { return rotors_; }
+  // The thrust each rotor applied in the last physics step (its k_f w^2 times the ground-effect
+  // and downwash factors; sim/aerodynamics.h sets it), N.
+  const Eigen::Vector4d& appliedThrusts() const { return applied_; }
+  void setAppliedThrusts(const Eigen::Vector4d& thrusts) { applied_ = thrusts; }
 
   // After mj_step: every sensor whose next sample is due measures the state at d->time.
   void sense(const mjData* d);
@@ -55,6 +59,7 @@ class QuadrotorPlant {
   const VehicleHandles* vehicle_;
   double gravity_;
   RotorModel rotors_;
+  Eigen::Vector4d applied_ = Eigen::Vector4d::Zero();
   std::unique_ptr<ImuSensor> imu_;
   std::unique_ptr<PositionSensor> position_;
   std::unique_ptr<AttitudeSensor> attitude_;

@@ -114,7 +114,7 @@ class UrdfConverter {
         prefix_(v.name + "/"),
         dir_(v.model_file.parent_path()) {}
 
-  void convert(XMLElement* worldbody, XMLElement* actuator, double floor_z) {
+  bool convert(XMLElement* worldbody, double floor_z) {
     model_ = parseUrdf(file_);
     urdf::LinkConstSharedPtr root = model_->getRoot();
     if (!root) throw InputError(file_, "<robot>", "no root link");
@@ -154,9 +154,10 @@ class UrdfConverter {
     for (const auto& j : base->child_joints) addChild(body, *j, Eigen::Isometry3d::Identity());
 
     if (planar)
-      addHolonomicDrive(actuator, *planar, *base);
+      addHolonomicDrive(*planar, *base);
     else
-      addDifferentialDrive(actuator, *base);
+      addDifferentialDrive(*base);
+    return !planar;
   }
 
  private:
@@ -346,14 +347,18 @@ class UrdfConverter {
     for (const auto& c : link->child_joints) addChild(body, *c, in_base);
   }
 
-  void addVelocityServo(XMLElement* actuator, const std::string& name, const std::string& joint,
-                        double inertia, double force, double speed) {
-    XMLElement* a = add(doc_, actuator, "velocity");
-    a->SetAttribute("name", (prefix_ + name).c_str());
-    a->SetAttribute("joint", (prefix_ + joint).c_str());
-    a->SetAttribute("kv", fmt(inertia / kDriveTimeConstant).c_str());
-    a->SetAttribute("forcerange", (fmt(-force) + " " + fmt(force)).c_str());
-    a->SetAttribute("ctrlrange", (fmt(-speed) + " " + fmt(speed)).c_str());
+  // A velocity servo on `joint`: force kv (command - joint speed), kv = inertia / time constant,
+  // the command held within +-speed and the force within +-force. sim/ applies it (no MuJoCo
+  // actuator: each would cost an nv-long row of the actuator moment matrix every step).
+  void addVelocityServo(const std::string& joint, double inertia, double force, double speed) {
+    // Appended piece by piece: GCC 12's -Wrestrict misfires on operator+ chains.
+    if (!servo_joints_.empty()) servo_joints_ += ' ';
+    servo_joints_ += prefix_;
+    servo_joints_ += joint;
+    for (double x : {inertia / kDriveTimeConstant, force, speed}) {
+      if (!servo_data_.empty()) servo_data_ += ' ';
+      servo_data_ += fmt(x);
+    }
   }
 
   void requireLimit(const urdf::Joint& j) const {
@@ -364,7 +369,14 @@ class UrdfConverter {
   }
 
   void recordDrive(const GroundDrive& d) {
-    XMLElement* n = add(doc_, section(doc_, "custom"), "numeric");
+    XMLElement* custom = section(doc_, "custom");
+    XMLElement* servos = add(doc_, custom, "numeric");
+    servos->SetAttribute("name", (prefix_ + "drive_servos").c_str());
+    servos->SetAttribute("data", servo_data_.c_str());
+    XMLElement* joints = add(doc_, custom, "text");
+    joints->SetAttribute("name", (prefix_ + "drive_joints").c_str());
+    joints->SetAttribute("data", servo_joints_.c_str());
+    XMLElement* n = add(doc_, custom, "numeric");
     n->SetAttribute("name", (prefix_ + "ground_drive").c_str());
     n->SetAttribute(
         "data",
@@ -373,19 +385,18 @@ class UrdfConverter {
             .c_str());
   }
 
-  void addHolonomicDrive(XMLElement* actuator, const urdf::Joint& planar, const urdf::Link& base) {
+  void addHolonomicDrive(const urdf::Joint& planar, const urdf::Link& base) {
     requireLimit(planar);
     if (!base.inertial)
       throw InputError(file_, "link '" + base.name + "'", "the base needs an <inertial>");
     if (!(rim_radius_ > 0))
       throw InputError(file_, "link '" + base.name + "'", "the base needs a <collision> shape");
     const double force = planar.limits->effort, speed = planar.limits->velocity;
-    addVelocityServo(actuator, "drive_x", "root_x", mass_.mass, force, speed);
-    addVelocityServo(actuator, "drive_y", "root_y", mass_.mass, force, speed);
+    addVelocityServo("root_x", mass_.mass, force, speed);
+    addVelocityServo("root_y", mass_.mass, force, speed);
     // The drive force acting at the rim turns the base; the rim moving at full speed bounds the
     // yaw rate.
-    addVelocityServo(actuator, "drive_yaw", "root_yaw", mass_.izz, force * rim_radius_,
-                     speed / rim_radius_);
+    addVelocityServo("root_yaw", mass_.izz, force * rim_radius_, speed / rim_radius_);
     GroundDrive d;
     d.kind = GroundDrive::Kind::Holonomic;
     d.planar_root = true;
@@ -394,7 +405,7 @@ class UrdfConverter {
     recordDrive(d);
   }
 
-  void addDifferentialDrive(XMLElement* actuator, const urdf::Link& base) {
+  void addDifferentialDrive(const urdf::Link& base) {
     const urdf::Joint* left = nullptr;
     const urdf::Joint* right = nullptr;
     for (const urdf::Joint* j : continuous_) {
@@ -426,10 +437,8 @@ class UrdfConverter {
     // Each wheel drives half the robot's mass plus its own spin inertia.
     const double inertia = 0.5 * mass_.mass * radius * radius + wi.iyy;
     const double speed = std::min(left->limits->velocity, right->limits->velocity);
-    addVelocityServo(actuator, "wheel_left", left->name, inertia, left->limits->effort,
-                     left->limits->velocity);
-    addVelocityServo(actuator, "wheel_right", right->name, inertia, right->limits->effort,
-                     right->limits->velocity);
+    addVelocityServo(left->name, inertia, left->limits->effort, left->limits->velocity);
+    addVelocityServo(right->name, inertia, right->limits->effort, right->limits->velocity);
     GroundDrive d;
     d.kind = GroundDrive::Kind::Differential;
     d.max_speed = speed * radius;
@@ -448,13 +457,14 @@ class UrdfConverter {
   double rim_radius_ = 0.0;
   int mesh_count_ = 0;
   std::vector<const urdf::Joint*> continuous_;
+  std::string servo_joints_, servo_data_;  // the drive's servos, in drive order
 };
 
 }  // namespace
 
-void addUrdfVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* actuator,
-                    const VehicleSpec& vehicle, double floor_z) {
-  UrdfConverter(doc, vehicle).convert(worldbody, actuator, floor_z);
+bool addUrdfVehicle(XMLDocument& doc, XMLElement* worldbody, const VehicleSpec& vehicle,
+                    double floor_z) {
+  return UrdfConverter(doc, vehicle).convert(worldbody, floor_z);
 }
 
 bool readGroundDrive(const mjModel* m, const std::string& vehicle_name, GroundDrive& d) {
@@ -467,6 +477,20 @@ bool readGroundDrive(const mjModel* m, const std::string& vehicle_name, GroundDr
   d.max_yaw_rate = x[3];
   d.wheel_radius = x[4];
   d.wheel_separation = x[5];
+  const int servos = mj_name2id(m, mjOBJ_NUMERIC, (vehicle_name + "/drive_servos").c_str());
+  const int joints = mj_name2id(m, mjOBJ_TEXT, (vehicle_name + "/drive_joints").c_str());
+  const int count = d.kind == GroundDrive::Kind::Holonomic ? 3 : 2;
+  if (servos < 0 || joints < 0 || m->numeric_size[servos] != 3 * count) return false;
+  std::istringstream names(std::string(m->text_data + m->text_adr[joints]));
+  const mjtNum* s = m->numeric_data + m->numeric_adr[servos];
+  d.servo_count = count;
+  for (int i = 0; i < count; ++i) {
+    std::string joint;
+    names >> joint;
+    const int id = mj_name2id(m, mjOBJ_JOINT, joint.c_str());
+    if (id < 0) return false;
+    d.servos[i] = {m->jnt_dofadr[id], s[3 * i], s[3 * i + 1], s[3 * i + 2]};
+  }
   return true;
 }
 

@@ -6,10 +6,12 @@
 // - every MuJoCo name is prefixed "<vehicle>/"; the base body is "<vehicle>/base";
 // - a root link without mass or geometry joined to the base by a planar joint (axis z) makes a
 //   holonomic base: slide joints root_x, root_y and hinge root_yaw, driven by velocity servos
-//   drive_x, drive_y, drive_yaw (force and speed from the planar joint's <limit>);
+//   in x, y and yaw (force and speed from the planar joint's <limit>);
 // - otherwise the root link is the base and gets a free joint "root"; it must then have two
 //   continuous joints named *left_wheel* and *right_wheel* (a differential drive), driven by
-//   velocity servos wheel_left, wheel_right (torque and speed from their <limit>);
+//   velocity servos on the left and right wheel (torque and speed from their <limit>);
+// - the servos are sim/'s (sim/physics_stepper.h applies them every physics step), recorded in
+//   the model's <custom> section, not MuJoCo actuators;
 // - links named *caster* touch the floor without friction (a ball caster rolls every way).
 // The robot's URDF frame lies on the floor (REP 120 base_footprint): its origin is placed at the
 // vehicle's start (x, y) on the floor.
@@ -17,6 +19,7 @@
 #include <tinyxml2.h>
 
 #include <Eigen/Core>
+#include <array>
 
 #include "sim/scenario.h"
 
@@ -34,14 +37,25 @@ struct GroundDrive {
   // Planar root: the world (x, y) where root_x = root_y = 0, and the start heading (rad).
   Eigen::Vector2d planar_origin = Eigen::Vector2d::Zero();
   double start_yaw = 0.0;
+  // Velocity servos: force kv (command - qvel[dof]), the command within +-max_speed and the force
+  // within +-max_force (the MuJoCo velocity actuator's law). Holonomic: x, y, yaw; differential:
+  // left wheel, right wheel.
+  struct Servo {
+    int dof = -1;
+    double kv = 0.0;
+    double max_force = 0.0;
+    double max_speed = 0.0;
+  };
+  std::array<Servo, 3> servos{};
+  int servo_count = 0;
 };
 
-// Appends the robot's bodies to `worldbody`, its actuators to `actuator`, its meshes to the
-// document's <asset> and its drive description to <custom>. Throws InputError naming the URDF
-// file and the element for a malformed URDF, a missing mesh or a robot that breaks the
-// conventions above.
-void addUrdfVehicle(tinyxml2::XMLDocument& doc, tinyxml2::XMLElement* worldbody,
-                    tinyxml2::XMLElement* actuator, const VehicleSpec& vehicle, double floor_z);
+// Appends the robot's bodies to `worldbody`, its meshes to the document's <asset> and its drive
+// (servos included) to <custom>. Throws InputError naming the URDF file and the element for a
+// malformed URDF, a missing mesh or a robot that breaks the conventions above. Returns whether
+// the robot rests on the floor (a free base on wheels; a planar base floats above it).
+bool addUrdfVehicle(tinyxml2::XMLDocument& doc, tinyxml2::XMLElement* worldbody,
+                    const VehicleSpec& vehicle, double floor_z);
 
 // The drive that addUrdfVehicle recorded for `vehicle_name` in the compiled model; false if
 // there is none (not a ground robot).

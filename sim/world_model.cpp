@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <cstring>
-#include <utility>
 #include <sstream>
 
 #include "planning/input_error.h"
@@ -69,8 +68,8 @@ void addObstacleGeom(XMLDocument& doc, XMLElement* worldbody, const Obstacle& o,
   }
 }
 
-void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* actuator,
-                XMLElement* custom, const VehicleSpec& v) {
+void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* custom,
+                const VehicleSpec& v) {
   XMLDocument src;
   if (src.LoadFile(v.model_file.c_str()) != tinyxml2::XML_SUCCESS)
     throw InputError(v.model_file.string(), "", std::string("cannot parse model XML: ") + src.ErrorStr());
@@ -89,16 +88,17 @@ void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* actuator,
   copy->SetAttribute("euler", ("0 0 " + fmt(v.yaw_deg)).c_str());
   worldbody->InsertEndChild(copy);
 
-  // Actuators, and the rotor constants of <custom> (sim/ reads them as "<name>/thrust_coefficient"
-  // and so on), prefixed like the body.
-  const std::pair<const char*, XMLElement*> sections[] = {{"actuator", actuator}, {"custom", custom}};
-  for (const auto& [tag, into] : sections) {
-    XMLElement* from = root->FirstChildElement(tag);
-    for (XMLElement* a = from ? from->FirstChildElement() : nullptr; a; a = a->NextSiblingElement()) {
-      XMLElement* ac = a->DeepClone(&doc)->ToElement();
-      prefixNames(ac, prefix);
-      into->InsertEndChild(ac);
-    }
+  // The rotor constants of <custom> (sim/ reads them as "<name>/thrust_coefficient" and so on),
+  // prefixed like the body. The rotors' thrust is sim/'s to apply: an actuator would double it.
+  if (root->FirstChildElement("actuator"))
+    throw InputError(v.model_file.string(), "<actuator>",
+                     "a quadrotor model has no actuators: sim/ applies the rotors' thrust and "
+                     "reaction torques from the <custom> rotor constants");
+  XMLElement* from = root->FirstChildElement("custom");
+  for (XMLElement* a = from ? from->FirstChildElement() : nullptr; a; a = a->NextSiblingElement()) {
+    XMLElement* ac = a->DeepClone(&doc)->ToElement();
+    prefixNames(ac, prefix);
+    custom->InsertEndChild(ac);
   }
 }
 
@@ -204,14 +204,21 @@ std::string composeWorldXml(const Scenario& s) {
     inc->SetAttribute("file", std::filesystem::absolute(s.include_file).c_str());
   }
 
-  XMLElement* actuator = add(doc, mujoco, "actuator");
   XMLElement* custom = doc.NewElement("custom");
+  int on_floor = 0;  // robots whose wheels touch the floor at every step
   for (const VehicleSpec& v : s.vehicles) {
     if (v.ground)
-      addUrdfVehicle(doc, worldbody, actuator, v, lo.z());
+      on_floor += addUrdfVehicle(doc, worldbody, v, lo.z()) ? 1 : 0;
     else
-      addVehicle(doc, worldbody, actuator, custom, v);
+      addVehicle(doc, worldbody, custom, v);
   }
+  // MuJoCo 2.2.2 preallocates its contact and constraint buffers (100 contacts, 500 rows by
+  // default) and its constraint Jacobian as njmax x nv: size them to what can touch at once, a
+  // robot on wheels making about 3 contacts of 4 pyramidal rows each, plus room for collisions.
+  XMLElement* size = doc.NewElement("size");
+  size->SetAttribute("nconmax", 100 + 4 * on_floor);
+  size->SetAttribute("njmax", 500 + 16 * on_floor);
+  mujoco->InsertAfterChild(option, size);
   addMovingObstacleBodies(doc, worldbody, s);
   if (custom->FirstChildElement()) mujoco->InsertEndChild(custom);
 
@@ -267,23 +274,23 @@ WorldModel WorldModel::fromXml(const std::string& xml, const Scenario& scenario)
     q.inertia = Eigen::Vector3d(m->body_inertia[3 * h.body], m->body_inertia[3 * h.body + 1],
                                 m->body_inertia[3 * h.body + 2]);
     q.gravity = -m->opt.gravity[2];
+    // Rotor sites; spins and the moment constant from <custom> (no actuators: sim/ applies the
+    // rotors' wrench itself, see models/quad_1500g.xml).
+    const int spin_id = mj_name2id(m, mjOBJ_NUMERIC, (p + "rotor_spin").c_str());
+    if (spin_id < 0 || m->numeric_size[spin_id] != 4)
+      throw InputError(file, "<custom>", "needs <numeric name=\"rotor_spin\"> with 4 values (+1 or -1)");
     for (int i = 0; i < 4; ++i) {
-      const std::string an = p + "thrust" + std::to_string(i);
-      const int a = mj_name2id(m, mjOBJ_ACTUATOR, an.c_str());
       const int site = mj_name2id(m, mjOBJ_SITE, (p + "rotor" + std::to_string(i)).c_str());
-      if (a < 0 || site < 0 || m->actuator_trntype[a] != mjTRN_SITE)
-        throw InputError(file, "<actuator>", "needs site actuators thrust0..3 on sites rotor0..3");
-      if (m->actuator_dyntype[a] != mjDYN_NONE)
-        throw InputError(file, "<actuator>",
-                         "thrust actuators take the rotor thrust directly (no dyntype): the rotor "
-                         "lag is sim/'s, from the <custom> time constants");
-      h.actuators[i] = a;
+      if (site < 0 || m->site_bodyid[site] != h.body)
+        throw InputError(file, "<body name=\"base\">", "needs sites rotor0..3 on the base");
       q.rotor_xy[i] = Eigen::Vector2d(m->site_pos[3 * site], m->site_pos[3 * site + 1]);
       q.rotor_z = m->site_pos[3 * site + 2];
-      const double k = m->actuator_gear[6 * a + 5];
-      q.spin[i] = k >= 0 ? 1.0 : -1.0;
-      q.torque_per_thrust = std::abs(k);
+      const double spin = m->numeric_data[m->numeric_adr[spin_id] + i];
+      if (spin != 1.0 && spin != -1.0)
+        throw InputError(file, "<numeric name=\"rotor_spin\">", "each value must be +1 or -1");
+      q.spin[i] = spin;
     }
+    q.torque_per_thrust = rotorConstant(m, p, "moment_constant", 0.0, 1.0, file);
     q.thrust_coefficient = rotorConstant(m, p, "thrust_coefficient", 1e-12, 1.0, file);
     q.min_rotor_speed = rotorConstant(m, p, "min_rotor_speed", 0.0, 1e5, file);
     q.max_rotor_speed = rotorConstant(m, p, "max_rotor_speed", 1.0, 1e5, file);

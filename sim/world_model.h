@@ -20,11 +20,10 @@ struct VehicleHandles {
   int body = -1;        // the vehicle's root body ("<name>/base")
   int qpos_adr = -1;    // its free joint's qpos (x y z qw qx qy qz)
   int qvel_adr = -1;    // its free joint's qvel (world linear, body angular)
-  int actuators[4] = {-1, -1, -1, -1};
   std::vector<int> geoms;  // every geom of the vehicle (for contacts)
   QuadrotorParams params;  // read off the model: mass, inertia, rotors, limits, radius
-  // Ground robots (sim/urdf_vehicle.h): actuators[] holds drive_x, drive_y, drive_yaw
-  // (holonomic) or wheel_left, wheel_right (differential); with a planar root, qpos_adr and
+  // Ground robots (sim/urdf_vehicle.h): drive has the drive's servos (x, y, yaw of a holonomic
+  // base; left and right wheel of a differential one); with a planar root, qpos_adr and
   // qvel_adr point at root_x, root_y, root_yaw; params has mass, radius (horizontal) and gravity.
   bool ground = false;
   GroundDrive drive;

@@ -5,6 +5,7 @@
 
 #include "control/cascade_controller.h"
 #include "control/waypoint_reference.h"
+#include "sim/aerodynamics.h"
 #include "sim/flight_simulation.h"
 #include "sim/sensors/sensor_presets.h"
 #include "sim/world_model.h"
@@ -69,13 +70,16 @@ Section measureLoop(const Scenario& s, const std::string& name, const std::strin
       static_cast<int>(std::lround(1.0 / (s.sim.timestep * s.sim.control_rate)));
   const long steps = log.physics_steps;
   const auto t0 = std::chrono::steady_clock::now();
+  Eigen::Vector3d force_body, torque_body;
   for (long k = 0; k < steps; ++k) {
-    if (k % per_control == 0) {
-      // The rotor thrusts the loop's rotor model produced (held over the control period).
-      const auto& thrust =
-          samples[std::min<std::size_t>(k / per_control, samples.size() - 1)].rotor_thrust;
-      for (int i = 0; i < 4; ++i) d->ctrl[v.actuators[i]] = thrust[i];
-    }
+    if (k % per_control == 0)  // the rotor thrusts the loop applied, held over the period
+      rotorWrench(v.params,
+                  samples[std::min<std::size_t>(k / per_control, samples.size() - 1)].rotor_thrust,
+                  force_body, torque_body);
+    // The thrust turns with the body: the same O(1) write the loop makes.
+    const mjtNum* q = d->qpos + v.qpos_adr + 3;
+    setFreeJointWrench(
+        d, v, Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized() * force_body, torque_body);
     mj_step(m, d);
   }
   const double bare_s =

@@ -18,5 +18,6 @@ void addReproduceCommand(CLI::App& app, CommandContext& ctx);
 void addGridBenchCommand(CLI::App& app, CommandContext& ctx);
 void addMapfCommand(CLI::App& app, CommandContext& ctx);
 void addSweepCommand(CLI::App& app, CommandContext& ctx);
+void addExportMjcfCommand(CLI::App& app, CommandContext& ctx);
 
 }  // namespace cosim::cli

@@ -28,6 +28,7 @@ int main(int argc, char** argv) {
   cosim::cli::addGridBenchCommand(app, ctx);
   cosim::cli::addMapfCommand(app, ctx);
   cosim::cli::addSweepCommand(app, ctx);
+  cosim::cli::addExportMjcfCommand(app, ctx);
 
   try {
     app.parse(argc, argv);

@@ -2,6 +2,7 @@
 // and acting across the rotor axes only, ground effect against whatever lies under each rotor,
 // and downwash from a vehicle above.
 #include "sim/aerodynamics.h"
+#include "sim/quadrotor_plant.h"
 
 #include <gtest/gtest.h>
 
@@ -67,18 +68,20 @@ TEST(RotorDrag, ScalesWithRotorSpeedAndActsAtTheRotors) {
   d->qvel[v.qvel_adr] = 4.0;
   mj_forward(world.model(), d);
   Aerodynamics air(s.disturbances, world, 1);
+  QuadrotorPlant plant(v, SensorSettings{}, 1, 0);
   const auto dragAt = [&](double w) {
-    RotorModel rotors(v.params);
-    rotors.reset(Eigen::Vector4d::Constant(w));
-    air.apply(world.model(), d, {&rotors}, 0.001);
-    const mjtNum* f = d->xfrc_applied + 6 * v.body;
-    return std::pair{Eigen::Vector3d(f[0], f[1], f[2]), Eigen::Vector3d(f[3], f[4], f[5])};
+    plant.rotors().reset(Eigen::Vector4d::Constant(w));
+    air.apply(world.model(), d, {&plant}, 0.001);
+    // The free joint's generalized force: world force, body moment; level, so the body y axis is
+    // the world's. The equal rotors' own moments cancel, their thrust is vertical.
+    const mjtNum* f = d->qfrc_applied + v.qvel_adr;
+    return std::pair{Eigen::Vector3d(f[0], f[1], 0.0), Eigen::Vector3d(f[3], f[4], f[5])};
   };
   const auto [slow_force, slow_torque] = dragAt(800.0);
   const auto [fast_force, fast_torque] = dragAt(1600.0);
   EXPECT_NEAR(slow_force.x(), -4 * 800.0 * 9.1785e-7 * 4.0, 1e-12);
   EXPECT_NEAR(fast_force.x() / slow_force.x(), 2.0, 1e-12);
-  EXPECT_NEAR(slow_force.tail<2>().norm(), 0.0, 1e-15);
+  EXPECT_NEAR(slow_force.y(), 0.0, 1e-15);
   // Each rotor adds r x F = (0, 0.01 F_x, -y_i F_x); the y_i cancel over the four rotors.
   EXPECT_NEAR(slow_torque.y(), 0.01 * slow_force.x(), 1e-15);
   mj_deleteData(d);
@@ -117,10 +120,10 @@ TEST(GroundEffect, ActsOnTheRotorsOverASurfaceAndNotTheOthers) {
   mjData* d = mj_makeData(world.model());
   mj_resetData(world.model(), d);
   mj_forward(world.model(), d);
-  RotorModel rotors(world.vehicles()[0].params);
-  rotors.reset(Eigen::Vector4d::Constant(world.vehicles()[0].params.hoverRotorSpeed()));
+  QuadrotorPlant plant(world.vehicles()[0], SensorSettings{}, 1, 0);
+  plant.rotors().reset(Eigen::Vector4d::Constant(world.vehicles()[0].params.hoverRotorSpeed()));
   Aerodynamics air(s.disturbances, world, 1);
-  air.apply(world.model(), d, {&rotors}, 0.001);
+  air.apply(world.model(), d, {&plant}, 0.001);
   const double R = 0.128;
   // Rotors 1 and 2 are the rear ones (x = -0.13), their hubs 0.2 + 0.023 m over the top.
   const double over_box = 1.0 / (1.0 - std::pow(R / (4.0 * 0.223), 2));
@@ -129,9 +132,12 @@ TEST(GroundEffect, ActsOnTheRotorsOverASurfaceAndNotTheOthers) {
   // The front ones look 1.223 m down to the floor, beyond the 5 R the ray looks: no gain.
   EXPECT_DOUBLE_EQ(air.thrustFactor(0, 0), 1.0);
   EXPECT_DOUBLE_EQ(air.thrustFactor(0, 3), 1.0);
-  // The gain reaches MuJoCo as thrust: rear rotors' controls exceed the front ones' by it.
-  const auto& a = world.vehicles()[0].actuators;
-  EXPECT_NEAR(d->ctrl[a[1]] / d->ctrl[a[0]], over_box, 1e-9);
+  // The gain reaches MuJoCo as thrust: the rear rotors push harder by it, which pitches the
+  // vehicle nose down (a positive moment about body y, -sum x_i T_i; the rear is at x = -0.13 m).
+  EXPECT_NEAR(plant.appliedThrusts()[1] / plant.appliedThrusts()[0], over_box, 1e-9);
+  const double T = plant.appliedThrusts()[0];
+  EXPECT_NEAR(d->qfrc_applied[world.vehicles()[0].qvel_adr + 4],
+              -(2 * -0.13 * T * over_box + 2 * 0.13 * T), 1e-9);
   mj_deleteData(d);
 }
 

@@ -48,7 +48,13 @@ TEST(GroundRobotModel, DiffDriveBecomesFreeBaseWithTurtleBot3WheelGeometry) {
   // The chassis box's far corner (0.102, 0.07) sets the footprint radius.
   EXPECT_NEAR(h.params.radius, std::hypot(0.102, 0.07), 1e-6);
   EXPECT_EQ(w.model()->jnt_type[mj_name2id(w.model(), mjOBJ_JOINT, "tb/root")], mjJNT_FREE);
-  EXPECT_GE(mj_name2id(w.model(), mjOBJ_ACTUATOR, "tb/wheel_left"), 0);
+  // Two wheel servos, on the wheel joints' dofs (applied by sim/, not MuJoCo actuators).
+  ASSERT_EQ(h.drive.servo_count, 2);
+  const int left = mj_name2id(w.model(), mjOBJ_JOINT, "tb/left_wheel_joint");
+  ASSERT_GE(left, 0);
+  EXPECT_EQ(h.drive.servos[0].dof, w.model()->jnt_dofadr[left]);
+  EXPECT_NEAR(h.drive.servos[0].max_speed, 6.67, 1e-9);  // rad/s, the wheel joint's <limit>
+  EXPECT_EQ(w.model()->nu, 0);
 }
 
 TEST(GroundRobotModel, OmniBaseBecomesPlanarBaseFacingItsStartYaw) {

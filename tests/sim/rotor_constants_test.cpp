@@ -60,14 +60,12 @@ TEST(RotorConstants, ARotorConstantOutOfRangeIsRefused) {
       << m;
 }
 
-TEST(RotorConstants, AFilterActuatorIsRefusedBecauseTheRotorLagIsSims) {
+TEST(RotorConstants, AThrustActuatorIsRefusedBecauseTheRotorsAreSims) {
   const std::string m = buildWithEditedModel([](std::string s) {
-    // Every rotor a filter (MuJoCo wants stateful actuators after the stateless ones).
-    return std::regex_replace(s, std::regex("(gear=\"[^\"]*\")/>"),
-                              "$1 dyntype=\"filter\" dynprm=\"0.02\"/>");
+    return std::regex_replace(s, std::regex("</mujoco>"),
+                              "<actuator><general name=\"thrust0\" site=\"rotor0\" "
+                              "gear=\"0 0 1 0 0 0.06\"/></actuator></mujoco>");
   });
-  EXPECT_NE(m.find("<actuator>: thrust actuators take the rotor thrust directly"),
-            std::string::npos)
-      << m;
+  EXPECT_NE(m.find("<actuator>: a quadrotor model has no actuators"), std::string::npos) << m;
   EXPECT_EQ(buildWithEditedModel([](std::string s) { return s; }), "");  // the file as it is
 }
