@@ -1,0 +1,169 @@
+#include "experiments/bench/team_scale.h"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+#include "experiments/cli/run_pipeline.h"
+#include "sim/aerodynamics.h"
+#include "sim/world_model.h"
+
+namespace cosim::bench {
+
+namespace {
+
+// n/2 omni robots driving 4 m along their lanes at their cruise speed, n/2 cf2 hovering 2 m
+// above and flying 4 m across them: no planner (the given waypoints), lanes 0.8 m apart.
+Scenario teamScenario(int n, double seconds) {
+  Scenario s;
+  s.file = "team_scale";
+  const int robots = n / 2, quads = n - robots;
+  const int side =
+      static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(robots, quads)))));
+  const double pitch = 0.8, room = side * pitch + 6.0;
+  s.world.bounds_min = {0, 0, 0};
+  s.world.bounds_max = {room, room, 4};
+  for (int i = 0; i < robots; ++i) {
+    VehicleSpec v;
+    v.name = "r" + std::to_string(i);
+    v.model = "omni_base";
+    v.model_file = modelsDirectory() / "omni_base.urdf";
+    v.ground = true;
+    v.start = {1.0 + pitch * (i % side), 1.0 + pitch * (i / side), 0.0};
+    v.waypoints = {v.start + Eigen::Vector3d(4.0, 0.0, 0.0)};
+    s.vehicles.push_back(v);
+  }
+  for (int i = 0; i < quads; ++i) {
+    VehicleSpec v;
+    v.name = "q" + std::to_string(i);
+    v.model = "cf2";
+    v.model_file = modelsDirectory() / "cf2.xml";
+    v.start = {1.0 + pitch * (i % side), 1.0 + pitch * (i / side), 2.0};
+    v.waypoints = {v.start + Eigen::Vector3d(0.0, 4.0, 0.0)};
+    s.vehicles.push_back(v);
+  }
+  s.sim.timestep = 0.002;
+  s.sim.control_rate = 250;
+  s.sim.max_time = seconds;
+  s.aerial.controller_name = "geometric";
+  s.aerial.controller_gains = ParamSet("team_scale");
+  s.aerial.planner_params = ParamSet("team_scale");
+  s.aerial.trajectory_params = ParamSet("team_scale");
+  s.planner_params = ParamSet("team_scale");
+  s.trajectory_params = ParamSet("team_scale");
+  s.controller_gains = ParamSet("team_scale");
+  return s;
+}
+
+// The same world with the MuJoCo actuators cosim composed before: four thrust site actuators per
+// quadrotor (gear 0 0 1 0 0 +-k_m/k_f) and one velocity servo per robot drive joint.
+std::string withActuators(const WorldModel& world) {
+  std::string acts = "<actuator>";
+  const mjModel* m = world.model();
+  for (const VehicleHandles& v : world.vehicles()) {
+    if (v.ground) {
+      for (int i = 0; i < v.drive.servo_count; ++i) {
+        const GroundDrive::Servo& s = v.drive.servos[i];
+        const char* joint = mj_id2name(m, mjOBJ_JOINT, m->dof_jntid[s.dof]);
+        acts += "<velocity joint=\"" + std::string(joint) + "\" kv=\"" + std::to_string(s.kv) +
+                "\" ctrlrange=\"-" + std::to_string(s.max_speed) + " " +
+                std::to_string(s.max_speed) + "\" forcerange=\"-" + std::to_string(s.max_force) +
+                " " + std::to_string(s.max_force) + "\"/>";
+      }
+      continue;
+    }
+    for (int i = 0; i < 4; ++i)
+      acts += "<general site=\"" + v.name + "/rotor" + std::to_string(i) + "\" gear=\"0 0 1 0 0 " +
+              std::to_string(v.params.spin[i] * v.params.torque_per_thrust) + "\"/>";
+  }
+  std::string xml = world.xml();
+  xml.insert(xml.rfind("</mujoco>"), acts + "</actuator>");
+  return xml;
+}
+
+mjModel* compile(const std::string& xml) {
+  mjVFS vfs;
+  mj_defaultVFS(&vfs);
+  mj_makeEmptyFileVFS(&vfs, "team.xml", static_cast<int>(xml.size()));
+  std::memcpy(vfs.filedata[mj_findFileVFS(&vfs, "team.xml")], xml.data(), xml.size());
+  char error[1000] = "";
+  mjModel* m = mj_loadXML("team.xml", &vfs, error, sizeof error);
+  mj_deleteVFS(&vfs);
+  if (!m) throw std::runtime_error(std::string("team_scale: ") + error);
+  return m;
+}
+
+// Steps per second of bare mj_step on `m` with the quadrotors held in hover: by their free-joint
+// force (no actuators), or by their thrust actuators' controls.
+double bareRate(const mjModel* m, const WorldModel& world, long steps, bool actuated) {
+  mjData* d = mj_makeData(m);
+  int a = 0;
+  for (const VehicleHandles& v : world.vehicles()) {
+    if (v.ground) {
+      a += v.drive.servo_count;
+      continue;
+    }
+    const double hover = v.params.mass * v.params.gravity / 4.0;
+    if (actuated)
+      for (int i = 0; i < 4; ++i) d->ctrl[a++] = hover;
+    else
+      setFreeJointWrench(d, v, Eigen::Vector3d(0, 0, 4 * hover), Eigen::Vector3d::Zero());
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  for (long k = 0; k < steps; ++k) mj_step(m, d);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  mj_deleteData(d);
+  return steps / s;
+}
+
+double peakMemoryMb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;  // kB on Linux
+}
+
+}  // namespace
+
+Section benchTeamScale(bool quick) {
+  Section out;
+  out.name = "team_scale";
+  const std::vector<int> sizes =
+      quick ? std::vector<int>{10, 100} : std::vector<int>{10, 100, 1000};
+  const double seconds = quick ? 0.5 : 2.0;
+  double ratio_100 = 0.0;
+  for (int n : sizes) {
+    Scenario s = teamScenario(n, seconds);
+    const WorldModel world = WorldModel::build(s);
+    RunRequest request;
+    request.out_dir = std::filesystem::temp_directory_path() /
+                      ("cosim-team-scale-" + std::to_string(::getpid()) + "-" + std::to_string(n));
+    std::filesystem::create_directories(request.out_dir);
+    request.video = false;
+    request.images = false;
+    const RunSummary run = executeRun(s, request);
+    std::filesystem::remove_all(request.out_dir);
+    const double loop_rtf = run.sim_speed_x;
+    const long steps = static_cast<long>(seconds / s.sim.timestep);
+    const double bare_rtf = bareRate(world.model(), world, steps, false) * s.sim.timestep;
+    mjModel* actuated = compile(withActuators(world));
+    const double actuated_rtf = bareRate(actuated, world, steps, true) * s.sim.timestep;
+    mj_deleteModel(actuated);
+    const std::string tag = std::to_string(n);
+    out.figures.push_back({"loop_rtf_" + tag, loop_rtf, "x real time"});
+    out.figures.push_back({"bare_mj_step_rtf_" + tag, bare_rtf, "x real time"});
+    out.figures.push_back({"actuated_model_bare_rtf_" + tag, actuated_rtf, "x real time"});
+    out.figures.push_back({"ratio_loop_to_actuated_" + tag, loop_rtf / actuated_rtf, "x"});
+    out.figures.push_back({"peak_memory_after_" + tag, peakMemoryMb(), "MB"});
+    if (n == 100) ratio_100 = loop_rtf / actuated_rtf;
+  }
+  out.note =
+      "half omni robots, half cf2, 2 ms step, control 250 Hz; the full loop against bare "
+      "mj_step on the world composed with actuators (target at 100 agents >= 3x): " +
+      std::string(ratio_100 >= 3.0 ? "met" : "NOT met");
+  return out;
+}
+
+}  // namespace cosim::bench

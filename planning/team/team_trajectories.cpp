@@ -1,0 +1,127 @@
+#include "planning/team/team_trajectories.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "planning/trajectory/minimum_snap_closed_form.h"
+
+namespace cosim {
+
+namespace {
+
+bool same(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  return (a - b).norm() < 1e-9;
+}
+
+PolynomialPiece hold(const Eigen::Vector3d& p, double duration) {
+  PolynomialPiece piece;
+  piece.duration = duration;
+  piece.coefficients.row(0) = p.transpose();
+  return piece;
+}
+
+// One agent's trajectory: rest at every stop (and at its ends and waits), one minimum-snap
+// polynomial through the waypoints of each run between stops, every segment `step` long.
+PiecewisePolynomialTrajectory build(const std::vector<Eigen::Vector3d>& p,
+                                    const std::vector<char>& stop, double step) {
+  std::vector<PolynomialPiece> pieces;
+  std::size_t k = 0;
+  while (k + 1 < p.size()) {
+    if (same(p[k], p[k + 1])) {  // a wait
+      pieces.push_back(hold(p[k], step));
+      ++k;
+      continue;
+    }
+    std::size_t j = k + 1;
+    while (j + 1 < p.size() && !stop[j] && !same(p[j], p[j + 1])) ++j;
+    const MinimumSnapClosedForm fit(std::vector<Eigen::Vector3d>(p.begin() + k, p.begin() + j + 1));
+    const PiecewisePolynomialTrajectory run = fit.trajectory(std::vector<double>(j - k, step));
+    pieces.insert(pieces.end(), run.pieces().begin(), run.pieces().end());
+    k = j;
+  }
+  if (pieces.empty()) pieces.push_back(hold(p.front(), step));
+  return PiecewisePolynomialTrajectory(std::move(pieces));
+}
+
+// Makes an agent stop at the waypoints before and after instant t; returns how many stops that
+// added (0: it already stops at both).
+int stopAround(std::vector<char>& stop, double t, double step) {
+  const auto n = static_cast<long>(stop.size());
+  const long before = std::clamp(static_cast<long>(std::floor(t / step)), 0L, n - 1);
+  const long after = std::min(before + 1, n - 1);
+  int added = 0;
+  for (long k : {before, after}) {
+    if (!stop[k]) stop[k] = 1, ++added;
+  }
+  return added;
+}
+
+}  // namespace
+
+TeamTrajectories smoothTeamPaths(const std::vector<TeamMember>& team, const World& world,
+                                 const TeamTrajectoryOptions& o) {
+  TeamTrajectories out;
+  const std::size_t n = team.size();
+  std::vector<std::vector<char>> stops(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (team[i].points.empty()) {
+      out.message = "an agent has no path";
+      return out;
+    }
+    stops[i].assign(team[i].points.size(), 0);
+    stops[i].front() = stops[i].back() = 1;
+    out.trajectories.push_back(build(team[i].points, stops[i], o.step_duration));
+  }
+
+  std::vector<Eigen::Vector3d> at(n);
+  for (out.repair_rounds = 0; out.repair_rounds <= o.max_repair_rounds; ++out.repair_rounds) {
+    double end = 0.0;
+    for (const auto& t : out.trajectories) end = std::max(end, t.duration());
+    std::vector<char> changed(n, 0);
+    bool stuck = false;
+    out.min_separation = out.min_clearance = std::numeric_limits<double>::infinity();
+    const long instants = static_cast<long>(std::ceil(end / o.check_interval));
+    for (long s = 0; s <= instants; ++s) {
+      const double t = std::min(end, s * o.check_interval);
+      for (std::size_t i = 0; i < n; ++i) at[i] = out.trajectories[i].sample(t).position;
+      for (std::size_t i = 0; i < n; ++i) {
+        const double clear = world.distanceToObstacles(at[i]) - team[i].clearance;
+        out.min_clearance = std::min(out.min_clearance, clear);
+        if (clear < 0.0 && !changed[i]) {
+          const int added = stopAround(stops[i], t, o.step_duration);
+          out.stops_added += added;
+          if (added)
+            changed[i] = 1;
+          else
+            stuck = true;
+        }
+        for (std::size_t j = i + 1; j < n; ++j) {
+          const double d = SeparationEllipsoid::between(team[i].separation, team[j].separation)
+                               .distance(at[i], at[j]);
+          out.min_separation = std::min(out.min_separation, d);
+          if (d >= o.min_separation || (changed[i] && changed[j])) continue;
+          const int a = changed[i] ? 0 : stopAround(stops[i], t, o.step_duration);
+          const int b = changed[j] ? 0 : stopAround(stops[j], t, o.step_duration);
+          out.stops_added += a + b;
+          if (a) changed[i] = 1;
+          if (b) changed[j] = 1;
+          if (!a && !b && !changed[i] && !changed[j]) stuck = true;
+        }
+      }
+    }
+    if (std::none_of(changed.begin(), changed.end(), [](char c) { return c; })) {
+      out.success = !stuck;
+      if (stuck)
+        out.message = "the grid plan itself comes closer than the separation (minimum " +
+                      std::to_string(out.min_separation) + ") or the clearance";
+      return out;
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      if (changed[i]) out.trajectories[i] = build(team[i].points, stops[i], o.step_duration);
+  }
+  out.message = "the separation could not be kept within " + std::to_string(o.max_repair_rounds) +
+                " repair rounds";
+  return out;
+}
+
+}  // namespace cosim

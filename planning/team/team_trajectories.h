@@ -1,0 +1,56 @@
+#pragma once
+// Smooth trajectories for a team planned in lock-step on a grid (a MAPF solution: every agent
+// moves one cell or waits at each step), keeping each pair outside its separation ellipsoid and
+// each vehicle clear of obstacles in continuous time: the continuous refinement stage of Hoenig
+// et al., "Trajectory planning for quadrotor swarms" (T-RO 2018), done here by check and repair
+// rather than by their constrained optimisation.
+//
+// Each agent's cell centres at the steps become waypoints at t = k * step. Between the waypoints
+// where it stops (its start, its goal, wherever it waits) it flies one minimum-snap polynomial
+// through the waypoints (MinimumSnapClosedForm, every segment one step long), so it keeps to the
+// schedule and passes straight runs without slowing down, cutting corners a little. The team is
+// then sampled every check_interval; wherever two agents come closer than min_separation (or one
+// closer to an obstacle than its clearance), both are made to stop at the waypoints around that
+// instant, and refitted, until nothing is violated. This terminates: an agent that stops at
+// every waypoint flies the grid path itself, each segment with the same rest-to-rest time law, so
+// the whole team moves as the lock-step plan interpolated linearly, which the grid's spacing
+// keeps apart (sim/ chooses a pitch of sqrt(2) separations: two agents in adjacent cells, one
+// moving into the cell the other is leaving at right angles, are one separation apart at worst).
+#include <Eigen/Core>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "planning/team/separation_ellipsoid.h"
+#include "planning/trajectory/piecewise_polynomial_trajectory.h"
+#include "planning/world/world.h"
+
+namespace cosim {
+
+struct TeamMember {
+  std::vector<Eigen::Vector3d> points;  // the agent's position at t = k * step; then it holds
+  SeparationEllipsoid separation;
+  double clearance = 0.0;  // m between its centre and any obstacle surface
+};
+
+struct TeamTrajectoryOptions {
+  double step_duration = 1.0;    // s per grid step
+  double min_separation = 1.0;   // ellipsoidal distance to keep (1: the ellipsoid's surface)
+  double check_interval = 0.02;  // s between checked instants
+  int max_repair_rounds = 500;
+};
+
+struct TeamTrajectories {
+  bool success = false;
+  std::string message;                                              // why not, on failure
+  std::vector<PiecewisePolynomialTrajectory> trajectories;          // one per member
+  double min_separation = std::numeric_limits<double>::infinity();  // at the checked instants
+  double min_clearance = std::numeric_limits<double>::infinity();   // m beyond the clearance
+  int repair_rounds = 0;
+  int stops_added = 0;  // waypoints where an agent was made to stop
+};
+
+TeamTrajectories smoothTeamPaths(const std::vector<TeamMember>& team, const World& world,
+                                 const TeamTrajectoryOptions& options);
+
+}  // namespace cosim
