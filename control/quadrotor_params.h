@@ -36,6 +36,9 @@ struct QuadrotorParams {
   // Axial inflow at which a rotor at constant speed makes no thrust; thrust falls linearly with
   // inflow from above (a downwash), T = k_f w^2 (1 - v_in / v_0) (PX4 motor model's form).
   double zero_thrust_inflow = 25.0;  // v_0, m/s
+  // A team's pairwise separation ellipsoid (planning/team/separation_ellipsoid.h), m.
+  double separation_radius = 0.24;
+  double separation_height = 0.6;
 
   // Rotor speed for a given thrust, clamped to [min_rotor_speed, max_rotor_speed].
   double rotorSpeedFor(double thrust) const;

@@ -304,6 +304,13 @@ WorldModel WorldModel::fromXml(const std::string& xml, const Scenario& scenario)
         rotorConstant(m, p, "rolling_moment_coefficient", 0.0, 1.0, file);
     q.propeller_radius = rotorConstant(m, p, "propeller_radius", 1e-3, 10.0, file);
     q.zero_thrust_inflow = rotorConstant(m, p, "zero_thrust_inflow", 0.1, 1000.0, file);
+    const int sep = mj_name2id(m, mjOBJ_NUMERIC, (p + "separation").c_str());
+    if (sep < 0 || m->numeric_size[sep] != 2 || !(m->numeric_data[m->numeric_adr[sep]] > 0) ||
+        !(m->numeric_data[m->numeric_adr[sep] + 1] > 0))
+      throw InputError(file, "<custom>",
+                       "needs <numeric name=\"separation\" data=\"RADIUS HEIGHT\"> (m, both > 0)");
+    q.separation_radius = m->numeric_data[m->numeric_adr[sep]];
+    q.separation_height = m->numeric_data[m->numeric_adr[sep] + 1];
     q.min_thrust = q.thrust_coefficient * q.min_rotor_speed * q.min_rotor_speed;
     q.max_thrust = q.thrust_coefficient * q.max_rotor_speed * q.max_rotor_speed;
     // Bounding radius about the centre of mass, over every geom of the vehicle.

@@ -26,6 +26,7 @@
 #include "sim/json_writer.h"
 #include "sim/moving_obstacle_motion.h"
 #include "sim/run_log_io.h"
+#include "sim/uav_separation_metrics.h"
 #include "sim/world_model.h"
 
 namespace cosim {
@@ -682,6 +683,15 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
                               log.end_reason == "saturated"
                           ? log.end_reason
                           : std::string("none"));
+  if (quadrotor_ids.size() > 1) {
+    std::vector<SeparationEllipsoid> ellipsoids;
+    for (std::size_t v : quadrotor_ids)
+      ellipsoids.push_back(
+          {world.vehicles()[v].params.separation_radius, world.vehicles()[v].params.separation_height});
+    const UavSeparationMetrics u = uavSeparationMetrics(log, quadrotor_ids, ellipsoids);
+    metrics.add("min_uav_separation_m", u.min_uav_separation)
+        .add("downwash_violations", u.downwash_violations);
+  }
   metrics.add("seed", static_cast<long>(scenario.sim.seed))
       .add("sim_time_s", log.sim_time)
       .add("wall_time_s", log.wall_time)

@@ -14,6 +14,7 @@
 #include "render/run_outputs.h"
 #include "sim/flight_simulation.h"
 #include "sim/run_log_io.h"
+#include "sim/uav_separation_metrics.h"
 #include "sim/world_model.h"
 
 namespace cosim {
@@ -172,6 +173,20 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
     JsonObject j = flightMetricsJson(summary.metrics[v]);
     j.add("name", log.vehicles[v].name).add("model", scenario.vehicles[v].model);
     per_vehicle.push_back(j);
+  }
+  if (log.vehicles.size() > 1) {
+    // A team of quadrotors: how close they came to each other (sim/uav_separation_metrics.h).
+    std::vector<std::size_t> all(log.vehicles.size());
+    std::vector<SeparationEllipsoid> ellipsoids;
+    for (std::size_t v = 0; v < all.size(); ++v) {
+      all[v] = v;
+      const QuadrotorParams& q = world.vehicles()[v].params;
+      ellipsoids.push_back({q.separation_radius, q.separation_height});
+    }
+    const UavSeparationMetrics u = uavSeparationMetrics(log, all, ellipsoids);
+    metrics.add("uav_contacts", u.uav_contacts)
+        .add("min_uav_separation_m", u.min_uav_separation)
+        .add("downwash_violations", u.downwash_violations);
   }
   metrics.addArray("vehicles", per_vehicle);
 
