@@ -59,9 +59,9 @@ std::string lacamStarPublishedMarkdown(const std::string& map_name) {
       "abstract: LaCAM* solved 99 % of them within 10 s.\n\n";
   if (inLacamStarBenchmark(map_name))
     md += "`" + map_name +
-          "` is one of those 33 maps, but the figure gives only the total over all of them; the "
-          "paper has no per-map number to set beside this map's rows, so the comparison is with "
-          "that total.\n";
+          "` is one of those 33 maps, but the figure gives the total over all of them only: "
+          "this summary has no number of the paper for this map alone, so ours below is set "
+          "beside that total.\n";
   else
     md += "`" + map_name +
           "` is not one of the paper's 33 benchmark maps: the paper has no figure for it.\n";

@@ -12,7 +12,7 @@
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/mapf/movingai_instance.h"
 #include "planning/mapf/solution_validator.h"
-#include "render/figures.h"
+#include "render/success_rate_chart.h"
 
 namespace cosim::cli {
 
@@ -198,7 +198,7 @@ std::string summaryMarkdown(const MapfBenchmarkSetup& s, const std::vector<Row>&
     if (any) md += line + "\n";
   }
 
-  // Anytime planners: how much the search improved its first solution.
+  // Anytime planners (they report a first solution): how much the search improved it.
   for (const std::string& p : s.planners) {
     double first = 0, final = 0, first_ms = 0;
     int k = 0;
@@ -207,7 +207,7 @@ std::string summaryMarkdown(const MapfBenchmarkSetup& s, const std::vector<Row>&
         first += static_cast<double>(r.first_cost), final += static_cast<double>(r.sum_of_costs),
             first_ms += r.first_solution_ms, ++k;
     if (k == 0) continue;
-    md += "\n" + p + " (anytime): over its " + std::to_string(k) +
+    md += "\n" + p + " (first and final solution): over its " + std::to_string(k) +
           " solved runs, mean time to the first solution " + fixed(first_ms / k, 1) +
           " ms; final SOC / first SOC " + fixed(final / first, 3) + ".\n";
   }
@@ -355,8 +355,19 @@ int runMapfBenchmark(const MapfBenchmarkSetup& s) {
   const Tally t = tally(rows);
   writeFileAtomically(s.out_dir / "benchmark.csv", csvOf(s.map, rows));
   writeFileAtomically(s.out_dir / "success_rate.csv", successRateCsv(s, t));
-  writeComparisonChart(s.out_dir / "success_rate.csv", "agents", "success_rate_percent", "planner",
-                       s.out_dir / "success_rate");
+  std::vector<SuccessRateSeries> series;
+  for (const std::string& p : s.planners) {
+    SuccessRateSeries& line = series.emplace_back();
+    line.name = p;
+    for (const int n : s.counts)
+      if (const auto it = t.find({p, n}); it != t.end())
+        line.points.emplace_back(n, 100.0 * it->second.second / it->second.first);
+  }
+  writeSuccessRateChart(series,
+                        stem(s.map) + ": solved within " + fixed(s.time_limit_s, 1) + " s (" +
+                            std::to_string(s.scens.size()) + " scenario file" +
+                            (s.scens.size() == 1 ? ")" : "s)"),
+                        s.out_dir / "success_rate");
   const std::string md = summaryMarkdown(s, rows, t, notes);
   writeFileAtomically(s.out_dir / "benchmark.md", md);
   std::cout << md << "\nwritten: " << s.out_dir.string()

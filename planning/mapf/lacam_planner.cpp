@@ -24,6 +24,11 @@ MapfResult LacamPlanner::solve(const MapfQuery& query) {
   c["improvements"] = static_cast<double>(out.improvements);
   c["last_improvement_ms"] = out.last_improvement_ms;
   c["proven_optimal"] = out.proven_optimal ? 1.0 : 0.0;
+  // 1 when the time limit (or a stop request) or the memory cap cut the anytime phase short:
+  // the final cost then depends on how far the search got.
+  c["anytime_cut_by_time"] = out.anytime_end == LacamOutcome::AnytimeEnd::kTimeLimit ? 1.0 : 0.0;
+  c["anytime_cut_by_memory"] =
+      out.anytime_end == LacamOutcome::AnytimeEnd::kMemoryLimit ? 1.0 : 0.0;
   c["iterations"] = static_cast<double>(out.iterations);
   c["nodes"] = static_cast<double>(out.nodes);
   c["restarts"] = static_cast<double>(out.restarts);

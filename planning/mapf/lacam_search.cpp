@@ -248,12 +248,20 @@ long LacamSearch::sumOfArrivalTimes() const {
 LacamOutcome LacamSearch::run() {
   const std::uint32_t root = createNode(starts_, ConfigurationTable::hash(starts_), kNone, 0);
   open_.push_back(root);
-  bool out_of_memory = false;
+  const long refine_budget = options_.refine_iterations > 0
+                                 ? options_.refine_iterations
+                                 : std::max<long>(1, 5'000'000 / std::max(1, n_));
+  long solved_at = 0;  // iteration of the first solution
+  bool out_of_memory = false, budget_spent = false;
   while (!open_.empty()) {
     if (deadline_.expired()) break;
     // Checked every 64 iterations: capacity() sums are cheap but not free.
     if ((out_.iterations & 63) == 0 && memoryBytes() > options_.max_memory_bytes) {
       out_of_memory = true;
+      break;
+    }
+    if (goal_ != kNone && out_.iterations - solved_at >= refine_budget) {
+      budget_spent = true;
       break;
     }
     ++out_.iterations;
@@ -267,6 +275,7 @@ LacamOutcome LacamSearch::run() {
       out_.first_solution_ms = deadline_.elapsedMs();
       out_.first_sum_of_loss = nodes_[top].g;
       out_.first_sum_of_costs = sumOfArrivalTimes();
+      solved_at = out_.iterations;
       if (!options_.anytime) break;
       continue;  // LaCAM*: keep searching; the goal node itself is discarded next (f = g)
     }
@@ -302,7 +311,12 @@ LacamOutcome LacamSearch::run() {
     out_.status = LacamOutcome::Status::kSolved;
     out_.final_sum_of_loss = nodes_[goal_].g;
     out_.proven_optimal = open_.empty();
-    out_.stopped_early = !open_.empty() && options_.anytime;
+    using End = LacamOutcome::AnytimeEnd;
+    out_.anytime_end = !options_.anytime ? End::kNone
+                       : open_.empty()   ? End::kOptimal
+                       : budget_spent    ? End::kIterations
+                       : out_of_memory   ? End::kMemoryLimit
+                                         : End::kTimeLimit;
     extractSolution(out_);
   } else if (open_.empty()) {
     out_.status = LacamOutcome::Status::kNoSolution;

@@ -35,7 +35,13 @@
 namespace cosim {
 
 struct LacamOptions {
-  bool anytime = true;          // false: stop at the first solution (LaCAM rather than LaCAM*)
+  bool anytime = true;  // false: stop at the first solution (LaCAM rather than LaCAM*)
+  // Iterations the anytime phase may take after the first solution; 0: 5e6 / N. An iteration
+  // costs about the same per agent, so the default is about the same work (near a second here)
+  // for any team, and unlike a time budget it gives the same result on every run. The phase
+  // also ends at the time limit (then the result depends on the machine's speed), the memory
+  // cap, or when the solution is proven optimal.
+  long refine_iterations = 0;
   bool swap = true;             // PIBT's swap technique (IJCAI 2023 §4)
   double restart_rate = 0.001;  // Kei18/lacam2 default (-r)
   // The search's own memory (configurations, priorities, orders, edges, constraint nodes, hash
@@ -50,7 +56,9 @@ struct LacamOutcome {
   std::string message;                           // why it failed, empty when solved
   std::vector<std::vector<int>> configurations;  // solved: start, ..., goals (vertex per agent)
   bool proven_optimal = false;                   // the search space was exhausted (sum of loss)
-  bool stopped_early = false;  // solved, but the anytime phase ended at a time/memory limit
+  // How the anytime phase ended (kNone: not run, anytime off).
+  enum class AnytimeEnd { kNone, kOptimal, kIterations, kTimeLimit, kMemoryLimit };
+  AnytimeEnd anytime_end = AnytimeEnd::kNone;
   long first_sum_of_loss = 0, final_sum_of_loss = 0;
   long first_sum_of_costs = 0;  // of the first solution: arrival times (CONTRACT.md's cost)
   double first_solution_ms = 0.0, last_improvement_ms = 0.0;

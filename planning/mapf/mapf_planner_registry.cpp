@@ -69,6 +69,7 @@ const std::vector<MapfPlannerEntry>& mapfPlanners() {
        [](ParamSet& p) -> std::unique_ptr<MapfPlanner> {
          LacamOptions o;
          o.anytime = p.getBool("anytime", o.anytime);
+         o.refine_iterations = p.getInt("refine_iterations", 0, 0);
          o.swap = p.getBool("swap", o.swap);
          o.restart_rate = p.getDouble("restart_rate", o.restart_rate, 0.0, 1.0);
          o.max_memory_bytes = static_cast<std::size_t>(p.getInt("max_memory_mb", 1024, 16, 1 << 20))
