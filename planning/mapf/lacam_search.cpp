@@ -6,6 +6,7 @@
 
 #include "planning/mapf/configuration_table.h"
 #include "planning/mapf/goal_distance_table.h"
+#include "planning/mapf/id_pair_set.h"
 #include "planning/mapf/pibt_step.h"
 #include "planning/mapf/row_arena.h"
 #include "planning/mapf/split_mix64.h"
@@ -57,8 +58,10 @@ class LacamSearch {
   void collectFixedMoves(std::uint32_t constraint);
   std::int64_t edgeCost(std::span<const int> from, std::span<const int> to) const;
   std::int64_t heuristic(std::span<const int> c) const;
-  void addEdge(std::uint32_t from, std::uint32_t to, std::int64_t cost, bool known);
-  void rewire(std::uint32_t from);
+  // Adds the edge unless it is known; returns whether it was new.
+  bool addEdge(std::uint32_t from, std::uint32_t to, std::int64_t cost);
+  // A shorter way to `to` (via `from`), propagated to everything behind it.
+  void rewire(std::uint32_t from, std::uint32_t to, std::int64_t cost);
   bool isGoal(std::span<const int> c) const {
     return std::equal(c.begin(), c.end(), goals_.begin());
   }
@@ -84,6 +87,7 @@ class LacamSearch {
   // Edges between configurations (successor lists), for rewiring.
   std::vector<std::uint32_t> edge_to_, edge_next_;
   std::vector<std::int64_t> edge_cost_;
+  IdPairSet edge_set_;
   // Constraint nodes: "agent goes to vertex", chained to their parent up to the empty root.
   std::vector<std::uint32_t> c_parent_, c_next_;
   std::vector<int> c_agent_, c_vertex_, c_depth_;
@@ -180,35 +184,38 @@ std::int64_t LacamSearch::heuristic(std::span<const int> c) const {
   return h;
 }
 
-void LacamSearch::addEdge(std::uint32_t from, std::uint32_t to, std::int64_t cost, bool known) {
-  if (known)  // a new configuration has no edges yet; a known one may already be a successor
-    for (std::uint32_t e = nodes_[from].first_edge; e != kNone; e = edge_next_[e])
-      if (edge_to_[e] == to) return;
+bool LacamSearch::addEdge(std::uint32_t from, std::uint32_t to, std::int64_t cost) {
+  if (!edge_set_.insert(from, to)) return false;
   edge_to_.push_back(to);
   edge_cost_.push_back(cost);
   edge_next_.push_back(nodes_[from].first_edge);
   nodes_[from].first_edge = static_cast<std::uint32_t>(edge_to_.size() - 1);
+  return true;
 }
 
-void LacamSearch::rewire(std::uint32_t from) {
-  // IJCAI 2023 Alg. 2 (lines 24-30): propagate a lower g through the known edges (a queue is
-  // enough: it is a label-correcting Dijkstra on a graph whose costs are all positive).
-  rewire_queue_.assign(1, from);
+void LacamSearch::rewire(std::uint32_t from, std::uint32_t to, std::int64_t cost) {
+  // IJCAI 2023 Alg. 2 (lines 24-30): propagate a lower g through the known edges. Every edge
+  // already satisfies g(b) <= g(a) + c(a, b) (the propagation below restores it whenever a g
+  // drops), so only the new edge can improve anything: start from it rather than from all of
+  // `from`'s successors, as the reference code does, which costs a scan per rediscovery. A
+  // queue is enough: a label-correcting Dijkstra on positive costs.
+  const auto lower = [this](std::uint32_t a, std::uint32_t b, std::int64_t g) {
+    if (g >= nodes_[b].g) return;
+    nodes_[b].g = g;
+    nodes_[b].parent = a;
+    rewire_queue_.push_back(b);
+    if (b == goal_) {
+      ++out_.improvements;
+      out_.last_improvement_ms = deadline_.elapsedMs();
+    }
+    if (worthSearching(b)) open_.push_back(b);
+  };
+  rewire_queue_.clear();
+  lower(from, to, nodes_[from].g + cost);
   for (std::size_t k = 0; k < rewire_queue_.size(); ++k) {
     const std::uint32_t a = rewire_queue_[k];
-    for (std::uint32_t e = nodes_[a].first_edge; e != kNone; e = edge_next_[e]) {
-      const std::uint32_t b = edge_to_[e];
-      const std::int64_t g = nodes_[a].g + edge_cost_[e];
-      if (g >= nodes_[b].g) continue;
-      nodes_[b].g = g;
-      nodes_[b].parent = a;
-      rewire_queue_.push_back(b);
-      if (b == goal_) {
-        ++out_.improvements;
-        out_.last_improvement_ms = deadline_.elapsedMs();
-      }
-      if (worthSearching(b)) open_.push_back(b);
-    }
+    for (std::uint32_t e = nodes_[a].first_edge; e != kNone; e = edge_next_[e])
+      lower(a, edge_to_[e], nodes_[a].g + edge_cost_[e]);
   }
 }
 
@@ -217,7 +224,7 @@ std::size_t LacamSearch::memoryBytes() const {
          nodes_.capacity() * sizeof(HighLevelNode) +
          edge_to_.capacity() * (2 * sizeof(std::uint32_t) + sizeof(std::int64_t)) +
          c_parent_.capacity() * (2 * sizeof(std::uint32_t) + 3 * sizeof(int)) +
-         open_.capacity() * sizeof(std::uint32_t);
+         open_.capacity() * sizeof(std::uint32_t) + edge_set_.bytes();
 }
 
 void LacamSearch::extractSolution(LacamOutcome& out) const {
@@ -292,8 +299,7 @@ LacamOutcome LacamSearch::run() {
     const std::int64_t cost = edgeCost(from, next_);
     if (known != ConfigurationTable::kAbsent) {
       ++out_.rediscoveries;
-      addEdge(top, known, cost, true);
-      rewire(top);
+      if (addEdge(top, known, cost)) rewire(top, known, cost);
       // Re-insert the known configuration, or (rarely) restart from the start.
       std::uint32_t again = known;
       if (rng_.unit() < options_.restart_rate) again = root, ++out_.restarts;
@@ -301,7 +307,7 @@ LacamOutcome LacamSearch::run() {
       continue;
     }
     const std::uint32_t child = createNode(next_, hash, top, nodes_[top].g + cost);
-    addEdge(top, child, cost, false);
+    addEdge(top, child, cost);
     if (worthSearching(child)) open_.push_back(child);
   }
 

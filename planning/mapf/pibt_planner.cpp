@@ -14,7 +14,8 @@ MapfResult PibtPlanner::solve(const MapfQuery& query) {
   const Deadline deadline(query.time_limit_s, query.stop);
   const GraphInstance g = graphInstance(*query.instance);
   const int n = query.instance->agentCount();
-  const int max_steps = options_.max_steps > 0 ? options_.max_steps : g.graph.vertexCount();
+  const int max_steps =
+      options_.max_steps > 0 ? options_.max_steps : std::max(1000, g.graph.vertexCount());
   MapfResult result;
   const auto finish = [&](std::string message) {
     result.message = std::move(message);

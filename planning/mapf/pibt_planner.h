@@ -9,7 +9,7 @@ namespace cosim {
 
 struct PibtPlannerOptions {
   bool swap = true;
-  int max_steps = 0;  // 0: the number of free cells (as WHCA*'s default here)
+  int max_steps = 0;  // 0: the number of free cells (as WHCA*'s default here), at least 1000
 };
 
 class PibtPlanner final : public MapfPlanner {

@@ -20,7 +20,8 @@ using cosim::test::instanceFrom;
 namespace {
 
 const std::vector<std::string> kPlanners = {
-    "independent_astar", "lra_star", "ca_star", "hca_star", "whca_star", "cbs", "potential_field"};
+    "independent_astar", "lra_star", "ca_star", "hca_star", "whca_star", "cbs", "lacam",
+    "potential_field",   "pibt"};
 
 MapfResult run(const std::string& planner, const MapfInstance& inst,
                const std::vector<std::pair<std::string, std::string>>& params = {},
