@@ -157,7 +157,7 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
       setup.sets = a->sets;
       if (a->window > 0) setup.sets.push_back("window=" + std::to_string(a->window));
       setup.keep_going = a->keep_going;
-      setup.out_dir = prepareOutputDir(a->out, "mapf-benchmark");
+      setup.out = a->out;
       setup.stop = &installInterruptFlag();
       ctx.status = runMapfBenchmark(setup);
       return;

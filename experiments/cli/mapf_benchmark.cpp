@@ -286,6 +286,8 @@ int runMapfBenchmark(const MapfBenchmarkSetup& s) {
       mapfInstanceFromScenario(map, lines[k], n, s.connectivity, s.map, s.scens[k]);
   }
 
+  const std::filesystem::path out_dir = prepareOutputDir(s.out, "mapf-benchmark");
+
   std::size_t total = 0;
   for (const int n : s.counts)
     for (const auto& l : lines) total += n <= static_cast<int>(l.size()) ? s.planners.size() : 0;
@@ -299,7 +301,7 @@ int runMapfBenchmark(const MapfBenchmarkSetup& s) {
           mapfInstanceFromScenario(map, lines[k], n, s.connectivity, s.map, s.scens[k]);
       for (std::size_t p = 0; p < planners.size(); ++p) {
         if (s.stop != nullptr && s.stop->load()) {
-          std::cerr << "cosim: interrupted; " << s.out_dir.string()
+          std::cerr << "cosim: interrupted; " << out_dir.string()
                     << " holds no finished benchmark\n";
           return 1;
         }
@@ -353,8 +355,8 @@ int runMapfBenchmark(const MapfBenchmarkSetup& s) {
   }
 
   const Tally t = tally(rows);
-  writeFileAtomically(s.out_dir / "benchmark.csv", csvOf(s.map, rows));
-  writeFileAtomically(s.out_dir / "success_rate.csv", successRateCsv(s, t));
+  writeFileAtomically(out_dir / "benchmark.csv", csvOf(s.map, rows));
+  writeFileAtomically(out_dir / "success_rate.csv", successRateCsv(s, t));
   std::vector<SuccessRateSeries> series;
   for (const std::string& p : s.planners) {
     SuccessRateSeries& line = series.emplace_back();
@@ -367,10 +369,10 @@ int runMapfBenchmark(const MapfBenchmarkSetup& s) {
                         stem(s.map) + ": solved within " + fixed(s.time_limit_s, 1) + " s (" +
                             std::to_string(s.scens.size()) + " scenario file" +
                             (s.scens.size() == 1 ? ")" : "s)"),
-                        s.out_dir / "success_rate");
+                        out_dir / "success_rate");
   const std::string md = summaryMarkdown(s, rows, t, notes);
-  writeFileAtomically(s.out_dir / "benchmark.md", md);
-  std::cout << md << "\nwritten: " << s.out_dir.string()
+  writeFileAtomically(out_dir / "benchmark.md", md);
+  std::cout << md << "\nwritten: " << out_dir.string()
             << "/benchmark.csv, success_rate.csv, success_rate.png, success_rate.svg, "
                "benchmark.md\n";
   return 0;

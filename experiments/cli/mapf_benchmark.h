@@ -33,7 +33,7 @@ struct MapfBenchmarkSetup {
   // false: as the benchmark is usually run, a planner that fails on a scenario at N agents is
   // not run there at larger counts (recorded as "skipped", not solved).
   bool keep_going = false;
-  std::filesystem::path out_dir;
+  std::string out;  // --out; empty: a new folder under out/ (created after the input checks)
   const std::atomic<bool>* stop = nullptr;
 };
 
