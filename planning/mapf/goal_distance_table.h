@@ -1,13 +1,20 @@
 #pragma once
-// Every agent's true distance to its goal from every vertex (breadth-first search back from the
-// goal; the graph's moves are symmetric): the heuristic PIBT sorts its candidates by and
-// LaCAM*'s h. Computed in full up front rather than lazily as in Okumura's code, so that a lookup
-// in the hot loop is one load and the table is immutable while the search runs. Distances are
-// stored in 16 bits when the graph has fewer than 65535 vertices (every MAPF-benchmark map but
-// the largest): a thousand agents' tables then fit twice as well in the caches, which PIBT's
-// lookups at every agent's neighbours miss otherwise.
+// Every agent's true distance to its goal (breadth-first search back from the goal; the graph's
+// moves are symmetric): the heuristic PIBT sorts its candidates by and LaCAM*'s h. Evaluated
+// lazily, as in the reference implementation (Kei18/lacam2, dist_table.cpp, after Silver's
+// Reverse Resumable A*): an agent's search runs only as far as the vertices asked about, so a
+// thousand agents on a 256 x 256 map explore a fraction of it each (most of the planning time
+// went into full searches). Looking up a vertex already reached is one load.
+//
+// Entries hold distance + 1, 0 for "not reached yet", in 16 bits when every distance fits
+// (fewer than 65535 vertices, or a diameter bound below that: all MAPF-benchmark maps; a
+// thousand tables then fit twice as well in the caches). The memory comes zeroed from the
+// system (calloc), so untouched parts of the tables cost nothing.
 #include <cstdint>
+#include <cstdlib>
+#include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "planning/deadline.h"
@@ -19,32 +26,43 @@ class GoalDistanceTable {
  public:
   static constexpr std::uint32_t kUnreachable = 0xffffffffu;
 
-  // Stops early, leaving complete() false, when the deadline expires.
-  GoalDistanceTable(const MapfGraph& graph, std::span<const int> goals, const Deadline& deadline);
+  GoalDistanceTable(const MapfGraph& graph, std::span<const int> goals);
 
-  bool complete() const { return complete_; }
+  // Logically const: the searches it runs only fill in values that never change.
   std::uint32_t operator()(int agent, int v) const {
     const std::size_t i = static_cast<std::size_t>(agent) * vertices_ + v;
-    if (narrow_)
-      return narrow_distances_[i] == kNarrowUnreachable ? kUnreachable : narrow_distances_[i];
-    return wide_distances_[i];
+    const std::uint32_t e = narrow_ ? narrow_entries_[i] : wide_entries_[i];
+    return e != 0 ? e - 1 : search(agent, v);
   }
-  std::size_t bytes() const {
-    return narrow_distances_.size() * sizeof(std::uint16_t) +
-           wide_distances_.size() * sizeof(std::uint32_t);
-  }
+  std::size_t bytes() const;
 
  private:
-  static constexpr std::uint16_t kNarrowUnreachable = 0xffff;
-  template <typename T>
-  bool fill(std::vector<T>& distances, const MapfGraph& graph, std::span<const int> goals,
-            const Deadline& deadline, T unreachable);
+  struct Free {
+    void operator()(void* p) const { std::free(p); }
+  };
+  // Continues the agent's search until v is reached (its distance) or nothing is left
+  // (kUnreachable).
+  std::uint32_t search(int agent, int v) const;
+  template <typename Entry>
+  std::uint32_t searchIn(Entry* row, int agent, int v) const;
 
-  std::size_t vertices_ = 0;
-  bool narrow_ = false;
-  std::vector<std::uint16_t> narrow_distances_;  // agent-major
-  std::vector<std::uint32_t> wide_distances_;
-  bool complete_ = true;
+  const MapfGraph& graph_;
+  std::size_t vertices_;
+  bool narrow_;
+  std::unique_ptr<std::uint16_t[], Free> narrow_entries_;  // agent-major
+  std::unique_ptr<std::uint32_t[], Free> wide_entries_;
+  // Each agent's search frontier, a ring buffer (capacity a power of two).
+  struct Frontier {
+    std::vector<int> ring;
+    std::size_t head = 0, size = 0;
+  };
+  mutable std::vector<Frontier> frontiers_;
 };
+
+// Looks up every agent's start (which runs most of the searches, on all cores): "" when all
+// goals can be reached, else why not ("goal of agent 3 is unreachable", or "time limit reached"
+// / "stopped" when the deadline ends it first).
+std::string checkGoalsReachable(const GoalDistanceTable& distance, std::span<const int> starts,
+                                const Deadline& deadline);
 
 }  // namespace cosim

@@ -343,20 +343,16 @@ LacamOutcome LacamSearch::run() {
 LacamOutcome searchLacam(const MapfGraph& graph, std::span<const int> starts,
                          std::span<const int> goals, const LacamOptions& options,
                          const Deadline& deadline, std::uint64_t seed) {
-  const GoalDistanceTable distance(graph, goals, deadline);
-  LacamOutcome unfinished;
-  unfinished.distance_table_bytes = distance.bytes();
-  if (!distance.complete()) {
-    unfinished.status = LacamOutcome::Status::kTimeLimit;
-    unfinished.message = deadline.stopRequested() ? "stopped" : "time limit reached";
-    return unfinished;
+  const GoalDistanceTable distance(graph, goals);
+  const std::string unreachable = checkGoalsReachable(distance, starts, deadline);
+  if (!unreachable.empty()) {
+    LacamOutcome out;
+    out.status =
+        deadline.expired() ? LacamOutcome::Status::kTimeLimit : LacamOutcome::Status::kUnreachable;
+    out.message = unreachable;
+    out.distance_table_bytes = distance.bytes();
+    return out;
   }
-  for (std::size_t i = 0; i < starts.size(); ++i)
-    if (distance(static_cast<int>(i), starts[i]) == GoalDistanceTable::kUnreachable) {
-      unfinished.status = LacamOutcome::Status::kUnreachable;
-      unfinished.message = "goal of agent " + std::to_string(i) + " is unreachable";
-      return unfinished;
-    }
   LacamSearch search(graph, starts, goals, options, deadline, seed, distance);
   LacamOutcome out = search.run();
   out.distance_table_bytes = distance.bytes();

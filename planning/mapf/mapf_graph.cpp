@@ -7,6 +7,25 @@
 
 namespace cosim {
 
+namespace {
+
+// The bits of x, y and z interleaved (21 bits each).
+std::uint64_t mortonKey(const Cell& c) {
+  const auto spread = [](std::uint64_t v) {
+    v &= 0x1fffff;
+    v = (v | v << 32) & 0x1f00000000ffffull;
+    v = (v | v << 16) & 0x1f0000ff0000ffull;
+    v = (v | v << 8) & 0x100f00f00f00f00full;
+    v = (v | v << 4) & 0x10c30c30c30c30c3ull;
+    v = (v | v << 2) & 0x1249249249249249ull;
+    return v;
+  };
+  return spread(static_cast<std::uint64_t>(c.x)) | spread(static_cast<std::uint64_t>(c.y)) << 1 |
+         spread(static_cast<std::uint64_t>(c.z)) << 2;
+}
+
+}  // namespace
+
 MapfGraph MapfGraph::fromGrid(const OccupancyGrid& grid, int connectivity) {
   const bool three_d = grid.is3D();
   const bool known = three_d ? (connectivity == 6 || connectivity == 18 || connectivity == 26)
@@ -19,9 +38,16 @@ MapfGraph MapfGraph::fromGrid(const OccupancyGrid& grid, int connectivity) {
   MapfGraph g;
   g.connectivity_ = connectivity;
   g.nx_ = grid.nx(), g.ny_ = grid.ny(), g.nz_ = grid.nz();
+  // Vertices numbered along a Z-order (Morton) curve rather than row by row: cells near each
+  // other in any direction then get nearby numbers, so a breadth-first wave and PIBT's lookups
+  // at a vertex's neighbours touch fewer cache lines of the adjacency and distance tables (the
+  // searches' main cost on large maps). The numbering changes no result.
+  std::vector<std::pair<std::uint64_t, std::size_t>> order;
+  for (std::size_t i = 0; i < grid.cellCount(); ++i)
+    if (!grid.data()[i]) order.emplace_back(mortonKey(grid.cellAt(i)), i);
+  std::sort(order.begin(), order.end());
   g.vertex_of_index_.assign(grid.cellCount(), kNoVertex);
-  for (std::size_t i = 0; i < grid.cellCount(); ++i) {
-    if (grid.data()[i]) continue;
+  for (const auto& [key, i] : order) {
     g.vertex_of_index_[i] = static_cast<int>(g.cells_.size());
     g.cells_.push_back(grid.cellAt(i));
   }

@@ -22,12 +22,9 @@ MapfResult PibtPlanner::solve(const MapfQuery& query) {
     result.time_ms = deadline.elapsedMs();
     return result;
   };
-  const GoalDistanceTable distance(g.graph, g.goals, deadline);
-  if (!distance.complete())
-    return finish(deadline.stopRequested() ? "stopped" : "time limit reached");
-  for (int i = 0; i < n; ++i)
-    if (distance(i, g.starts[i]) == GoalDistanceTable::kUnreachable)
-      return finish("goal of agent " + std::to_string(i) + " is unreachable");
+  const GoalDistanceTable distance(g.graph, g.goals);
+  const std::string unreachable = checkGoalsReachable(distance, g.starts, deadline);
+  if (!unreachable.empty()) return finish(unreachable);
 
   // Priorities as LaCAM's reference code starts them (d_i(start) / N), then PIBT's: +1 per step
   // off the goal, back to the fractional part (a fixed tie-breaker) on it.
