@@ -68,7 +68,9 @@ class LacamSearch {
   std::int64_t f(std::uint32_t id) const { return nodes_[id].g + nodes_[id].h; }
   bool worthSearching(std::uint32_t id) const { return goal_ == kNone || f(id) < nodes_[goal_].g; }
   std::size_t memoryBytes() const;
-  void extractSolution(LacamOutcome& out) const;
+  // The goal's current way back to the start, kept if its sum of costs is not above the best
+  // kept so far (a tie keeps the newer one: its sum of loss is lower).
+  void keepIfBetter();
   long sumOfArrivalTimes() const;
 
   const MapfGraph& graph_;
@@ -97,6 +99,8 @@ class LacamSearch {
   std::vector<int> next_;
   std::vector<FixedMove> fixed_;
   std::vector<std::uint32_t> rewire_queue_;
+  std::vector<std::vector<int>> best_;  // the solution to return (keepIfBetter)
+  long best_sum_of_costs_ = 0;
   std::vector<int> children_;
   LacamOutcome out_;
 };
@@ -199,7 +203,8 @@ void LacamSearch::rewire(std::uint32_t from, std::uint32_t to, std::int64_t cost
   // drops), so only the new edge can improve anything: start from it rather than from all of
   // `from`'s successors, as the reference code does, which costs a scan per rediscovery. A
   // queue is enough: a label-correcting Dijkstra on positive costs.
-  const auto lower = [this](std::uint32_t a, std::uint32_t b, std::int64_t g) {
+  bool goal_improved = false;
+  const auto lower = [this, &goal_improved](std::uint32_t a, std::uint32_t b, std::int64_t g) {
     if (g >= nodes_[b].g) return;
     nodes_[b].g = g;
     nodes_[b].parent = a;
@@ -207,6 +212,7 @@ void LacamSearch::rewire(std::uint32_t from, std::uint32_t to, std::int64_t cost
     if (b == goal_) {
       ++out_.improvements;
       out_.last_improvement_ms = deadline_.elapsedMs();
+      goal_improved = true;
     }
     if (worthSearching(b)) open_.push_back(b);
   };
@@ -217,6 +223,7 @@ void LacamSearch::rewire(std::uint32_t from, std::uint32_t to, std::int64_t cost
     for (std::uint32_t e = nodes_[a].first_edge; e != kNone; e = edge_next_[e])
       lower(a, edge_to_[e], nodes_[a].g + edge_cost_[e]);
   }
+  if (goal_improved) keepIfBetter();
 }
 
 std::size_t LacamSearch::memoryBytes() const {
@@ -227,13 +234,16 @@ std::size_t LacamSearch::memoryBytes() const {
          open_.capacity() * sizeof(std::uint32_t) + edge_set_.bytes();
 }
 
-void LacamSearch::extractSolution(LacamOutcome& out) const {
-  out.configurations.clear();
+void LacamSearch::keepIfBetter() {
+  const long soc = sumOfArrivalTimes();
+  if (!best_.empty() && soc > best_sum_of_costs_) return;
+  best_sum_of_costs_ = soc;
+  best_.clear();
   for (std::uint32_t id = goal_; id != kNone; id = nodes_[id].parent) {
     const auto c = table_[id];
-    out.configurations.emplace_back(c.begin(), c.end());
+    best_.emplace_back(c.begin(), c.end());
   }
-  std::reverse(out.configurations.begin(), out.configurations.end());
+  std::reverse(best_.begin(), best_.end());
 }
 
 long LacamSearch::sumOfArrivalTimes() const {
@@ -281,7 +291,8 @@ LacamOutcome LacamSearch::run() {
       goal_ = top;
       out_.first_solution_ms = deadline_.elapsedMs();
       out_.first_sum_of_loss = nodes_[top].g;
-      out_.first_sum_of_costs = sumOfArrivalTimes();
+      keepIfBetter();
+      out_.first_sum_of_costs = best_sum_of_costs_;
       solved_at = out_.iterations;
       if (!options_.anytime) break;
       continue;  // LaCAM*: keep searching; the goal node itself is discarded next (f = g)
@@ -323,7 +334,7 @@ LacamOutcome LacamSearch::run() {
                        : budget_spent    ? End::kIterations
                        : out_of_memory   ? End::kMemoryLimit
                                          : End::kTimeLimit;
-    extractSolution(out_);
+    out_.configurations = std::move(best_);
   } else if (open_.empty()) {
     out_.status = LacamOutcome::Status::kNoSolution;
     out_.message = "no solution exists (the search space is exhausted)";

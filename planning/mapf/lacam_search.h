@@ -53,13 +53,17 @@ struct LacamOptions {
 struct LacamOutcome {
   enum class Status { kSolved, kNoSolution, kUnreachable, kTimeLimit, kMemoryLimit };
   Status status = Status::kTimeLimit;
-  std::string message;                           // why it failed, empty when solved
-  std::vector<std::vector<int>> configurations;  // solved: start, ..., goals (vertex per agent)
-  bool proven_optimal = false;                   // the search space was exhausted (sum of loss)
+  std::string message;  // why it failed, empty when solved
+  // Solved: start, ..., goals (a vertex per agent). The search minimises the sum of loss; of the
+  // solutions it finds (the first and each improvement) this is the one with the lowest sum of
+  // costs, CONTRACT.md's cost, so the reported cost never rises on the way (the two can move
+  // apart when an agent leaves its goal again).
+  std::vector<std::vector<int>> configurations;
+  bool proven_optimal = false;  // the search space was exhausted (sum of loss)
   // How the anytime phase ended (kNone: not run, anytime off).
   enum class AnytimeEnd { kNone, kOptimal, kIterations, kTimeLimit, kMemoryLimit };
   AnytimeEnd anytime_end = AnytimeEnd::kNone;
-  long first_sum_of_loss = 0, final_sum_of_loss = 0;
+  long first_sum_of_loss = 0, final_sum_of_loss = 0;  // final: the lowest the search reached
   long first_sum_of_costs = 0;  // of the first solution: arrival times (CONTRACT.md's cost)
   double first_solution_ms = 0.0, last_improvement_ms = 0.0;
   long improvements = 0;  // times the goal's cost dropped after the first solution
