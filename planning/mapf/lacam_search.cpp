@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "planning/mapf/configuration_table.h"
+#include "planning/mapf/constraint_trees.h"
 #include "planning/mapf/goal_distance_table.h"
 #include "planning/mapf/id_pair_set.h"
 #include "planning/mapf/pibt_step.h"
@@ -22,8 +23,6 @@ constexpr std::uint32_t kNone = 0xffffffffu;
 struct HighLevelNode {
   std::uint32_t parent;      // on the best known way from the start
   std::uint32_t first_edge;  // successors found from here (list in the edge arrays)
-  std::uint32_t queue_head;  // the constraint nodes still to try, first in first out
-  std::uint32_t queue_tail;
   std::int64_t g, h;
 };
 
@@ -51,11 +50,7 @@ class LacamSearch {
  private:
   std::uint32_t createNode(std::span<const int> c, std::uint64_t hash, std::uint32_t parent,
                            std::int64_t g);
-  std::uint32_t newConstraint(std::uint32_t parent, int agent, int vertex, int depth);
-  void enqueue(std::uint32_t node, std::uint32_t constraint);
-  std::uint32_t dequeue(std::uint32_t node);
   void expandConstraint(std::uint32_t node, std::uint32_t constraint);
-  void collectFixedMoves(std::uint32_t constraint);
   std::int64_t edgeCost(std::span<const int> from, std::span<const int> to) const;
   std::int64_t heuristic(std::span<const int> c) const;
   // Adds the edge unless it is known; returns whether it was new.
@@ -90,9 +85,7 @@ class LacamSearch {
   std::vector<std::uint32_t> edge_to_, edge_next_;
   std::vector<std::int64_t> edge_cost_;
   IdPairSet edge_set_;
-  // Constraint nodes: "agent goes to vertex", chained to their parent up to the empty root.
-  std::vector<std::uint32_t> c_parent_, c_next_;
-  std::vector<int> c_agent_, c_vertex_, c_depth_;
+  ConstraintTrees constraints_;  // the low level
 
   std::vector<std::uint32_t> open_;  // the depth-first stack
   std::uint32_t goal_ = kNone;
@@ -105,36 +98,10 @@ class LacamSearch {
   LacamOutcome out_;
 };
 
-std::uint32_t LacamSearch::newConstraint(std::uint32_t parent, int agent, int vertex, int depth) {
-  c_parent_.push_back(parent);
-  c_next_.push_back(kNone);
-  c_agent_.push_back(agent);
-  c_vertex_.push_back(vertex);
-  c_depth_.push_back(depth);
-  return static_cast<std::uint32_t>(c_parent_.size() - 1);
-}
-
-void LacamSearch::enqueue(std::uint32_t node, std::uint32_t constraint) {
-  HighLevelNode& h = nodes_[node];
-  if (h.queue_tail == kNone)
-    h.queue_head = constraint;
-  else
-    c_next_[h.queue_tail] = constraint;
-  h.queue_tail = constraint;
-}
-
-std::uint32_t LacamSearch::dequeue(std::uint32_t node) {
-  HighLevelNode& h = nodes_[node];
-  const std::uint32_t c = h.queue_head;
-  h.queue_head = c_next_[c];
-  if (h.queue_head == kNone) h.queue_tail = kNone;
-  return c;
-}
-
 std::uint32_t LacamSearch::createNode(std::span<const int> c, std::uint64_t hash,
                                       std::uint32_t parent, std::int64_t g) {
   const std::uint32_t id = table_.insert(c, hash);
-  nodes_.push_back({parent, kNone, kNone, kNone, g, heuristic(c)});
+  nodes_.push_back({parent, kNone, g, heuristic(c)});
   float* p = priorities_.row(priorities_.append());
   if (parent == kNone) {
     // Kei18/lacam2: initial priority d_i(start) / N, so agents far from their goals go first.
@@ -151,12 +118,12 @@ std::uint32_t LacamSearch::createNode(std::span<const int> c, std::uint64_t hash
   // Highest priority first; equal priorities by agent index, so the order is fully determined.
   std::sort(order, order + n_,
             [p](int a, int b) { return p[a] > p[b] || (p[a] == p[b] && a < b); });
-  enqueue(id, newConstraint(kNone, -1, -1, 0));  // the empty constraint: plain PIBT first
+  constraints_.addConfiguration();  // the empty constraint: plain PIBT first
   return id;
 }
 
 void LacamSearch::expandConstraint(std::uint32_t node, std::uint32_t constraint) {
-  const int depth = c_depth_[constraint];
+  const int depth = constraints_.depth(constraint);
   if (depth >= n_) return;
   const int agent = orders_.row(node)[depth];
   const int v = table_[node][agent];
@@ -165,14 +132,7 @@ void LacamSearch::expandConstraint(std::uint32_t node, std::uint32_t constraint)
   // Random order of the children (Kei18/lacam2 shuffles them too), Fisher-Yates.
   for (std::size_t k = children_.size(); k > 1; --k)
     std::swap(children_[k - 1], children_[rng_.below(static_cast<std::uint32_t>(k))]);
-  for (const int u : children_) enqueue(node, newConstraint(constraint, agent, u, depth + 1));
-}
-
-void LacamSearch::collectFixedMoves(std::uint32_t constraint) {
-  fixed_.clear();
-  for (std::uint32_t c = constraint; c != kNone && c_depth_[c] > 0; c = c_parent_[c])
-    fixed_.push_back({c_agent_[c], c_vertex_[c]});
-  std::reverse(fixed_.begin(), fixed_.end());  // in the order they were added
+  constraints_.expand(node, constraint, agent, children_);
 }
 
 std::int64_t LacamSearch::edgeCost(std::span<const int> from, std::span<const int> to) const {
@@ -230,8 +190,7 @@ std::size_t LacamSearch::memoryBytes() const {
   return table_.bytes() + priorities_.bytes() + orders_.bytes() +
          nodes_.capacity() * sizeof(HighLevelNode) +
          edge_to_.capacity() * (2 * sizeof(std::uint32_t) + sizeof(std::int64_t)) +
-         c_parent_.capacity() * (2 * sizeof(std::uint32_t) + 3 * sizeof(int)) +
-         open_.capacity() * sizeof(std::uint32_t) + edge_set_.bytes();
+         constraints_.bytes() + open_.capacity() * sizeof(std::uint32_t) + edge_set_.bytes();
 }
 
 void LacamSearch::keepIfBetter() {
@@ -283,7 +242,7 @@ LacamOutcome LacamSearch::run() {
     }
     ++out_.iterations;
     const std::uint32_t top = open_.back();
-    if (nodes_[top].queue_head == kNone || !worthSearching(top)) {
+    if (constraints_.exhausted(top) || !worthSearching(top)) {
       open_.pop_back();  // every constraint tried, or it cannot lead to a better solution
       continue;
     }
@@ -297,9 +256,9 @@ LacamOutcome LacamSearch::run() {
       if (!options_.anytime) break;
       continue;  // LaCAM*: keep searching; the goal node itself is discarded next (f = g)
     }
-    const std::uint32_t constraint = dequeue(top);
+    const std::uint32_t constraint = constraints_.take(top);
     expandConstraint(top, constraint);
-    collectFixedMoves(constraint);
+    constraints_.fixedMoves(constraint, fixed_);
     const std::span<const int> from = table_[top];
     if (!pibt_.next(from, {orders_.row(top), static_cast<std::size_t>(n_)}, fixed_, rng_, next_)) {
       ++out_.generator_failures;
