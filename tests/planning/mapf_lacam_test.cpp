@@ -203,7 +203,7 @@ TEST(Lacam, PlansOnThreeDimensionalGrids) {
   }
   crowd.connectivity = 6;
   checkMapfInstance(crowd, "test");
-  expectValid(crowd, run("lacam", crowd), "crowded two storeys");
+  expectValid(crowd, run("lacam", crowd, {{"refine_iterations", "20000"}}), "crowded two storeys");
 }
 
 TEST(MapfGraph, MovesAndConflictKeysOfTwoAndThreeDimensionalGrids) {
