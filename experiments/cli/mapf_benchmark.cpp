@@ -265,15 +265,21 @@ int runMapfBenchmark(const MapfBenchmarkSetup& s) {
     map.setBlocked(c, true);
   }
   std::vector<std::vector<MovingAIScenarioLine>> lines;
-  std::vector<std::string> notes;
+  std::map<int, std::vector<std::string>> short_files;  // agents -> files with that few
   int largest = 0;
   for (const std::string& f : s.scens) {
     lines.push_back(readMovingAIScenario(f));
     const int n = static_cast<int>(lines.back().size());
     largest = std::max(largest, n);
-    if (n < s.counts.back())
-      notes.push_back(stem(f) + " has " + std::to_string(n) +
-                      " agents: larger counts were not run on it.");
+    if (n < s.counts.back()) short_files[n].push_back(stem(f));
+  }
+  std::vector<std::string> notes;
+  for (const auto& [n, files] : short_files) {
+    std::string names;
+    for (const auto& f : files) names += (names.empty() ? "" : ", ") + f;
+    notes.push_back(names + (files.size() == 1 ? " has " : " have ") + std::to_string(n) +
+                    " agents: larger counts were not run on " +
+                    (files.size() == 1 ? "it." : "them."));
   }
   if (largest < s.counts.front())
     throw InputError(s.scens.front(), "",
