@@ -1,7 +1,8 @@
 // cosim mapf MAP.map SCEN.scen --agents N --planner NAME: multi-agent path finding on a MovingAI
 // map with the first N agents of a scenario (seed 004). Writes DIR/mapf.json and DIR/paths.csv;
 // every plan is checked by the independent SolutionValidator. Exit 0: a conflict-free solution;
-// 1: planning failed (no solution, time or step limit); 2: bad input.
+// 1: planning failed (no solution, time or step limit) or interrupted; 2: bad input. With a count
+// range, a planner list or several scenario files it is a benchmark (mapf_benchmark.h).
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -11,6 +12,7 @@
 #include "experiments/cli/command.h"
 #include "experiments/cli/ground_run_pipeline.h"
 #include "experiments/cli/interrupt_flag.h"
+#include "experiments/cli/mapf_benchmark.h"
 #include "experiments/cli/mapf_execution.h"
 #include "experiments/cli/output_files.h"
 #include "experiments/cli/run_pipeline.h"
@@ -42,6 +44,21 @@ Cell parseCell(const std::string& text) {
   throw InputError("command line", "--block " + text, "expected X,Y (column,row)");
 }
 
+// "a,b,c" -> {"a", "b", "c"}; empty names are bad input.
+std::vector<std::string> splitPlannerList(const std::string& text) {
+  std::vector<std::string> names;
+  std::size_t from = 0;
+  for (;;) {
+    const auto comma = text.find(',', from);
+    const std::string name = text.substr(from, comma == std::string::npos ? comma : comma - from);
+    if (name.empty())
+      throw InputError("command line", "--planner " + text, "empty planner name in the list");
+    names.push_back(name);
+    if (comma == std::string::npos) return names;
+    from = comma + 1;
+  }
+}
+
 std::string pathsCsv(const std::vector<MapfPath>& paths) {
   std::string csv = "agent,t,x,y\n";
   for (std::size_t a = 0; a < paths.size(); ++a)
@@ -60,16 +77,21 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
       "together without collisions (a cell holds one robot; no swaps; 8-connected: diagonal only\n"
       "past free side cells, no crossing diagonals). Cost of an agent = its arrival time; every\n"
       "move, diagonal too, and every wait takes one step. Planners: independent_astar, lra_star,\n"
-      "ca_star, hca_star, whca_star, cbs, potential_field. Writes DIR/mapf.json, DIR/paths.csv\n"
-      "(agent,t,x,y). With --execute, ground robots then drive the plan in MuJoCo (one robot per\n"
+      "ca_star, hca_star, whca_star, cbs, potential_field, lacam, pibt. Writes DIR/mapf.json,\n"
+      "DIR/paths.csv (agent,t,x,y). A benchmark (--agents START:STOP:STEP, several planners\n"
+      "A,B,... or several scenario files) runs every planner at every count and writes\n"
+      "DIR/benchmark.csv, DIR/success_rate.csv + .png/.svg and DIR/benchmark.md.\n"
+      "With --execute, ground robots then drive the plan in MuJoCo (one robot per\n"
       "agent on cells of --cell metres; the map's blocked cells stand as boxes) and "
       "DIR/execution/\n"
       "holds that run's files (scenario.yaml, metrics.json with robot_contacts, arrival times and\n"
       "plan-vs-executed deviation, final.png). Exit 1 if planning (or the execution) fails, 2 on\n"
       "bad input.");
   struct Args {
-    std::string map, scen, planner, out;
-    int agents = 0, window = 0, connectivity = 4;
+    std::string map, planner, out, agents;
+    std::vector<std::string> scens;
+    int window = 0, connectivity = 4;
+    bool keep_going = false;
     double time_limit = 60.0;
     bool execute = false, video = false;
     std::string robot = "omni_base";
@@ -79,19 +101,28 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("map", a->map, "MovingAI .map file")->required();
-  cmd->add_option("scen", a->scen, "MovingAI .scen file; its first N lines are the agents")
+  cmd->add_option("scen", a->scens,
+                  "MovingAI .scen file(s); the first N lines of one are the agents (several: a "
+                  "benchmark over the family)")
       ->required();
-  cmd->add_option("--agents", a->agents, "number of agents N")
-      ->required()
-      ->check(CLI::PositiveNumber);
-  cmd->add_option("--planner", a->planner, "multi-robot planner name")->required();
+  cmd->add_option("--agents", a->agents,
+                  "number of agents N, or a benchmark range START:STOP:STEP (e.g. 10:1000:10)")
+      ->required();
+  cmd->add_option("--planner", a->planner,
+                  "multi-robot planner name, or a comma-separated list for a benchmark "
+                  "(e.g. lacam,pibt,whca_star,cbs)")
+      ->required();
+  cmd->add_flag("--keep-going", a->keep_going,
+                "benchmark: run a planner at larger counts even after it failed on a scenario");
   cmd->add_option("--window", a->window, "WHCA* window (time steps); same as --set window=W")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--out", a->out, "output folder (default: a new folder under out/)");
-  cmd->add_option("--set", a->sets, "planner parameter, e.g. --set priorities=fixed (repeatable)");
+  cmd->add_option("--set", a->sets,
+                  "planner parameter, e.g. --set priorities=fixed (repeatable); in a benchmark "
+                  "PLANNER.key=value sets it for that planner only (--set lacam.anytime=false)");
   cmd->add_option("--connectivity", a->connectivity, "4 (default, standard MAPF) or 8")
       ->check(CLI::IsMember({4, 8}));
-  cmd->add_option("--time-limit", a->time_limit, "seconds (default 60)")
+  cmd->add_option("--time-limit", a->time_limit, "seconds per planner run (default 60)")
       ->check(CLI::Range(0.001, 86400.0));
   cmd->add_option("--seed", a->seed, "random seed (LRA* noise)");
   cmd->add_option("--block", a->blocks, "extra obstacle cell X,Y (column,row; repeatable)");
@@ -108,18 +139,43 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::Range(1.0, 86400.0));
   cmd->add_flag("--video", a->video, "--execute: also render DIR/execution/video.mp4");
   cmd->callback([a, &ctx] {
+    const std::vector<int> counts = parseAgentCounts(a->agents);
+    const std::vector<std::string> planners = splitPlannerList(a->planner);
+    if (counts.size() > 1 || planners.size() > 1 || a->scens.size() > 1) {
+      if (a->execute)
+        throw InputError("command line", "--execute",
+                         "drives one plan: give one planner, one scenario and one agent count");
+      MapfBenchmarkSetup setup;
+      setup.map = a->map;
+      setup.scens = a->scens;
+      setup.planners = planners;
+      setup.counts = counts;
+      for (const std::string& b : a->blocks) setup.extra_blocked.push_back(parseCell(b));
+      setup.connectivity = a->connectivity;
+      setup.time_limit_s = a->time_limit;
+      setup.seed = a->seed;
+      setup.sets = a->sets;
+      if (a->window > 0) setup.sets.push_back("window=" + std::to_string(a->window));
+      setup.keep_going = a->keep_going;
+      setup.out = a->out;
+      setup.stop = &installInterruptFlag();
+      ctx.status = runMapfBenchmark(setup);
+      return;
+    }
+    const std::string scen = a->scens.front();
+    const int agents = counts.front();
     ParamSet params("command line");
     applySetOptions(a->sets, params);
     if (a->window > 0) params.set("window", std::to_string(a->window), "--window");
     auto planner = makeMapfPlanner(a->planner, params);
 
-    MapfInstance inst = readMovingAIMapfInstance(a->map, a->scen, a->agents, a->connectivity);
+    MapfInstance inst = readMovingAIMapfInstance(a->map, scen, agents, a->connectivity);
     for (const std::string& b : a->blocks) {
       const Cell c = parseCell(b);
       if (!inst.grid.inside(c)) throw InputError("command line", "--block " + b, "off the map");
       inst.grid.setBlocked(c, true);
     }
-    checkMapfInstance(inst, a->blocks.empty() ? a->scen : "--block");
+    checkMapfInstance(inst, a->blocks.empty() ? scen : "--block");
 
     // The execution's scenario, checked before planning: a robot model that does not load or
     // does not fit the cells is bad input found at once, not after a plan has been written.
@@ -152,7 +208,13 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
     query.instance = &inst;
     query.time_limit_s = a->time_limit;
     query.seed = a->seed;
+    query.stop = &installInterruptFlag();
     const MapfResult result = planner->solve(query);
+    if (query.stop->load()) {
+      std::cerr << "cosim: interrupted; nothing was written\n";
+      ctx.status = 1;
+      return;
+    }
     // Nothing returned (e.g. an unreachable goal) has nothing to check.
     const MapfValidation check =
         result.paths.empty() ? MapfValidation{} : validateMapfSolution(inst, result.paths);
@@ -177,7 +239,7 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
         .add("params", params.effective())
         .add("connectivity", inst.connectivity)
         .add("map", a->map)
-        .add("scen", a->scen)
+        .add("scen", scen)
         .add("cost_convention",
              "sum of arrival times; every move (diagonal too) and every wait costs one step")
         .add("counters", result.counters)

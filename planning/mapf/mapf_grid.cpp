@@ -10,9 +10,10 @@ namespace cosim {
 
 MapfGrid::MapfGrid(const OccupancyGrid& grid, int connectivity)
     : nx_(grid.nx()), ny_(grid.ny()), connectivity_(connectivity) {
+  if (grid.is3D())
+    throw InputError("", "map", "this planner needs a 2D map (lacam and pibt plan on 3D grids)");
   if (connectivity != 4 && connectivity != 8)
     throw InputError("", "connectivity", "MAPF grids are 4- or 8-connected");
-  if (grid.is3D()) throw InputError("", "map", "MAPF needs a 2D map");
   const GridMoves rules{connectivity, /*corner_cutting=*/false};
   const auto steps = gridSteps(rules, false);
   free_.resize(cellCount());

@@ -1,7 +1,8 @@
 #pragma once
 // The interface of every multi-agent planner (names in CONTRACT.md: independent_astar, lra_star,
-// ca_star, hca_star, whca_star, cbs, potential_field). A planner sees only the instance, a time
-// limit and a seed; its result is checked by the independent SolutionValidator.
+// ca_star, hca_star, whca_star, cbs, potential_field, lacam, pibt). A planner sees only the
+// instance, a time limit (with an optional stop flag) and a seed; its result is checked by the
+// independent SolutionValidator.
 #include <string>
 
 #include "planning/mapf/mapf_problem.h"

@@ -4,7 +4,9 @@
 #include "planning/mapf/conflict_based_search.h"
 #include "planning/mapf/cooperative_astar.h"
 #include "planning/mapf/independent_astar.h"
+#include "planning/mapf/lacam_planner.h"
 #include "planning/mapf/local_repair_astar.h"
+#include "planning/mapf/pibt_planner.h"
 #include "planning/mapf/potential_field.h"
 #include "planning/mapf/windowed_hca_star.h"
 
@@ -62,6 +64,24 @@ const std::vector<MapfPlannerEntry>& mapfPlanners() {
          o.max_expansions = p.getInt("max_expansions", static_cast<int>(o.max_expansions), 1);
          o.bypass = p.getBool("bypass", o.bypass);
          return std::make_unique<ConflictBasedSearch>(o);
+       }},
+      {"lacam", "LaCAM*: complete, anytime, eventually optimal; thousands of agents (Okumura 2023)",
+       [](ParamSet& p) -> std::unique_ptr<MapfPlanner> {
+         LacamOptions o;
+         o.anytime = p.getBool("anytime", o.anytime);
+         o.refine_iterations = p.getInt("refine_iterations", 0, 0);
+         o.swap = p.getBool("swap", o.swap);
+         o.restart_rate = p.getDouble("restart_rate", o.restart_rate, 0.0, 1.0);
+         o.max_memory_bytes = static_cast<std::size_t>(p.getInt("max_memory_mb", 1024, 16, 1 << 20))
+                              << 20;
+         return std::make_unique<LacamPlanner>(o);
+       }},
+      {"pibt", "PIBT: priority inheritance with backtracking, step by step (Okumura et al. 2022)",
+       [](ParamSet& p) -> std::unique_ptr<MapfPlanner> {
+         PibtPlannerOptions o;
+         o.swap = p.getBool("swap", o.swap);
+         o.max_steps = p.getInt("max_steps", o.max_steps, 0);
+         return std::make_unique<PibtPlanner>(o);
        }},
       {"potential_field", "artificial potential field, step by step (baseline; local minima)",
        [](ParamSet& p) -> std::unique_ptr<MapfPlanner> {

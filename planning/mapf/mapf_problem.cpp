@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <set>
+#include <tuple>
 #include <utility>
 
 #include "planning/input_error.h"
@@ -32,21 +33,23 @@ void trimWaitsAtEnd(MapfPath& path) {
 }
 
 void checkMapfInstance(const MapfInstance& instance, const std::string& file) {
-  if (instance.connectivity != 4 && instance.connectivity != 8)
+  const int c = instance.connectivity;
+  if (instance.grid.is3D() && c != 6 && c != 18 && c != 26)
+    throw InputError(file, "connectivity", "must be 6, 18 or 26 on a 3D grid");
+  if (!instance.grid.is3D() && c != 4 && c != 8)
     throw InputError(file, "connectivity", "must be 4 or 8");
-  if (instance.grid.is3D()) throw InputError(file, "map", "MAPF needs a 2D map");
   if (instance.starts.size() != instance.goals.size())
     throw InputError(file, "agents", "as many goals as starts are needed");
-  std::set<std::pair<int, int>> starts, goals;
+  std::set<std::tuple<int, int, int>> starts, goals;
   for (int i = 0; i < instance.agentCount(); ++i) {
     const std::string where = "agent " + std::to_string(i);
     const Cell& s = instance.starts[i];
     const Cell& g = instance.goals[i];
     if (instance.grid.blocked(s)) throw InputError(file, where, "start is blocked or off the map");
     if (instance.grid.blocked(g)) throw InputError(file, where, "goal is blocked or off the map");
-    if (!starts.insert({s.x, s.y}).second)
+    if (!starts.insert({s.x, s.y, s.z}).second)
       throw InputError(file, where, "start is shared with an earlier agent");
-    if (!goals.insert({g.x, g.y}).second)
+    if (!goals.insert({g.x, g.y, g.z}).second)
       throw InputError(file, where, "goal is shared with an earlier agent (seed 004 §1.2)");
   }
 }

@@ -9,6 +9,7 @@
 // - paths[i][t] is agent i's cell at time t, from its start at t = 0 to its arrival; after the
 //   last entry the agent stays at its goal for ever (it keeps occupying that cell);
 // - an agent's cost is its arrival time (path length - 1); sum of costs and makespan follow.
+#include <atomic>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -19,8 +20,10 @@
 namespace cosim {
 
 struct MapfInstance {
-  OccupancyGrid grid;    // 2D; blocked cells are static obstacles
-  int connectivity = 4;  // 4 or 8 (8: diagonal only when both side cells are free, seed 004 §4.2)
+  OccupancyGrid grid;  // blocked cells are static obstacles; 3D grids only for lacam and pibt
+  // 2D: 4 or 8 (8: diagonal only when both side cells are free, seed 004 §4.2); 3D: 6, 18 or 26
+  // (a move off one axis needs every cell of the box it spans free).
+  int connectivity = 4;
   std::vector<Cell> starts, goals;
   int agentCount() const { return static_cast<int>(starts.size()); }
 };
@@ -29,6 +32,8 @@ struct MapfQuery {
   const MapfInstance* instance = nullptr;
   double time_limit_s = 10.0;
   std::uint64_t seed = 1;
+  // An external stop request (e.g. set by a SIGINT handler), polled like the time limit.
+  const std::atomic<bool>* stop = nullptr;
 };
 
 using MapfPath = std::vector<Cell>;
@@ -53,7 +58,7 @@ int makespan(const std::vector<MapfPath>& paths);
 void trimWaitsAtEnd(MapfPath& path);
 
 // Throws InputError if a start or goal is off the grid or blocked, two agents share a start or a
-// goal, or the connectivity is not 4 or 8. `file` names the source for the message.
+// goal, or the connectivity is not one of the grid's. `file` names the source for the message.
 void checkMapfInstance(const MapfInstance& instance, const std::string& file);
 
 }  // namespace cosim

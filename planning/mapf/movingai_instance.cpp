@@ -1,16 +1,23 @@
 #include "planning/mapf/movingai_instance.h"
 
-#include "planning/grid/movingai.h"
 #include "planning/input_error.h"
 
 namespace cosim {
 
 MapfInstance readMovingAIMapfInstance(const std::string& map_path, const std::string& scen_path,
                                       int agents, int connectivity) {
+  const OccupancyGrid map = readMovingAIMap(map_path);
+  return mapfInstanceFromScenario(map, readMovingAIScenario(scen_path), agents, connectivity,
+                                  map_path, scen_path);
+}
+
+MapfInstance mapfInstanceFromScenario(const OccupancyGrid& map,
+                                      const std::vector<MovingAIScenarioLine>& lines, int agents,
+                                      int connectivity, const std::string& map_path,
+                                      const std::string& scen_path) {
   MapfInstance inst;
-  inst.grid = readMovingAIMap(map_path);
+  inst.grid = map;
   inst.connectivity = connectivity;
-  const auto lines = readMovingAIScenario(scen_path);
   if (agents < 1) throw InputError("command line", "--agents", "must be at least 1");
   if (agents > static_cast<int>(lines.size()))
     throw InputError(scen_path, "",

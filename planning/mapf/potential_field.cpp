@@ -40,7 +40,7 @@ std::vector<double> obstaclePotential(const OccupancyGrid& grid, double radius) 
 }  // namespace
 
 MapfResult PotentialField::solve(const MapfQuery& query) {
-  const Deadline deadline(query.time_limit_s);
+  const Deadline deadline(query.time_limit_s, query.stop);
   const MapfInstance& inst = *query.instance;
   const MapfGrid grid(inst.grid, inst.connectivity);
   const int n = inst.agentCount();

@@ -4,11 +4,14 @@
 // - every path starts at its agent's start and ends at its goal, where the agent then stays
 //   (it occupies the goal at every later time);
 // - every step waits or moves to an adjacent free cell; 4-connected: no diagonal steps;
-//   8-connected: a diagonal step needs both side cells free of obstacles;
+//   8-connected: a diagonal step needs both side cells free of obstacles; on 3D grids 6-, 18-
+//   and 26-connected steps change one, up to two or up to three coordinates, and a step off one
+//   axis needs every other cell of the box it spans free;
 // - vertex conflict: two agents in one cell at the same time (a cell holds one robot);
 // - swap conflict: two agents exchange cells in one step;
-// - crossing-diagonal conflict (8-connected): two agents move diagonally across the same 2x2
-//   block in one step, so both pass its centre at the half step. Our decision: seed 004 forbids
+// - crossing-diagonal conflict (8-connected; on 3D grids also across a 2x2x2 cube): two agents
+//   move diagonally across the same 2x2 block in one step, so both pass its centre at the half
+//   step. Our decision: seed 004 forbids
 //   it implicitly, since its robots are bodies filling a cell (it forbids a diagonal past a wall
 //   corner for the same reason). Swaps and crossings are exactly the cases where two agents moving
 //   at constant speed are at the same point at t + 1/2, which is how they are detected here.

@@ -256,6 +256,13 @@ std::vector<BadInput> badInputs() {
        "expected 9 fields"},
       {"mapf_too_many_agents", "mapf {in} {in2} --agents 100 --planner cbs --out {out}", map8,
        scen8, 2, "fewer than the 100 agents"},
+      {"mapf_range_backwards", "mapf {in} {in2} --agents 10:5:1 --planner lacam --out {out}", map8,
+       scen8, 2, "--agents 10:5:1: STOP is below START"},
+      {"mapf_range_not_numbers", "mapf {in} {in2} --agents 1:x:2 --planner lacam --out {out}", map8,
+       scen8, 2, "expected N or START:STOP:STEP"},
+      {"mapf_benchmark_unknown_planner",
+       "mapf {in} {in2} --agents 1:3:1 --planner lacam,teleport --out {out}", map8, scen8, 2,
+       "unknown multi-robot planner 'teleport'"},
   };
 }
 

@@ -58,6 +58,25 @@ TEST(GroundTeamRun, TenRobotsOnValidCbsPlanHaveNoRobotContacts) {
   EXPECT_LT(test::jsonNumber(metrics, "max_error_m"), 0.1);
 }
 
+// The same team planned by LaCAM*, through the command line as a user runs it.
+TEST(GroundTeamRun, CosimRunDrivesALacamPlanWithoutRobotContacts) {
+  const auto dir = test::freshDir("ground-team-lacam");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "team.yaml") << teamScenario("lacam");
+  const auto r = test::runCosim("run " + (dir / "team.yaml").string() + " --no-video --out " +
+                                (dir / "run").string());
+  EXPECT_EQ(r.status, 0) << r.err;
+  const std::string metrics = test::slurp(dir / "run" / "metrics.json");
+  EXPECT_NE(metrics.find("\"planner\": \"lacam\""), std::string::npos);
+  EXPECT_EQ(test::jsonNumber(metrics, "robots"), 10);
+  EXPECT_EQ(test::jsonNumber(metrics, "robot_contacts"), 0);
+  EXPECT_EQ(test::jsonNumber(metrics, "collisions"), 0);
+  EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal"));
+  EXPECT_EQ(test::jsonNumber(metrics, "conflicts"), 0);  // planner_counters: the validator's
+  EXPECT_GT(test::jsonNumber(metrics, "first_solution_ms"), 0.0);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(GroundTeamRun, IndependentPathsThroughEachOtherMakeRobotContacts) {
   // Straight across, each robot's own shortest path: the rows meet head-on in the middle.
   std::string metrics;

@@ -1,7 +1,9 @@
 // End-to-end tests of `cosim mapf` and the seed-004 reproductions / bench section (quick modes).
 #include <gtest/gtest.h>
 
+#include <map>
 #include <sstream>
+#include <vector>
 
 #include "cli_test_support.h"
 #include "experiments/bench/mapf_planners.h"
@@ -108,9 +110,9 @@ TEST(MapfCommand, ExecuteDrivesTheCbsPlanWithRobotsInPhysicsWithoutContacts) {
   const auto dir = test::freshDir("mapf-execute");
   const std::string map = COSIM_TEST_DATA_DIR "/mapf/empty-8-8.map";
   const std::string scen = COSIM_TEST_DATA_DIR "/mapf/empty-8-8-random-1.scen";
-  const auto r = runCosim("mapf " + map + " " + scen +
-                          " --agents 6 --planner cbs --block 3,3 --block 4,3 --execute --out " +
-                          dir.string());
+  const auto r =
+      runCosim("mapf " + map + " " + scen +
+               " --agents 6 --planner cbs --block 3,3 --block 4,3 --execute --out " + dir.string());
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string planned = test::slurp(dir / "mapf.json");
   const std::string run = test::slurp(dir / "execution" / "metrics.json");
@@ -145,4 +147,78 @@ TEST(MapfCommand, ExecuteRefusesCellsTooSmallForTheRobotBeforePlanning) {
   // omni_base (radius 0.15 m) plus the 0.05 m margin needs 0.2 / (sqrt(2) / 4) = 0.566 m cells.
   EXPECT_NE(r.err.find("need cells of at least 0.565685 m"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(dir));
+}
+
+// The benchmark form: every planner at every count; one CSV row per planner and count, the
+// success-rate figure and the summary with the published LaCAM* figures beside ours.
+TEST(MapfCommand, AgentRangeRunsEveryPlannerAtEveryCountAndWritesCsvFigureAndSummary) {
+  const auto dir = test::freshDir("mapf-benchmark");
+  const std::string map = COSIM_TEST_DATA_DIR "/mapf/empty-8-8.map";
+  const std::string scen = COSIM_TEST_DATA_DIR "/mapf/empty-8-8-random-1.scen";
+  const auto r =
+      runCosim("mapf " + map + " " + scen +
+               " --agents 4:12:4 --planner lacam,pibt,cbs --time-limit 5 --out " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string csv = test::slurp(dir / "benchmark.csv");
+  EXPECT_EQ(csv.rfind("map,scen,planner,agents,status,success,sum_of_costs,makespan,time_ms,"
+                      "first_solution_ms,first_cost,final_cost,conflicts,message\n",
+                      0),
+            0u);
+  std::istringstream rows(csv);
+  std::string line;
+  std::getline(rows, line);
+  int n = 0, lacam_solved = 0;
+  std::map<int, long> cbs_soc, lacam_soc;
+  while (std::getline(rows, line)) {
+    ++n;
+    std::vector<std::string> f;
+    std::istringstream fields(line);
+    for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
+    ASSERT_GE(f.size(), 13u) << line;
+    const int agents = std::stoi(f[3]);
+    EXPECT_EQ(f[12], "0") << line;  // no conflicts in anything returned
+    if (f[2] == "cbs" && f[5] == "1") cbs_soc[agents] = std::stol(f[6]);
+    if (f[2] == "lacam") {
+      ASSERT_EQ(f[5], "1") << line;
+      ++lacam_solved;
+      lacam_soc[agents] = std::stol(f[6]);
+      // First and final cost of the anytime search; the final one is the reported SOC.
+      EXPECT_GE(std::stol(f[10]), std::stol(f[11])) << line;
+      EXPECT_EQ(f[11], f[6]) << line;
+    }
+  }
+  EXPECT_EQ(n, 9);  // 3 planners x 3 counts
+  EXPECT_EQ(lacam_solved, 3);
+  for (const auto& [agents, soc] : cbs_soc) EXPECT_LE(soc, lacam_soc.at(agents)) << agents;
+  EXPECT_TRUE(std::filesystem::file_size(dir / "success_rate.png") > 1000);
+  EXPECT_TRUE(std::filesystem::exists(dir / "success_rate.svg"));
+  EXPECT_NE(test::slurp(dir / "success_rate.csv").find("lacam,12,1,1,100.0"), std::string::npos);
+  const std::string md = test::slurp(dir / "benchmark.md");
+  EXPECT_NE(md.find("## Published: LaCAM* (Okumura, IJCAI 2023, Fig. 1)"), std::string::npos);
+  EXPECT_NE(md.find("`empty-8-8` is one of those 33 maps"), std::string::npos);
+  EXPECT_NE(md.find("| 12 | 100 | 100 |"), std::string::npos) << md;
+  // Progress on stderr, one line per run.
+  EXPECT_NE(r.err.find("[9/9] cbs, 12 agents"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(MapfCommand, BadAgentRangesAndBenchmarkOptionsAreExitTwo) {
+  const auto dir = test::freshDir("mapf-benchmark-bad");
+  const std::string base = "mapf " + kMap + " " + kScen + " --out " + dir.string();
+  for (const std::string bad :
+       {"--agents 10:5:1 --planner lacam", "--agents 1:x:2 --planner lacam",
+        "--agents 0:10:2 --planner lacam", "--agents 2:10 --planner lacam",
+        "--agents 2:10:2 --planner lacam,teleport", "--agents 2:10:2 --planner lacam,,cbs",
+        "--agents 2:10:2 --planner lacam --execute",
+        "--agents 2:10:2 --planner lacam,cbs --set astar.x=1",
+        "--agents 2:10:2 --planner lacam,cbs --set anytime=false"}) {
+    const auto r = runCosim(base + " " + bad);
+    EXPECT_EQ(r.status, 2) << bad << ": " << r.err;
+    EXPECT_NE(r.err.find("cosim: "), std::string::npos) << bad;
+    EXPECT_FALSE(std::filesystem::exists(dir)) << bad;  // nothing created
+  }
+  // A planner-only parameter is fine.
+  EXPECT_EQ(runCosim(base + " --agents 2:4:2 --planner lacam,cbs --set lacam.anytime=false").status,
+            0);
+  std::filesystem::remove_all(dir);
 }
