@@ -20,7 +20,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   tinyxml2::XMLElement* root = doc.NewElement("mujoco");
   doc.InsertEndChild(root);
   tinyxml2::XMLElement* worldbody = root->InsertNewChildElement("worldbody");
-  tinyxml2::XMLElement* actuator = root->InsertNewChildElement("actuator");
   cosim::VehicleSpec vehicle;
   vehicle.name = "robot";
   vehicle.model = file.string();
@@ -28,7 +27,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   vehicle.ground = true;
   vehicle.waypoints.push_back({1.0, 1.0, 0.0});
   try {
-    cosim::addUrdfVehicle(doc, worldbody, actuator, vehicle, 0.0);
+    cosim::addUrdfVehicle(doc, worldbody, vehicle, 0.0);
     tinyxml2::XMLPrinter printer;
     doc.Print(&printer);
   } catch (const cosim::InputError&) {
