@@ -47,7 +47,23 @@ std::string seed000Number(double v, int decimals) {
 }
 
 std::string seed000Table(const std::string& title, const std::string& swept,
-                         const std::vector<Seed000Column>& columns, double optimum) {
+                         const std::vector<Seed000Column>& columns, double optimum,
+                         std::vector<JsonObject>& rows) {
+  for (const Seed000Column& c : columns) {
+    JsonObject row;
+    row.add("table", title)
+        .add(swept, c.label)
+        .add("optimum", optimum)
+        .add("seed_time_s", c.seed_time_s)
+        .add("seed_mean_length", c.seed_mean)
+        .add("seed_min_length", c.seed_min)
+        .add("runs", c.ours.runs)
+        .add("failures", c.ours.failures)
+        .add("mean_time_ms", c.ours.mean_ms)
+        .add("mean_length", c.ours.mean_length)
+        .add("min_length", c.ours.min_length);
+    rows.push_back(row);
+  }
   std::ostringstream out;
   out << "### " << title << "\n\nOptimum of our scene (A*): " << seed000Number(optimum, 2)
       << ". Seed: MATLAB on an i3 330M; ours: C++, this machine.\n\n| " << swept << " |";
