@@ -412,9 +412,9 @@ Report seed003Sampling(const Options& options) {
      << "- Karaman-Frazzoli's RRT* is shorter than the thesis's in " << kf_shorter << " of "
      << findings.size()
      << " tables: the thesis's RRT* offers each new node one candidate parent (its nearest "
-        "node's parent), so its paths keep more of RRT's detours. This is why an earlier "
-        "version of this reproduction, which ran only Karaman-Frazzoli's, had RRT/RRT* ratios "
-        "well above the thesis's.\n"
+        "node's parent), so its paths keep more of RRT's detours. An earlier version of "
+        "this reproduction ran only Karaman-Frazzoli's, which made the RRT / RRT* ratios larger "
+        "still; the thesis's RRT* closes only part of the gap to the thesis's ratios.\n"
      << "- The thesis's largest RRT*FN effect (map 2 set 1, cap 400 at 41 % of RRT*'s time) "
         "does not appear, even where the cap binds: removing the childless node farthest from "
         "the goal does not make the tree reach the goal sooner here (uniform samples in the "
