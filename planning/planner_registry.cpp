@@ -36,7 +36,12 @@ void PlannerRegistry::addGridPlanner(const std::string& name, const std::string&
   e.make_grid = make_grid;
   e.make = [make_grid](ParamSet& params) -> std::unique_ptr<Planner> {
     const double resolution = params.getDouble("resolution", 0.5, 0.01, 100.0);
-    return std::make_unique<GridWorldPlanner>(make_grid(params), resolution);
+    // "cell" (default): a cell is blocked if any point of it is near an obstacle; "centre":
+    // only if its centre is (seed 003's grid, for reproducing its point-mass plans).
+    const auto blocking = params.getString("cell_blocking", "cell", {"cell", "centre"}) == "centre"
+                              ? OccupancyGrid::Blocking::Centre
+                              : OccupancyGrid::Blocking::AnyPoint;
+    return std::make_unique<GridWorldPlanner>(make_grid(params), resolution, blocking);
   };
   add(std::move(e));
 }

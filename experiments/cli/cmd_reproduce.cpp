@@ -4,24 +4,24 @@
 
 #include "experiments/cli/command.h"
 #include "experiments/cli/output_files.h"
-#include "experiments/reproduce/reproduction.h"
+#include "experiments/reproduce/report_files.h"
 #include "planning/input_error.h"
 
 namespace cosim::reproduce {
 // One declaration per reproduction (each defined in experiments/reproduce/<name>.cpp).
-std::string seed003Discrete(const Options& options);
-std::string seed003Sampling(const Options& options);
-std::string seed002AntVsGa(const Options& options);
-std::string seed002Maklink(const Options& options);
-std::string seed004Planners(const Options& options);
-std::string seed004WhcaWindow(const Options& options);
-std::string seed004MapfScaling(const Options& options);
-std::string seed000Msac(const Options& options);
-std::string seed000Sacodm(const Options& options);
-std::string seed000Rna(const Options& options);
-std::string seed003Flight(const Options& options);
-std::string trackingAcceptance(const Options& options);
-std::string controllerStudy(const Options& options);
+Report seed003Discrete(const Options& options);
+Report seed003Sampling(const Options& options);
+Report seed002AntVsGa(const Options& options);
+Report seed002Maklink(const Options& options);
+Report seed004Planners(const Options& options);
+Report seed004WhcaWindow(const Options& options);
+Report seed004MapfScaling(const Options& options);
+Report seed000Msac(const Options& options);
+Report seed000Sacodm(const Options& options);
+Report seed000Rna(const Options& options);
+Report seed003Flight(const Options& options);
+Report trackingAcceptance(const Options& options);
+Report controllerStudy(const Options& options);
 }  // namespace cosim::reproduce
 
 namespace cosim::cli {
@@ -36,7 +36,8 @@ const std::vector<reproduce::Entry>& reproductions() {
        reproduce::controllerStudy},
       {"tracking", "issue 6: every bundled 3D world, quad_1500g at 3 m/s and cf2 at 1 m/s, tracking errors",
        reproduce::trackingAcceptance},
-      {"seed003-flight", "seed 003 Sec. 4.2: Theta* and RRT*FN paths on map 3 flown four ways in MuJoCo",
+      {"seed003-flight",
+       "seed 003 Sec. 4.2: Theta* and RRT*FN on map 3, the thesis's pipeline and ours, in MuJoCo",
        reproduce::seed003Flight},
       {"seed000-msac", "seed 000 Tabs. 6.1-6.7: MSAC tabu tables, post-processing, ants, MAX",
        reproduce::seed000Msac},
@@ -50,7 +51,8 @@ const std::vector<reproduce::Entry>& reproductions() {
        reproduce::seed004WhcaWindow},
       {"seed004-mapf-scaling", "WHCA* and CBS success and SOC vs agents on the MAPF benchmarks",
        reproduce::seed004MapfScaling},
-      {"seed003-sampling", "seed 003 Tabs. 4-17: RRT vs RRT* vs RRT*FN, 2D and 3D maps, sets 1-4",
+      {"seed003-sampling",
+       "seed 003 Tabs. 4-17: RRT vs RRT* (thesis, Karaman-Frazzoli) vs RRT*FN, 2D and 3D maps",
        reproduce::seed003Sampling},
       {"seed003-discrete", "seed 003 Tabs. 1-4: A* vs Basic Theta* vs Lazy Theta*, 2D and 3D maps",
        reproduce::seed003Discrete},
@@ -66,7 +68,7 @@ const std::vector<reproduce::Entry>& reproductions() {
 void addReproduceCommand(CLI::App& app, CommandContext& ctx) {
   auto* cmd = app.add_subcommand("reproduce",
                                  "Re-run an experiment of the seed theses; writes NAME.md with the "
-                                 "seed's numbers beside ours");
+                                 "seed's numbers beside ours, and NAME.json");
   struct Args {
     std::string name, out;
     int runs = 0;
@@ -94,9 +96,9 @@ void addReproduceCommand(CLI::App& app, CommandContext& ctx) {
       opt.seed = args->seed;
       opt.quick = args->quick;
       opt.out_dir = prepareOutputDir(args->out, args->name).string();
-      const std::string report = e.run(opt);
-      writeFileAtomically(std::filesystem::path(opt.out_dir) / (args->name + ".md"), report);
-      std::cout << report << "\nwritten: " << opt.out_dir << "/" << args->name << ".md\n";
+      const std::string report = reproduce::writeReportFiles(args->name, opt, e.run(opt));
+      std::cout << report << "\nwritten: " << opt.out_dir << "/" << args->name << ".md and "
+                << args->name << ".json\n";
       ctx.status = 0;
       return;
     }

@@ -109,7 +109,7 @@ Row fly(const StudyController& c, double speed, const Options& options) {
 
 }  // namespace
 
-std::string controllerStudy(const Options& options) {
+Report controllerStudy(const Options& options) {
   const std::vector<double> speeds =
       options.quick ? std::vector<double>{2.0, 8.0} : std::vector<double>{2.0, 4.0, 6.0, 8.0};
   std::vector<Row> rows;
@@ -117,7 +117,7 @@ std::string controllerStudy(const Options& options) {
     for (const StudyController& c : kControllers) rows.push_back(fly(c, v, options));
 
   const std::filesystem::path dir(options.out_dir);
-  // controller-study.json (CONTRACT.md, Reproductions) and the CSV behind the figure.
+  // controller-study.json's rows (CONTRACT.md, Reproductions) and the CSV behind the figure.
   std::vector<JsonObject> json_rows;
   std::string csv = "controller,speed_mps,rmse_m,max_error_m,reached_goal,estimation_rmse_m\n";
   for (const Row& r : rows) {
@@ -136,9 +136,6 @@ std::string controllerStudy(const Options& options) {
            (r.metrics.reached_goal ? "1" : "0") + "," +
            JsonObject::number(r.metrics.estimation_rmse_m) + "\n";
   }
-  JsonObject doc;
-  doc.add("experiment", "controller-study").addArray("rows", json_rows);
-  writeFileAtomically(dir / "controller-study.json", doc.str() + "\n");
   writeFileAtomically(dir / "controller-study.csv", csv);
   writeComparisonChart(dir / "controller-study.csv", "speed_mps", "rmse_m", "controller",
                        dir / "controller-study");
@@ -197,7 +194,7 @@ std::string controllerStudy(const Options& options) {
         "vehicle). Figure: controller-study.png (RMSE against speed per controller). Rows in "
         "controller-study.json.\n";
   if (options.quick) md << "\n(--quick: 1 lap at 2 and 8 m/s only; not the study's result.)\n";
-  return md.str();
+  return {md.str(), json_rows};
 }
 
 }  // namespace cosim::reproduce

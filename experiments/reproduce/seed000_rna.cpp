@@ -54,9 +54,24 @@ void add(NavigationStats& s, const NavigationRun& run) {
   s.length += run.length;
 }
 
-std::string row(const std::string& head, const NavigationStats& s, double optimum) {
+// One table row in markdown, also appended to `rows` (NAME.json) under `section`.
+std::string row(const std::string& head, const NavigationStats& s, double optimum,
+                const std::string& section, std::vector<JsonObject>& rows) {
   std::ostringstream out;
   const double mean = s.reached ? s.length / s.reached : std::nan("");
+  JsonObject j;
+  j.add("section", section)
+      .add("planner", head)
+      .add("runs", s.runs)
+      .add("reached", s.reached)
+      .add("mean_length", mean)
+      .add("gap_to_optimum_percent", 100.0 * (mean / optimum - 1.0))
+      .add("replans_per_run", s.replans / std::max(1, s.runs))
+      .add("mean_plan_ms", s.plan_ms / std::max(1, s.runs))
+      .add("max_plan_ms", s.max_plan_ms)
+      .add("waits", s.waits)
+      .add("collisions", s.collisions);
+  rows.push_back(j);
   out << "| " << head << " | " << s.reached << "/" << s.runs << " | " << seed000Number(mean, 2)
       << " | " << seed000Number(std::isnan(optimum) ? optimum : 100.0 * (mean / optimum - 1.0), 1)
       << " | " << seed000Number(s.replans / std::max(1, s.runs), 1) << " | "
@@ -84,13 +99,14 @@ OccupancyGrid randomMap(std::uint64_t seed, double density) {
 
 }  // namespace
 
-std::string seed000Rna(const Options& options) {
+Report seed000Rna(const Options& options) {
   const int runs = seed000RunCount(options);
   const std::uint64_t seed = options.seed;
   const char* names[] = {"rna", "wf_rna", "d_star_lite"};
   NavigationLimits limits;
   limits.time_limit_s = 60.0;
   std::ostringstream out;
+  std::vector<JsonObject> rows;
   out << "# Seed 000: RNA, WF-RNA and D* Lite in unknown maps\n\n"
       << "The seed reports RNA only in figures; our tables give the figures' quantities. "
          "Unconditional diagonals, anti-oscillation on any revisited cell, MSAC m 4, MAX 3 "
@@ -119,7 +135,8 @@ std::string seed000Rna(const Options& options) {
         add(s,
             runNavigation(*nav, dead_end_world, dead_end.start, dead_end.goal, limits, seed + i));
       }
-      out << row(std::string(name) + ", sight " + std::to_string(sight), s, opt_dead_end);
+      out << row(std::string(name) + ", sight " + std::to_string(sight), s, opt_dead_end,
+                 "sight, dead end", rows);
     }
 
   // Scene 2: a cup inside a closed scene, larger than the view.
@@ -136,7 +153,7 @@ std::string seed000Rna(const Options& options) {
       NavigationStats s;
       auto nav = makeNavigator(name, sight, ObstaclePrediction::ConstantVelocity);
       add(s, runNavigation(*nav, world2, scene2.start, scene2.goal, short_limits, seed));
-      out << row(std::string(name) + ", sight " + std::to_string(sight), s, opt2);
+      out << row(std::string(name) + ", sight " + std::to_string(sight), s, opt2, "scene 2", rows);
     }
 
   // Fig. 6.7: random environments.
@@ -162,7 +179,8 @@ std::string seed000Rna(const Options& options) {
     }
     // row() reports mean / optimum - 1; the optimum differs per map, so pass the mean length
     // divided by the mean ratio, which makes that figure the mean per-map gap.
-    out << row(name, s, s.reached ? (s.length / s.reached) / (gap_sum / s.reached) : std::nan(""));
+    out << row(name, s, s.reached ? (s.length / s.reached) / (gap_sum / s.reached) : std::nan(""),
+               "random maps", rows);
   }
 
   // §4.2.1: several moving obstacles in view at once.
@@ -195,10 +213,10 @@ std::string seed000Rna(const Options& options) {
       out << row(std::string(name) + (prediction == ObstaclePrediction::Trajectory
                                           ? ", trajectory"
                                           : ", constant velocity"),
-                 s, opt1);
+                 s, opt1, "moving obstacles", rows);
     }
   out << "\n";
-  return out.str();
+  return {out.str(), rows};
 }
 
 }  // namespace cosim::reproduce

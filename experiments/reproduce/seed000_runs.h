@@ -8,6 +8,7 @@
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/seed000_scenes.h"
 #include "planning/grid/grid_planner.h"
+#include "sim/json_writer.h"
 
 namespace cosim::reproduce {
 
@@ -28,9 +29,11 @@ struct Seed000Column {
 };
 
 // A markdown table in the seed's layout (rows: average time, average length, minimum length),
-// seed and ours on alternate rows, with the scene's optimum under the title.
+// seed and ours on alternate rows, with the scene's optimum under the title. Each column is
+// also appended to `rows` (NAME.json) as {table, swept, value, optimum, seed_* and our figures}.
 std::string seed000Table(const std::string& title, const std::string& swept,
-                         const std::vector<Seed000Column>& columns, double optimum);
+                         const std::vector<Seed000Column>& columns, double optimum,
+                         std::vector<JsonObject>& rows);
 
 // The three scenes of the MSAC and SACOdm tables with their optima (unconditional diagonals).
 struct Seed000SceneSet {

@@ -25,7 +25,7 @@ std::filesystem::path mapfDataDir(bool quick) {
 
 }  // namespace
 
-std::string seed004MapfScaling(const Options& options) {
+Report seed004MapfScaling(const Options& options) {
   const std::filesystem::path dir = mapfDataDir(options.quick);
   const std::vector<std::string> maps = {
       "empty-8-8",    "empty-16-16", "empty-32-32",           "random-32-32-10",
@@ -59,6 +59,7 @@ std::string seed004MapfScaling(const Options& options) {
       "| map | agents | instances | WHCA* success % | WHCA* mean SOC | WHCA* mean ms | CBS "
       "success % | CBS mean SOC | CBS mean ms | SOC both (WHCA*/CBS) |\n"
       "|---|---|---|---|---|---|---|---|---|---|\n";
+  std::vector<JsonObject> rows;
   for (const auto& map : maps) {
     const auto map_path = dir / (map + ".map");
     if (!std::filesystem::exists(map_path)) continue;
@@ -86,9 +87,21 @@ std::string seed004MapfScaling(const Options& options) {
             " | " + formatFixed(cbs.solved ? cbs.meanSumOfCosts() : NAN, 1) + " | " +
             formatFixed(cbs.meanTimeMs(), 1) + " | " +
             formatFixed(both_cbs > 0 ? both_whca / both_cbs : NAN, 3) + " |\n";
+      for (const auto& [planner, t] :
+           {std::pair<const char*, const MapfTrialSummary*>{"whca_star", &whca}, {"cbs", &cbs}}) {
+        JsonObject row;
+        row.add("map", map)
+            .add("agents", n)
+            .add("planner", planner)
+            .add("instances", t->runs)
+            .add("success_percent", t->successPercent())
+            .add("mean_sum_of_costs", t->solved ? t->meanSumOfCosts() : NAN)
+            .add("mean_time_ms", t->meanTimeMs());
+        rows.push_back(row);
+      }
     }
   }
-  return md;
+  return {md, rows};
 }
 
 }  // namespace cosim::reproduce

@@ -33,7 +33,7 @@ const char* seedClaim(Seed004Environment env, const std::string& planner) {
 
 }  // namespace
 
-std::string seed004Planners(const Options& options) {
+Report seed004Planners(const Options& options) {
   const int runs = options.runs > 0 ? options.runs : (options.quick ? 2 : 20);
   const int size = 15;  // the seed's software tests: 15 x 15 maps, 20 simulations
   const std::vector<int> robot_counts =
@@ -65,6 +65,7 @@ std::string seed004Planners(const Options& options) {
       "SOC = sum of arrival times; SOC/CBS is over the instances solved by both.\n\n"
       "| environment | robots | planner | success % | mean SOC | SOC / CBS | mean time ms | seed "
       "004 says |\n|---|---|---|---|---|---|---|---|\n";
+  std::vector<JsonObject> rows;
   for (const auto env :
        {Seed004Environment::kMaze, Seed004Environment::kOpen, Seed004Environment::kBottleneck})
     for (const int robots : robot_counts) {
@@ -94,9 +95,20 @@ std::string seed004Planners(const Options& options) {
               formatFixed(s.solved ? s.meanSumOfCosts() : NAN, 1) + " | " +
               formatFixed(ratio_n[k] ? ratio_sum[k] / ratio_n[k] : NAN, 3) + " | " +
               formatFixed(s.meanTimeMs(), 2) + " | " + seedClaim(env, planners[k].planner) + " |\n";
+        JsonObject row;
+        row.add("environment", seed004EnvironmentName(env))
+            .add("robots", robots)
+            .add("planner", planners[k].planner)
+            .add("instances", s.runs)
+            .add("success_percent", s.successPercent())
+            .add("mean_sum_of_costs", s.solved ? s.meanSumOfCosts() : NAN)
+            .add("soc_over_cbs", ratio_n[k] ? ratio_sum[k] / ratio_n[k] : NAN)
+            .add("mean_time_ms", s.meanTimeMs())
+            .add("seed_claim", seedClaim(env, planners[k].planner));
+        rows.push_back(row);
       }
     }
-  return md;
+  return {md, rows};
 }
 
 }  // namespace cosim::reproduce

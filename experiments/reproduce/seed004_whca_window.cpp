@@ -12,7 +12,7 @@
 
 namespace cosim::reproduce {
 
-std::string seed004WhcaWindow(const Options& options) {
+Report seed004WhcaWindow(const Options& options) {
   const int runs = options.runs > 0 ? options.runs : (options.quick ? 2 : 20);
   const int size = 15;
   const std::vector<int> robot_counts =
@@ -41,6 +41,7 @@ std::string seed004WhcaWindow(const Options& options) {
   md += "\n|---|---|---|";
   for (std::size_t i = 0; i < windows.size(); ++i) md += "---|";
   md += "\n";
+  std::vector<JsonObject> rows;
   for (const auto env :
        {Seed004Environment::kMaze, Seed004Environment::kOpen, Seed004Environment::kBottleneck})
     for (const int robots : robot_counts) {
@@ -65,11 +66,20 @@ std::string seed004WhcaWindow(const Options& options) {
               .append(" (")
               .append(formatFixed(s.solved ? s.meanSumOfCosts() : NAN, 1))
               .append(") |");
+          JsonObject row;
+          row.add("environment", seed004EnvironmentName(env))
+              .add("robots", robots)
+              .add("priorities", priorities)
+              .add("window", w)
+              .add("instances", s.runs)
+              .add("success_percent", s.successPercent())
+              .add("mean_sum_of_costs", s.solved ? s.meanSumOfCosts() : NAN);
+          rows.push_back(row);
         }
         md += "\n";
       }
     }
-  return md;
+  return {md, rows};
 }
 
 }  // namespace cosim::reproduce

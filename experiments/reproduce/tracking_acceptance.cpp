@@ -42,7 +42,7 @@ std::vector<std::filesystem::path> quadrotorScenarios() {
 
 }  // namespace
 
-std::string trackingAcceptance(const Options& options) {
+Report trackingAcceptance(const Options& options) {
   struct Airframe {
     const char* model;
     double max_speed, max_rmse, max_error;
@@ -59,6 +59,7 @@ std::string trackingAcceptance(const Options& options) {
         "0.15 m; cf2 RMSE <= 0.02 m.\n\n"
      << "| world | vehicle | max speed [m/s] | reached | collisions | RMSE [m] | max error [m] | "
         "min clearance [m] | flight [s] | target |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  std::vector<JsonObject> rows;
   int failures = 0, index = 0;
   for (const auto& file : quadrotorScenarios()) {
     for (const Airframe& a : airframes) {
@@ -92,11 +93,23 @@ std::string trackingAcceptance(const Options& options) {
          << fixed(m.rmse_m, 4) << " | " << fixed(m.max_error_m, 4) << " | "
          << fixed(m.min_clearance_m, 3) << " | " << fixed(m.flight_time_s, 1) << " | "
          << (ok ? "met" : "NOT met") << " |\n";
+      JsonObject row;
+      row.add("world", file.stem().string())
+          .add("vehicle", a.model)
+          .add("max_speed_mps", a.max_speed)
+          .add("reached_goal", m.reached_goal)
+          .add("collisions", m.collisions)
+          .add("rmse_m", m.rmse_m)
+          .add("max_error_m", m.max_error_m)
+          .add("min_clearance_m", m.min_clearance_m)
+          .add("flight_time_s", m.flight_time_s)
+          .add("target_met", ok);
+      rows.push_back(row);
     }
   }
   md << "\n" << (failures == 0 ? "Every row meets its target." : std::to_string(failures) + " row(s) miss their target.")
      << "\n";
-  return md.str();
+  return {md.str(), rows};
 }
 
 }  // namespace cosim::reproduce

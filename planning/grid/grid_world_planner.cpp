@@ -7,9 +7,8 @@ namespace cosim {
 
 PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
   const Deadline clock(problem.time_limit_s);
-  const OccupancyGrid grid = OccupancyGrid::fromWorld(*problem.world, resolution_,
-                                                      problem.inflation, problem.planar,
-                                                      problem.start.z());
+  const OccupancyGrid grid = OccupancyGrid::fromWorld(
+      *problem.world, resolution_, problem.inflation, problem.planar, problem.start.z(), blocking_);
   GridQuery query;
   query.grid = &grid;
   query.start = grid.cellOf(problem.start);

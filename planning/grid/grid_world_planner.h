@@ -1,7 +1,9 @@
 #pragma once
 // Adapts a GridPlanner to a world: voxelises the scenario's obstacles (grown by the vehicle's
-// inflation) at `resolution` metres, plans between the cells of start and goal, and returns a
-// metric path from the exact start through the cell centres to the exact goal.
+// inflation) at `resolution` metres (a cell blocked when any point of it is near an obstacle, or,
+// with Blocking::Centre, seed 003's rule: only when its centre is), plans between the cells of
+// start and goal, and returns a metric path from the exact start through the cell centres to the
+// exact goal.
 #include <memory>
 
 #include "planning/grid/grid_planner.h"
@@ -11,14 +13,16 @@ namespace cosim {
 
 class GridWorldPlanner : public Planner {
  public:
-  GridWorldPlanner(std::unique_ptr<GridPlanner> planner, double resolution)
-      : planner_(std::move(planner)), resolution_(resolution) {}
+  GridWorldPlanner(std::unique_ptr<GridPlanner> planner, double resolution,
+                   OccupancyGrid::Blocking blocking = OccupancyGrid::Blocking::AnyPoint)
+      : planner_(std::move(planner)), resolution_(resolution), blocking_(blocking) {}
   std::string name() const override { return planner_->name(); }
   PlanResult solve(const PlanningProblem& problem) override;
 
  private:
   std::unique_ptr<GridPlanner> planner_;
   double resolution_;
+  OccupancyGrid::Blocking blocking_;
 };
 
 }  // namespace cosim

@@ -36,7 +36,7 @@ Cell OccupancyGrid::cellOf(const Eigen::Vector3d& p) const {
 }
 
 OccupancyGrid OccupancyGrid::fromWorld(const World& world, double cell_size, double inflation,
-                                       bool planar, double plane_z) {
+                                       bool planar, double plane_z, Blocking blocking) {
   const Eigen::Vector3d extent = world.bounds_max - world.bounds_min;
   const int nx = std::max(1, static_cast<int>(std::ceil(extent.x() / cell_size - 1e-9)));
   const int ny = std::max(1, static_cast<int>(std::ceil(extent.y() / cell_size - 1e-9)));
@@ -48,7 +48,8 @@ OccupancyGrid OccupancyGrid::fromWorld(const World& world, double cell_size, dou
   // Half the diagonal of a cell (of a square in the planar case): the farthest any point of
   // the cell is from its centre.
   const double half_diagonal = 0.5 * cell_size * std::sqrt(planar ? 2.0 : 3.0);
-  const double reach = inflation + half_diagonal;
+  const bool any_point = blocking == Blocking::AnyPoint;
+  const double reach = inflation + (any_point ? half_diagonal : 0.0);
   for (const Obstacle& o : world.obstacles) {
     Eigen::Vector3d lo, hi;
     o.boundingBox(reach, lo, hi);
@@ -57,7 +58,8 @@ OccupancyGrid OccupancyGrid::fromWorld(const World& world, double cell_size, dou
       for (int y = std::max(0, a.y); y <= std::min(ny - 1, b.y); ++y)
         for (int x = std::max(0, a.x); x <= std::min(nx - 1, b.x); ++x) {
           const Eigen::Vector3d c = grid.cellCenter({x, y, z});
-          if (o.signedDistance(c) <= reach) grid.setBlocked(x, y, z, true);
+          const double d = o.signedDistance(c);
+          if (any_point ? d <= reach : d < reach) grid.setBlocked(x, y, z, true);
         }
   }
   // The floor (the bottom of the bounds) is physical: cells whose centre is closer than

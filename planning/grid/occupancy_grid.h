@@ -66,13 +66,24 @@ class OccupancyGrid {
   // The cell containing p (may be outside the grid).
   Cell cellOf(const Eigen::Vector3d& p) const;
 
-  // Voxelises a world. A cell is blocked when any point of it could lie within `inflation` of an
-  // obstacle (centre distance <= inflation + half the cell diagonal), so a path through free
-  // cells keeps the vehicle's volume clear of obstacles; cells closer than `inflation` to the
-  // floor (the bottom of the bounds) are blocked too. planar: a one-layer grid at height plane_z
-  // for ground robots.
+  // How a cell is judged against the (inflated) obstacles.
+  enum class Blocking {
+    // Blocked when any point of the cell could lie within `inflation` of an obstacle (centre
+    // distance <= inflation + half the cell diagonal): a path through free cells keeps the
+    // vehicle's volume clear of obstacles. The default.
+    AnyPoint,
+    // Blocked only when the cell's centre lies within `inflation` of an obstacle (strictly
+    // inside it for inflation 0): seed 003's grid, whose vertices are cell centres and an
+    // obstacle blocks the vertices it contains. Paths may graze obstacles.
+    Centre,
+  };
+
+  // Voxelises a world: cells are blocked as `blocking` says; cells closer than `inflation` to
+  // the floor (the bottom of the bounds) are blocked too. planar: a one-layer grid at height
+  // plane_z for ground robots.
   static OccupancyGrid fromWorld(const World& world, double cell_size, double inflation,
-                                 bool planar = false, double plane_z = 0.0);
+                                 bool planar = false, double plane_z = 0.0,
+                                 Blocking blocking = Blocking::AnyPoint);
 
  private:
   int nx_ = 0, ny_ = 0, nz_ = 0;

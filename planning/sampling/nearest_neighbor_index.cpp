@@ -33,9 +33,10 @@ void sortByDistance(std::vector<std::pair<std::uint32_t, double>>& v) {
 }
 }  // namespace
 
-NearestNeighborIndex::NearestNeighborIndex(std::size_t capacity) {
+NearestNeighborIndex::NearestNeighborIndex(std::size_t capacity, bool linear_scan) {
   points_.reserve(capacity);
-  tree_ = std::make_unique<Tree>(*this);
+  alive_.reserve(capacity);
+  if (!linear_scan) tree_ = std::make_unique<Tree>(*this);
 }
 
 NearestNeighborIndex::~NearestNeighborIndex() = default;
@@ -43,17 +44,29 @@ NearestNeighborIndex::~NearestNeighborIndex() = default;
 std::uint32_t NearestNeighborIndex::add(const Eigen::Vector3d& p) {
   const auto id = static_cast<std::uint32_t>(points_.size());
   points_.push_back(p);
-  tree_->forest.addPoints(id, id);
+  alive_.push_back(1);
+  if (tree_) tree_->forest.addPoints(id, id);
   ++live_;
   return id;
 }
 
 void NearestNeighborIndex::remove(std::uint32_t id) {
-  tree_->forest.removePoint(id);
+  if (tree_) tree_->forest.removePoint(id);
+  alive_[id] = 0;
   --live_;
 }
 
 std::uint32_t NearestNeighborIndex::nearest(const Eigen::Vector3d& q) const {
+  if (!tree_) {
+    std::uint32_t best = 0;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    for (std::uint32_t i = 0; i < points_.size(); ++i) {
+      if (!alive_[i]) continue;
+      const double d2 = (points_[i] - q).squaredNorm();
+      if (d2 < best_d2) best_d2 = d2, best = i;
+    }
+    return best;
+  }
   std::uint32_t id = 0;
   double d2 = 0.0;
   nanoflann::KNNResultSet<double, std::uint32_t> result(1);
@@ -64,6 +77,17 @@ std::uint32_t NearestNeighborIndex::nearest(const Eigen::Vector3d& q) const {
 
 void NearestNeighborIndex::withinRadius(const Eigen::Vector3d& q, double radius,
                                         std::vector<std::pair<std::uint32_t, double>>& out) const {
+  if (!tree_) {
+    out.clear();
+    const double r2 = radius * radius;
+    for (std::uint32_t i = 0; i < points_.size(); ++i) {
+      if (!alive_[i]) continue;
+      const double d2 = (points_[i] - q).squaredNorm();
+      if (d2 <= r2) out.emplace_back(i, d2);
+    }
+    sortByDistance(out);
+    return;
+  }
   nanoflann::RadiusResultSet<double, std::uint32_t> result(radius * radius, out);
   tree_->forest.findNeighbors(result, q.data(), nanoflann::SearchParams());
   sortByDistance(out);
@@ -74,6 +98,13 @@ void NearestNeighborIndex::nearestK(const Eigen::Vector3d& q, std::size_t k,
   out.clear();
   k = std::min(k, live_);
   if (k == 0) return;
+  if (!tree_) {
+    for (std::uint32_t i = 0; i < points_.size(); ++i)
+      if (alive_[i]) out.emplace_back(i, (points_[i] - q).squaredNorm());
+    sortByDistance(out);
+    out.resize(k);
+    return;
+  }
   knn_ids_.resize(k);
   knn_d2_.resize(k);
   nanoflann::KNNResultSet<double, std::uint32_t> result(k);

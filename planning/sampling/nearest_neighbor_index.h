@@ -3,6 +3,10 @@
 // dynamic k-d tree (a forest of static k-d trees of sizes 2^i, rebuilt as points are added: the
 // logarithmic method of Bentley & Saxe 1980), so insertion stays cheap and queries sub-linear.
 // Points get ids 0, 1, 2, ... in the order they are added; removed ids are never reused.
+// With linear_scan, queries instead compute the distance to every live point, as seed 003's
+// MATLAB planners did (its RRT*FN "limits memory, which speeds up computing the distances of the
+// new node to the rest of the nodes"): the same answers (ties go to the lower id), at a cost that
+// grows with the number of points, for reproducing that cost structure.
 #include <Eigen/Core>
 #include <cstdint>
 #include <memory>
@@ -14,7 +18,7 @@ namespace cosim {
 class NearestNeighborIndex {
  public:
   // capacity: the number of points expected (storage is reserved for them; more still works).
-  explicit NearestNeighborIndex(std::size_t capacity);
+  explicit NearestNeighborIndex(std::size_t capacity, bool linear_scan = false);
   ~NearestNeighborIndex();
   NearestNeighborIndex(const NearestNeighborIndex&) = delete;
   NearestNeighborIndex& operator=(const NearestNeighborIndex&) = delete;
@@ -45,7 +49,8 @@ class NearestNeighborIndex {
  private:
   struct Tree;
   std::vector<Eigen::Vector3d> points_;
-  std::unique_ptr<Tree> tree_;
+  std::unique_ptr<Tree> tree_;  // null with linear_scan
+  std::vector<std::uint8_t> alive_;
   std::size_t live_ = 0;
   mutable std::vector<std::uint32_t> knn_ids_;
   mutable std::vector<double> knn_d2_;

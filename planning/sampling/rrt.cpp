@@ -11,7 +11,7 @@ PlanResult Rrt::solve(const PlanningProblem& problem) {
   if (!ctx.invalid().empty()) return ctx.finish({}, false, ctx.invalid());
   const SamplingOptions& o = options_;
   const auto budget = static_cast<std::size_t>(o.max_nodes);
-  SamplingTree tree(std::min<std::size_t>(budget + 2, 1u << 18));
+  SamplingTree tree(std::min<std::size_t>(budget + 2, 1u << 18), o.linear_scan);
   std::uint32_t goal_node = SamplingTree::kNone;
   // A node within goal_tolerance of the goal tries the straight edge to it.
   auto tryGoal = [&](std::uint32_t id) {

@@ -51,6 +51,7 @@ class FarthestLeafQueue {
 
 std::string RrtStar::name() const {
   if (options_.informed) return "informed_rrt_star";
+  if (options_.choose_parent == ChooseParent::NearestParent) return "rrt_star_thesis";
   return options_.max_tree_nodes > 0 ? "rrt_star_fn" : "rrt_star";
 }
 
@@ -61,12 +62,13 @@ PlanResult RrtStar::solve(const PlanningProblem& problem) {
   const bool fixed_nodes = options_.max_tree_nodes > 0;
   const auto budget = static_cast<std::size_t>(o.max_nodes);
   const std::size_t capacity = std::min<std::size_t>(budget + 2, 1u << 18);
-  SamplingTree tree(capacity);
+  SamplingTree tree(capacity, o.linear_scan);
   FarthestLeafQueue leaves;
   const Eigen::Vector3d& goal = ctx.goal();
   const std::uint32_t root = tree.add(ctx.start(), SamplingTree::kNone, 0.0);
   std::uint32_t goal_node = SamplingTree::kNone;
   if (ctx.start() == goal) goal_node = root;
+  double first_path_nodes = 0;  // nodes generated when the first path appeared
 
   // Connects node `id` to the goal if that is shorter than the current path (or the first one).
   auto offerGoal = [&](std::uint32_t id) {
@@ -78,6 +80,7 @@ PlanResult RrtStar::solve(const PlanningProblem& problem) {
     if (!ctx.segmentFree(p, goal)) return;
     if (goal_node == SamplingTree::kNone) {
       goal_node = tree.add(goal, id, c);
+      first_path_nodes = static_cast<double>(tree.generated());
     } else {
       const std::uint32_t old_parent = tree.parent(goal_node);
       tree.reparent(goal_node, id, c);
@@ -111,8 +114,9 @@ PlanResult RrtStar::solve(const PlanningProblem& problem) {
       continue;  // cannot lie on a better path (and saves a collision check)
     if (!ctx.segmentFree(from, x_new)) continue;
 
-    // Choose parent: the neighbour giving the least cost-to-come through a free edge. Sorting
-    // the candidates by that cost first means only edges up to the winner are checked.
+    // The near set (fixed radius or k nearest), for choose-parent and rewiring. Karaman-Frazzoli
+    // choose-parent takes the neighbour giving the least cost-to-come through a free edge;
+    // sorting the candidates by that cost first means only edges up to the winner are checked.
     if (options_.rewire_radius > 0.0) {
       tree.index().withinRadius(x_new, options_.rewire_radius, found);
     } else {
@@ -130,22 +134,47 @@ PlanResult RrtStar::solve(const PlanningProblem& problem) {
       has_nearest |= id == nearest;
     }
     if (!has_nearest) near.push_back({nearest, d_nearest, tree.cost(nearest) + d_nearest, 1});
-    std::sort(near.begin(), near.end(), [](const Neighbor& a, const Neighbor& b) {
-      return a.cost_through != b.cost_through ? a.cost_through < b.cost_through : a.id < b.id;
-    });
-    std::size_t best = 0;
-    for (; best < near.size(); ++best) {
-      Neighbor& n = near[best];
-      if (n.free < 0) n.free = ctx.segmentFree(tree.position(n.id), x_new) ? 1 : 0;
-      if (n.free == 1) break;
+    std::uint32_t parent = nearest;
+    double cost_new = tree.cost(nearest) + d_nearest;
+    if (options_.choose_parent == ChooseParent::NearestParent) {
+      // Seed 003 Fig. 16: join x_new to x_old, the parent of its nearest node, if x_old is one
+      // of the near nodes (within the thesis's "maximum allowed distance for optimisation")
+      // and sees it; by the triangle inequality that is never dearer than through the nearest.
+      // (Without the distance bound the rule chains back through the ancestors: in open space
+      // every node would join the root and the paths would be any-angle straight lines.)
+      const std::uint32_t x_old = tree.parent(nearest);
+      auto in_near =
+          std::find_if(near.begin(), near.end(), [&](const Neighbor& n) { return n.id == x_old; });
+      if (x_old != SamplingTree::kNone && in_near != near.end()) {
+        const double d_old = in_near->distance;
+        if (in_near->free < 0) in_near->free = ctx.segmentFree(tree.position(x_old), x_new) ? 1 : 0;
+        if (in_near->free == 1) {
+          parent = x_old;
+          cost_new = tree.cost(x_old) + d_old;
+        }
+      }
+    } else {
+      std::sort(near.begin(), near.end(), [](const Neighbor& a, const Neighbor& b) {
+        return a.cost_through != b.cost_through ? a.cost_through < b.cost_through : a.id < b.id;
+      });
+      std::size_t best = 0;
+      for (; best < near.size(); ++best) {
+        Neighbor& n = near[best];
+        if (n.free < 0) n.free = ctx.segmentFree(tree.position(n.id), x_new) ? 1 : 0;
+        if (n.free == 1) break;
+      }
+      // The nearest node's edge is free, so some candidate always wins.
+      parent = near[best].id;
+      cost_new = near[best].cost_through;
     }
-    // The nearest node's edge is free, so some candidate always wins.
-    const double cost_new = near[best].cost_through;
     if (options_.informed && solved && cost_new + (goal - x_new).norm() >= c_best) continue;
-    const std::uint32_t parent = near[best].id;
     const std::uint32_t id = tree.add(x_new, parent, cost_new);
     if (fixed_nodes) leaves.push(tree, id, goal);
-    if (x_new == goal) goal_node = id;
+    if (x_new == goal) {
+      if (goal_node == SamplingTree::kNone)
+        first_path_nodes = static_cast<double>(tree.generated());
+      goal_node = id;
+    }
 
     // Rewire: neighbours that get cheaper through the new node take it as their parent.
     for (Neighbor& n : near) {
@@ -168,6 +197,7 @@ PlanResult RrtStar::solve(const PlanningProblem& problem) {
   result.counters["nodes"] = static_cast<double>(tree.generated());
   result.counters["tree_nodes"] = static_cast<double>(tree.size());
   result.counters["rewires"] = rewires;
+  if (goal_node != SamplingTree::kNone) result.counters["first_path_nodes"] = first_path_nodes;
   if (fixed_nodes) result.counters["removed_nodes"] = removed;
   if (goal_node != SamplingTree::kNone && ctx.timeUp() && tree.generated() < budget)
     result.counters["stopped_by_time_limit"] = 1;

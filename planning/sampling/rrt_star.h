@@ -1,7 +1,13 @@
 #pragma once
-// RRT* (Karaman & Frazzoli 2011, "Sampling-based algorithms for optimal motion planning") as seed
-// 003 runs it (Script 8): RRT plus choose-parent among the nodes within a fixed rewire radius and
-// rewiring of those nodes through the new one. Two variants share this loop:
+// RRT* (Karaman & Frazzoli 2011, "Sampling-based algorithms for optimal motion planning") with
+// seed 003's fixed "maximum allowed distance for optimisation" (Script 8): RRT plus choose-parent
+// among the nodes within the rewire radius and rewiring of those nodes through the new one.
+// Seed 003's own RRT* chose the parent differently (its Fig. 16: "x_old, the parent of x_last, the
+// nearest node to x_new, is joined to x_new"; ChooseParent "returns the nearest neighbour"): the
+// new node takes the nearest node's parent when that node lies within the rewire radius (the
+// thesis's "maximum allowed distance for optimisation") and the edge is free, else the nearest
+// node, and only rewiring looks at the whole radius. ChooseParent::NearestParent is that rule
+// (planner rrt_star_thesis); it is greedier and leaves longer paths. Variants that share this loop:
 // - RRT*FN, fixed nodes (Adiyatov & Varol 2013; seed 003 Script 9): once the tree holds more
 //   than max_tree_nodes nodes, a childless node is removed before each sample; seed 003's policy
 //   removes the childless node farthest from the goal.
@@ -14,8 +20,14 @@
 
 namespace cosim {
 
+enum class ChooseParent {
+  NearMin,        // Karaman-Frazzoli: the cheapest free edge among the near nodes
+  NearestParent,  // seed 003 Fig. 16: the nearest node's parent if near and visible, else nearest
+};
+
 struct RrtStarOptions {
   SamplingOptions common;
+  ChooseParent choose_parent = ChooseParent::NearMin;
   // Seed 003's "maximum allowed distance for optimisation"; 0 = k-nearest RRT* instead
   // (k = e (1 + 1/d) log n, Karaman & Frazzoli 2011), which stays cheap as the tree densifies.
   double rewire_radius = 4.0;

@@ -22,6 +22,7 @@ struct SamplingOptions {
   double goal_bias = 0.05;      // probability of sampling the goal itself
   double goal_tolerance = 0.0;  // new nodes this close to the goal try to connect to it
   bool shortcut = false;        // greedy shortcutting of the returned path
+  bool linear_scan = false;     // nearest-neighbour queries by scanning every node (seed 003's)
 };
 
 class SamplingContext {

@@ -4,7 +4,7 @@
 
 namespace cosim {
 
-SamplingTree::SamplingTree(std::size_t capacity) : index_(capacity) {
+SamplingTree::SamplingTree(std::size_t capacity, bool linear_scan) : index_(capacity, linear_scan) {
   nodes_.reserve(capacity);
 }
 

@@ -16,8 +16,9 @@ class SamplingTree {
  public:
   static constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 
-  // capacity: expected number of nodes (arrays grow beyond it if needed).
-  explicit SamplingTree(std::size_t capacity);
+  // capacity: expected number of nodes (arrays grow beyond it if needed); linear_scan: see
+  // NearestNeighborIndex.
+  explicit SamplingTree(std::size_t capacity, bool linear_scan = false);
 
   // Adds a node; parent = kNone for the root. Returns its id (ids are never reused).
   std::uint32_t add(const Eigen::Vector3d& p, std::uint32_t parent, double cost);

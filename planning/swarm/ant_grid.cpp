@@ -35,6 +35,11 @@ double AntGrid::headingCost(double previous_angle, bool has_previous, double mov
   return h;
 }
 
+double AntGrid::turnCost(double previous_angle, bool has_previous, double move_angle) {
+  if (!has_previous) return 1.0;
+  return 1.0 + angleBetween(move_angle, previous_angle) / (M_PI / 4.0);
+}
+
 GridPlanResult AntGrid::solveGrid(const GridQuery& query) {
   LayerWalkSearch search(query, p_.directions);
   if (!search.layer().error.empty()) return search.failure(search.layer().error);
@@ -55,7 +60,10 @@ GridPlanResult AntGrid::solveGrid(const GridQuery& query) {
     for (int i = 0; i < n; ++i) {
       const NeighbourOffset& o = moves.offset(candidates[i]);
       const double t = tau[grid.index(c.x + o.dx, c.y + o.dy)];
-      const double eta = 1.0 / headingCost(previous, arrived >= 0, o.angle, goal_angle);
+      const double h = p_.heading == AntHeading::Turn
+                           ? turnCost(previous, arrived >= 0, o.angle)
+                           : headingCost(previous, arrived >= 0, o.angle, goal_angle);
+      const double eta = 1.0 / h;
       weights[i] = powExponent(t, p_.alpha) * powExponent(eta, p_.beta);
     }
     return rouletteIndex(weights, n, rng);

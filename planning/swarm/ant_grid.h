@@ -12,6 +12,16 @@
 
 namespace cosim {
 
+// The heuristic h_i of eta_i = 1 / h_i (the seed: "the difference of angle (change of movement
+// direction)", no unit, nothing said about h_i = 0).
+enum class AntHeading {
+  // Ours: 1 + (deviation from the straight line to the goal, degrees)^2 + (turn, degrees).
+  TurnAndGoal,
+  // The seed as written, the turn only: 1 + turn / 45 degrees, i.e. 1 + the difference of the
+  // seed's integer direction codes (0..7 for 8 directions), so a straight move has h = 1.
+  Turn,
+};
+
 struct AntGridParams {
   // Defaults: the seed's parameter table (iterations 30~50, ants 20~30, initial pheromone 0.5,
   // evaporation 0.1, deposition 0.5, alpha 1, beta 0.5); 8 directions ("most often used").
@@ -23,6 +33,7 @@ struct AntGridParams {
   double deposit = 0.5;      // Q
   double initial_pheromone = 0.5;
   int directions = 8;  // 4, 8, 16, 24 or 32
+  AntHeading heading = AntHeading::TurnAndGoal;
   // Not in the seed: shorten every ant's path with the staircase local search before the update.
   bool local_search = false;
 };
@@ -37,6 +48,8 @@ class AntGrid : public GridPlanner {
   // angles in degrees. Exposed for tests.
   static double headingCost(double previous_angle, bool has_previous, double move_angle,
                             double goal_angle);
+  // The seed's h_i as written: 1 + turn / 45 degrees (1 for the first move).
+  static double turnCost(double previous_angle, bool has_previous, double move_angle);
 
  private:
   AntGridParams p_;

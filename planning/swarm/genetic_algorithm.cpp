@@ -67,9 +67,11 @@ GridPlanResult GeneticAlgorithm::solveGrid(const GridQuery& query) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const Cell goal = search.layer().goal;
 
-  // Initial population: walks guided by the ants' heuristic eta = 1 / h (no pheromone).
+  // Initial population: walks guided by the ants' heuristic eta = 1 / h (no pheromone), or, in
+  // the plain variant, walks that pick each legal move with equal probability.
   double weights[32];
   auto choose = [&](const Cell& c, int arrived, const int* candidates, int n) {
+    if (!p_.guided_initial) return std::uniform_int_distribution<int>(0, n - 1)(rng);
     const double goal_angle = std::atan2(goal.y - c.y, goal.x - c.x);
     const double previous = arrived >= 0 ? moves.offset(arrived).angle : 0.0;
     for (int i = 0; i < n; ++i)
@@ -125,11 +127,26 @@ GridPlanResult GeneticAlgorithm::solveGrid(const GridQuery& query) {
     c2.cells.insert(c2.cells.end(), a.cells.begin() + i + 1, a.cells.end());
     return true;
   };
-  // Tuncer-Yildirim mutation: node i moves to the neighbour cell that shortens the path most.
+  // Tuncer-Yildirim mutation: node i moves to the neighbour cell that shortens the path most;
+  // the plain variant moves it to a random neighbour cell that keeps both moves legal.
+  std::vector<Cell> legal;
   auto mutate = [&](Chromosome& x) {
     for (std::size_t i = 1; i + 1 < x.cells.size(); ++i) {
       if (unit(rng) >= p_.mutation_probability) continue;
       const Cell prev = x.cells[i - 1], next = x.cells[i + 1];
+      if (!p_.shortening_mutation) {
+        legal.clear();
+        for (int dy = -1; dy <= 1; ++dy)
+          for (int dx = -1; dx <= 1; ++dx) {
+            const Cell q{x.cells[i].x + dx, x.cells[i].y + dy, 0};
+            if ((dx == 0 && dy == 0) || q == prev || q == next || grid.blocked(q)) continue;
+            if (moves.legalMove(grid, prev, q) && moves.legalMove(grid, q, next))
+              legal.push_back(q);
+          }
+        if (!legal.empty())
+          x.cells[i] = legal[std::uniform_int_distribution<std::size_t>(0, legal.size() - 1)(rng)];
+        continue;
+      }
       Cell best = x.cells[i];
       double best_cost = dist(prev, best) + dist(best, next);
       for (int dy = -1; dy <= 1; ++dy)

@@ -9,6 +9,10 @@
 // one-point crossover at a cell both parents pass through; mutation moves a node to the
 // neighbouring cell that shortens the path most while keeping both its moves legal; loops are
 // cut; the best chromosome always survives (elitism).
+// The seed's part A describes no operators at all. Its plain variant (guided_initial and
+// shortening_mutation false) keeps only what any grid-path GA has: initial walks that pick each
+// move uniformly at random, and a mutation that moves a node to a random neighbouring cell that
+// keeps both its moves legal (the random mutation Tuncer and Yildirim improve on).
 #include "planning/grid/grid_planner.h"
 
 namespace cosim {
@@ -19,6 +23,8 @@ struct GeneticAlgorithmParams {
   double crossover_probability = 0.6;
   double mutation_probability = 0.05;  // per interior node
   int directions = 8;                  // 4, 8, 16, 24 or 32
+  bool guided_initial = true;          // initial walks guided by the ants' heuristic (else uniform)
+  bool shortening_mutation = true;     // Tuncer-Yildirim mutation (else a random legal neighbour)
   bool local_search = false;           // not in the seed: staircase shortcut on every child
 };
 

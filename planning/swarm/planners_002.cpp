@@ -38,6 +38,9 @@ AntGridParams readAntGridParams(ParamSet& params) {
   p.deposit = params.getDouble("deposit", p.deposit, 0.0, 1e6);
   p.initial_pheromone = params.getDouble("initial_pheromone", p.initial_pheromone, 1e-12, 1e6);
   p.directions = readDirections(params, p.directions);
+  p.heading = params.getString("heading", "turn_and_goal", {"turn_and_goal", "turn"}) == "turn"
+                  ? AntHeading::Turn
+                  : AntHeading::TurnAndGoal;
   p.local_search = params.getBool("local_search", p.local_search);
   return p;
 }
@@ -63,6 +66,8 @@ GeneticAlgorithmParams readGeneticAlgorithmParams(ParamSet& params) {
   p.mutation_probability =
       params.getDouble("mutation_probability", p.mutation_probability, 0.0, 1.0);
   p.directions = readDirections(params, p.directions);
+  p.guided_initial = params.getBool("guided_initial", p.guided_initial);
+  p.shortening_mutation = params.getBool("shortening_mutation", p.shortening_mutation);
   p.local_search = params.getBool("local_search", p.local_search);
   return p;
 }

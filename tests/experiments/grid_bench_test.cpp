@@ -18,7 +18,7 @@
 #include "experiments/reproduce/reproduction.h"
 
 namespace cosim::reproduce {
-std::string seed003Discrete(const Options& options);
+Report seed003Discrete(const Options& options);
 }
 
 namespace {
@@ -209,7 +209,7 @@ TEST(GridAStarVsBoostBench, QuickSectionComparesBothGridsWithIdenticalLengths) {
 TEST(Seed003DiscreteReproduction, QuickRunReportsAllFourTablesWithPaths) {
   cosim::reproduce::Options o;
   o.quick = true;
-  const std::string md = cosim::reproduce::seed003Discrete(o);
+  const std::string md = cosim::reproduce::seed003Discrete(o).markdown;
   for (const char* t : {"Tab. 1", "Tab. 2", "Tab. 3", "Tab. 4"})
     EXPECT_NE(md.find(t), std::string::npos) << t;
   EXPECT_EQ(md.find("no path"), std::string::npos);

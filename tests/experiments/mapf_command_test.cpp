@@ -10,9 +10,9 @@
 #include "experiments/reproduce/reproduction.h"
 
 namespace cosim::reproduce {
-std::string seed004Planners(const Options& options);
-std::string seed004WhcaWindow(const Options& options);
-std::string seed004MapfScaling(const Options& options);
+Report seed004Planners(const Options& options);
+Report seed004WhcaWindow(const Options& options);
+Report seed004MapfScaling(const Options& options);
 }  // namespace cosim::reproduce
 
 using namespace cosim;
@@ -83,12 +83,12 @@ TEST(MapfCommand, ExitCodesForFailureAndBadInput) {
 TEST(Seed004Reproductions, QuickRunsProduceTheirTables) {
   reproduce::Options o;
   o.quick = true;
-  const std::string planners = reproduce::seed004Planners(o);
+  const std::string planners = reproduce::seed004Planners(o).markdown;
   EXPECT_NE(planners.find("| maze | 5 | CBS (optimal) | 100 |"), std::string::npos) << planners;
   EXPECT_NE(planners.find("no numeric results"), std::string::npos);
-  const std::string window = reproduce::seed004WhcaWindow(o);
+  const std::string window = reproduce::seed004WhcaWindow(o).markdown;
   EXPECT_NE(window.find("| bottleneck | 5 | dynamic |"), std::string::npos) << window;
-  const std::string scaling = reproduce::seed004MapfScaling(o);
+  const std::string scaling = reproduce::seed004MapfScaling(o).markdown;
   EXPECT_NE(scaling.find("| empty-8-8 | 5 | 1 | 100 |"), std::string::npos) << scaling;
 }
 

@@ -279,6 +279,54 @@ TEST(Ants002Ga, LegalPathsAndElitismNeverLosesTheBest) {
   EXPECT_EQ(r1.counters.at("iterations"), 50);
 }
 
+TEST(Ants002AntGrid, SeedsTurnHeuristicCountsDirectionCodeSteps) {
+  EXPECT_DOUBLE_EQ(AntGrid::turnCost(0.0, false, M_PI / 2), 1.0);  // first move: no turn
+  EXPECT_DOUBLE_EQ(AntGrid::turnCost(0.0, true, 0.0), 1.0);
+  EXPECT_NEAR(AntGrid::turnCost(0.0, true, M_PI / 4), 2.0, 1e-12);
+  EXPECT_NEAR(AntGrid::turnCost(M_PI / 2, true, -M_PI / 4), 4.0, 1e-12);  // 135 degrees
+  EXPECT_NEAR(AntGrid::turnCost(M_PI, true, -M_PI), 1.0, 1e-12);
+}
+
+TEST(Ants002AntGrid, TurnOnlyHeuristicWandersFarFromTheOptimum) {
+  // Nothing in the seed's heuristic pulls towards the goal: on an open 40 x 40 grid the
+  // best of 20 ants x 10 iterations stays well above the straight line, where the default
+  // heuristic (with the goal direction) finds it.
+  const OccupancyGrid g(40, 40);
+  const Cell s{1, 1, 0}, t{38, 38, 0};
+  AntGridParams turn;
+  turn.ants = 20;
+  turn.iterations = 10;
+  turn.heading = AntHeading::Turn;
+  AntGridParams goal = turn;
+  goal.heading = AntHeading::TurnAndGoal;
+  AntGrid wandering(turn), guided(goal);
+  const GridPlanResult a = solve(wandering, g, s, t, 3), b = solve(guided, g, s, t, 3);
+  expectLegalPath(g, a, s, t, 8);
+  expectLegalPath(g, b, s, t, 8);
+  const double optimum = 37 * std::sqrt(2.0);
+  EXPECT_NEAR(b.length, optimum, 1e-9);
+  EXPECT_GT(a.length, 1.5 * optimum);
+}
+
+TEST(Ants002Ga, PlainVariantEvolvesLegalPathsFromRandomWalks) {
+  const OccupancyGrid g = randomMap();
+  const auto q = queries(2)[1];
+  const Cell s{q.start_x, q.start_y, 0}, t{q.goal_x, q.goal_y, 0};
+  GeneticAlgorithmParams plain;
+  plain.guided_initial = false;
+  plain.shortening_mutation = false;
+  GeneticAlgorithmParams plain0 = plain;
+  plain0.generations = 0;
+  GeneticAlgorithm initial(plain0), evolved(plain), ours;
+  const GridPlanResult r0 = solve(initial, g, s, t, 7), r1 = solve(evolved, g, s, t, 7);
+  const GridPlanResult guided = solve(ours, g, s, t, 7);
+  expectLegalPath(g, r0, s, t, 8);
+  expectLegalPath(g, r1, s, t, 8);
+  EXPECT_LE(r1.length, r0.length);               // elitism keeps the best
+  EXPECT_GT(r0.length, 2.0 * q.optimal_length);  // uniform walks meander
+  EXPECT_GT(r1.length, guided.length);           // the guided GA with its mutation is better
+}
+
 TEST(Ants002Pso, DecodedPathsAreLegalAndNearOptimalOnRandom32) {
   const OccupancyGrid g = randomMap();
   Pso planner;

@@ -1,4 +1,5 @@
-// The sampling planners (prm, rrt, rrt_star, rrt_star_fn, rrt_connect, informed_rrt_star):
+// The sampling planners (prm, rrt, rrt_star, rrt_star_thesis, rrt_star_fn, rrt_connect,
+// informed_rrt_star):
 // paths checked independently of CollisionWorld (dense sampling with World::distanceToObstacles),
 // determinism, convergence of RRT* to a known optimum, and failures reported, not hung.
 #include <gtest/gtest.h>
@@ -12,8 +13,8 @@
 namespace cosim {
 namespace {
 
-const std::vector<std::string> kPlanners = {"prm",         "rrt",         "rrt_star",
-                                            "rrt_star_fn", "rrt_connect", "informed_rrt_star"};
+const std::vector<std::string> kPlanners = {
+    "prm", "rrt", "rrt_star", "rrt_star_thesis", "rrt_star_fn", "rrt_connect", "informed_rrt_star"};
 
 std::unique_ptr<Planner> make(const std::string& name,
                               const std::map<std::string, std::string>& params = {}) {

@@ -1,0 +1,42 @@
+#include "experiments/reproduce/report_files.h"
+
+#include <filesystem>
+
+#include "experiments/cli/output_files.h"
+
+namespace cosim::reproduce {
+
+namespace {
+const char* kQuickNote =
+    "> **Quick run (`--quick`)**: fewer runs and smaller settings, a smoke test of the "
+    "reproduction, not its result. Run without `--quick` for the numbers to compare.";
+}  // namespace
+
+std::string reportMarkdown(const Options& options, const Report& report) {
+  if (!options.quick) return report.markdown;
+  const std::string& md = report.markdown;
+  // Under the title line if there is one, else at the top.
+  const std::size_t title_end = md.rfind('#', 0) == 0 ? md.find('\n') : std::string::npos;
+  if (title_end == std::string::npos) return std::string(kQuickNote) + "\n\n" + md;
+  return md.substr(0, title_end + 1) + "\n" + kQuickNote + "\n" + md.substr(title_end + 1);
+}
+
+std::string reportJson(const std::string& name, const Options& options, const Report& report) {
+  JsonObject doc;
+  doc.add("experiment", name)
+      .add("quick", options.quick)
+      .add("seed", static_cast<double>(options.seed))
+      .addArray("rows", report.rows);
+  return doc.str() + "\n";
+}
+
+std::string writeReportFiles(const std::string& name, const Options& options,
+                             const Report& report) {
+  const std::filesystem::path dir(options.out_dir);
+  const std::string md = reportMarkdown(options, report);
+  writeFileAtomically(dir / (name + ".json"), reportJson(name, options, report));
+  writeFileAtomically(dir / (name + ".md"), md);
+  return md;
+}
+
+}  // namespace cosim::reproduce

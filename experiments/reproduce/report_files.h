@@ -1,0 +1,20 @@
+#pragma once
+// The two files every reproduction writes (CONTRACT.md "Reproductions"): DIR/NAME.md, the report,
+// and DIR/NAME.json, {"experiment": NAME, "quick": ..., "seed": ..., "rows": [...]}.
+// A --quick run is a smoke test, not the reproduction's result, and both files say so.
+#include <string>
+
+#include "experiments/reproduce/reproduction.h"
+
+namespace cosim::reproduce {
+
+// The report as written to NAME.md: with --quick, a line under the title says it is a quick run.
+std::string reportMarkdown(const Options& options, const Report& report);
+
+// NAME.json's text.
+std::string reportJson(const std::string& name, const Options& options, const Report& report);
+
+// Writes both files into options.out_dir, each atomically; returns the markdown written.
+std::string writeReportFiles(const std::string& name, const Options& options, const Report& report);
+
+}  // namespace cosim::reproduce

@@ -1,0 +1,88 @@
+// What every `cosim reproduce` writes (CONTRACT.md "Reproductions": NAME.md and NAME.json, a
+// --quick run marked in both), and the rebuilt maps the seed-002 reproductions stand on: their
+// structure is what makes the reproductions comparable with the seed, so it is pinned here.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "experiments/reproduce/report_files.h"
+#include "experiments/reproduce/seed002_maklink_map.h"
+#include "experiments/reproduce/seed002_workspaces.h"
+#include "planning/grid/astar.h"
+#include "tests/experiments/cli_test_support.h"
+
+namespace cosim::reproduce {
+namespace {
+
+Report twoRows() {
+  Report r;
+  r.markdown = "# Title\n\nBody.\n";
+  JsonObject a, b;
+  a.add("planner", "rrt").add("length_m", 12.5);
+  b.add("planner", "rrt_star").add("length_m", 10.25);
+  r.rows = {a, b};
+  return r;
+}
+
+TEST(ReproductionFiles, QuickRunsAreMarkedUnderTheTitleAndInTheJson) {
+  Options quick;
+  quick.quick = true;
+  const std::string md = reportMarkdown(quick, twoRows());
+  EXPECT_EQ(md.rfind("# Title\n\n> **Quick run", 0), 0u) << md;
+  EXPECT_NE(md.find("Body."), std::string::npos);
+  const std::string json = reportJson("demo", quick, twoRows());
+  EXPECT_TRUE(test::jsonTrue(json, "quick"));
+  EXPECT_NE(json.find("\"experiment\": \"demo\""), std::string::npos);
+  EXPECT_NE(json.find("\"planner\": \"rrt_star\""), std::string::npos);
+  EXPECT_EQ(test::jsonNumber(json, "length_m"), 12.5);
+  Options full;
+  EXPECT_EQ(reportMarkdown(full, twoRows()), twoRows().markdown);
+  EXPECT_NE(reportJson("demo", full, twoRows()).find("\"quick\": false"), std::string::npos);
+}
+
+TEST(ReproductionFiles, TheCommandWritesBothFilesForAQuickRun) {
+  const auto dir = test::freshDir("reproduce-files");
+  const auto r = test::runCosim("reproduce seed003-discrete --quick --out " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string json = test::slurp(dir / "seed003-discrete.json");
+  const std::string md = test::slurp(dir / "seed003-discrete.md");
+  EXPECT_TRUE(test::jsonTrue(json, "quick"));
+  EXPECT_NE(json.find("\"planner\": \"lazy_theta_star\""), std::string::npos);
+  EXPECT_NE(json.find("\"map\": \"3d-3\""), std::string::npos);
+  EXPECT_NE(md.find("Quick run"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// Acceptance of issue 17: the rebuilt workspaces 2 and 3 get harder as the seed's do (its
+// first query: 610 -> 919 -> 914 cm), every optimum stays below the seed's ant length.
+TEST(Seed002Workspaces, FirstQueryJumpsInWorkspacesTwoAndThreeAndOptimaStayBelowTheSeeds) {
+  const auto ws = seed002Workspaces();
+  ASSERT_EQ(ws.size(), 3u);
+  double optimum[3][3];
+  for (int w = 0; w < 3; ++w) {
+    const OccupancyGrid g = seed002Grid(ws[w]);
+    for (int q = 0; q < 3; ++q) {
+      const Seed002Query& query = seed002Queries()[q];
+      const GridPlanResult r = planAStar(g, query.start(), query.target());
+      ASSERT_TRUE(r.success) << w << " " << q;
+      optimum[w][q] = r.length * kSeed002CellCm;
+      EXPECT_LT(optimum[w][q], kSeed002Length[w][q][0]) << w << " " << q;
+      EXPECT_GT(optimum[w][q], 0.95 * kSeed002Length[w][q][0]) << w << " " << q;
+    }
+  }
+  EXPECT_GE(optimum[1][0], 1.3 * optimum[0][0]);
+  EXPECT_GE(optimum[2][0], 1.3 * optimum[0][0]);
+  for (int q = 1; q < 3; ++q) EXPECT_LT(optimum[1][q], 1.15 * optimum[0][q]) << q;
+}
+
+TEST(Seed002MaklinkMap, HasTheSeedsLinesCrossingsAndDijkstraLength) {
+  const Seed002MaklinkMap map = seed002MaklinkMap();
+  EXPECT_EQ(map.graph.lines().size(), 26u);
+  const MaklinkRoute route = map.graph.shortestRoute(map.start, map.goal);
+  ASSERT_TRUE(route.found);
+  EXPECT_EQ(route.lines.size(), 9u);
+  EXPECT_NEAR(route.length, 507.692, 0.2);
+}
+
+}  // namespace
+}  // namespace cosim::reproduce
