@@ -17,6 +17,8 @@
 #include <tinyxml2.h>
 
 #include <Eigen/Core>
+#include <filesystem>
+#include <vector>
 
 #include "sim/scenario.h"
 
@@ -42,6 +44,10 @@ struct GroundDrive {
 // conventions above.
 void addUrdfVehicle(tinyxml2::XMLDocument& doc, tinyxml2::XMLElement* worldbody,
                     tinyxml2::XMLElement* actuator, const VehicleSpec& vehicle, double floor_z);
+
+// The mesh files a URDF names (resolved as addUrdfVehicle resolves them), for fingerprints of
+// what a run reads; nothing for a file that cannot be read (the run reports that).
+std::vector<std::filesystem::path> urdfMeshFiles(const std::filesystem::path& urdf);
 
 // The drive that addUrdfVehicle recorded for `vehicle_name` in the compiled model; false if
 // there is none (not a ground robot).
