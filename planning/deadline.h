@@ -1,6 +1,10 @@
 #pragma once
-// A wall-clock time limit that planners poll: every planner honours one, so nothing hangs.
+// A wall-clock time limit that planners poll: every planner honours one, so nothing hangs. It
+// also expires at once when the process is asked to stop (planning/stop_request.h), so that an
+// interrupt reaches every planner through the check it already makes.
 #include <chrono>
+
+#include "planning/stop_request.h"
 
 namespace cosim {
 
@@ -12,7 +16,7 @@ class Deadline {
         end_(start_ + std::chrono::duration_cast<Clock::duration>(
                           std::chrono::duration<double>(seconds))) {}
 
-  bool expired() const { return Clock::now() >= end_; }
+  bool expired() const { return stopRequested() || Clock::now() >= end_; }
   double elapsedMs() const {
     return std::chrono::duration<double, std::milli>(Clock::now() - start_).count();
   }
