@@ -82,6 +82,9 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
 
     int status = 0;
     if (!a->merge_only) {
+      // The merged tables of an earlier invocation go before any job runs: until this one merges
+      // again, nothing in the folder may present a result whose inputs have since changed.
+      removeStaleResults(out, {"results.csv", "summary.csv", "figure.png", "figure.svg"});
       std::vector<SweepJob> mine;
       for (const auto& j : jobs)
         if (shard.owns(j.id)) mine.push_back(j);
