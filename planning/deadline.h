@@ -1,8 +1,11 @@
 #pragma once
-// A wall-clock time limit that planners poll: every planner honours one, so nothing hangs. It can
-// also carry an external stop request (e.g. set by a SIGINT handler), which ends it at once.
+// A wall-clock time limit that planners poll: every planner honours one, so nothing hangs. It
+// also expires at once when the process is asked to stop (planning/stop_request.h), so that an
+// interrupt reaches every planner through the check it already makes.
 #include <atomic>
 #include <chrono>
+
+#include "planning/stop_request.h"
 
 namespace cosim {
 
@@ -16,7 +19,9 @@ class Deadline {
         stop_(stop) {}
 
   bool expired() const { return stopRequested() || Clock::now() >= end_; }
-  bool stopRequested() const { return stop_ != nullptr && stop_->load(std::memory_order_relaxed); }
+  bool stopRequested() const {
+    return (stop_ != nullptr && stop_->load(std::memory_order_relaxed)) || ::cosim::stopRequested();
+  }
   double elapsedMs() const {
     return std::chrono::duration<double, std::milli>(Clock::now() - start_).count();
   }

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "render/json_flatten.h"
+#include "sim/temporary_name.h"
 
 namespace cosim {
 
@@ -122,7 +123,7 @@ void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& r) {
   h << "<script>" << kLoadCheck << "</script>\n</body>\n</html>\n";
 
   const std::filesystem::path target = dir / "index.html";
-  const std::filesystem::path tmp = dir / (".index.html.part" + std::to_string(getpid()));
+  const std::filesystem::path tmp = temporaryNameFor(target, ".part");
   {
     std::ofstream out(tmp);
     out << h.str();

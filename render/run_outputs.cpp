@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "planning/input_error.h"
 #include "render/figures.h"
 #include "render/html_report.h"
 #include "render/log_lookup.h"
@@ -19,9 +20,18 @@ bool interrupted(const std::atomic<bool>* flag) {
 
 int videoFrameCount(double duration, const RenderSettings& settings) {
   // The small tolerance keeps a flight of exactly k frame periods at k + 1 frames despite
-  // rounding in the logged times.
-  return std::max(
-      1, static_cast<int>(std::floor(duration / settings.speedup * settings.fps + 1e-6)) + 1);
+  // rounding in the logged times. Counted in double: a duration of 1e9 s must not wrap an int
+  // around to a one-frame video.
+  const double periods = std::floor(duration / settings.speedup * settings.fps + 1e-6);
+  if (!(periods >= 0.0)) return 1;
+  if (periods + 1.0 > static_cast<double>(kMaxVideoFrames))
+    throw InputError(
+        "", "render",
+        "the video would have " + std::to_string(static_cast<long long>(periods + 1.0)) +
+            " frames (" + std::to_string(duration) + " s at " + std::to_string(settings.fps) +
+            " frames per second, " + std::to_string(settings.speedup) + "x speed-up), more than " +
+            std::to_string(kMaxVideoFrames) + ": raise render.speedup or lower render.fps");
+  return static_cast<int>(periods) + 1;
 }
 
 int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,

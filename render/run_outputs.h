@@ -15,8 +15,12 @@
 
 namespace cosim {
 
+// Frames of one video: 10 hours at 30 frames per second, more than anyone renders on purpose.
+constexpr int kMaxVideoFrames = 1000000;
+
 // Frames of a video of a `duration`-second flight: one every speedup/fps simulated seconds,
-// from t = 0 through the end (a 20 s flight at speedup 1 is a 20 s video).
+// from t = 0 through the end (a 20 s flight at speedup 1 is a 20 s video). Throws InputError
+// (place "render") for more than kMaxVideoFrames.
 int videoFrameCount(double duration, const RenderSettings& settings);
 
 // Renders the whole flight from one camera into `out` (an .mp4 or a PNG folder). Returns the

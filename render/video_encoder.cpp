@@ -4,6 +4,8 @@
 
 #include <stdexcept>
 
+#include "sim/temporary_name.h"
+
 namespace cosim {
 
 std::string shellQuote(const std::string& s) {
@@ -41,11 +43,7 @@ std::vector<std::string> ffmpegArguments(int width, int height, int fps,
 }
 
 std::filesystem::path temporaryName(const std::filesystem::path& path) {
-  std::string name = ".";  // piece by piece: GCC 12's -Wrestrict misfires on operator+ chains
-  name += path.filename().string();
-  name += ".part";
-  name += std::to_string(getpid());
-  return path.parent_path() / name;
+  return temporaryNameFor(path, ".part");
 }
 
 void removeOutput(const std::filesystem::path& p) {

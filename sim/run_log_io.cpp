@@ -4,10 +4,13 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
 #include "planning/input_error.h"
+#include "planning/input_file.h"
+#include "sim/csv_text.h"
 
 namespace cosim {
 
@@ -24,61 +27,101 @@ void put(std::string& out, double v) {
   out += buf;
 }
 
-std::vector<std::string> splitCsvLine(const std::string& line) {
-  std::vector<std::string> fields;
-  std::string field;
-  std::istringstream in(line);
-  while (std::getline(in, field, ',')) fields.push_back(field);
-  if (!line.empty() && line.back() == ',') fields.emplace_back();
-  return fields;
-}
-
-// Reads a CSV file with a header into rows of named fields.
-struct CsvTable {
-  std::map<std::string, std::size_t> column;
-  std::vector<std::vector<std::string>> rows;
-};
-
-CsvTable readCsv(const std::string& path, const std::vector<std::string>& required) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, "", "cannot open file");
-  CsvTable t;
-  std::string line;
-  if (!std::getline(in, line)) throw InputError(path, "line 1", "empty file, expected a header");
-  if (!line.empty() && line.back() == '\r') line.pop_back();
-  const auto header = splitCsvLine(line);
-  for (std::size_t i = 0; i < header.size(); ++i) t.column[header[i]] = i;
-  for (const auto& r : required)
-    if (!t.column.count(r)) throw InputError(path, "line 1", "missing column '" + r + "'");
-  for (int n = 2; std::getline(in, line); ++n) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.empty()) continue;
-    auto f = splitCsvLine(line);
-    if (f.size() != header.size())
-      throw InputError(path, "line " + std::to_string(n),
-                       "has " + std::to_string(f.size()) + " fields, header has " +
-                           std::to_string(header.size()));
-    t.rows.push_back(std::move(f));
+// A run log read line by line, each line split into its fields by the header's column names.
+// Never holds more than one line: a log of a gigabyte costs its samples, not its text.
+class CsvLogReader {
+ public:
+  CsvLogReader(const std::string& path, const std::vector<std::string>& required) : path_(path) {
+    checkInputFile(path, kMaxLogFileBytes, "run log");
+    in_.open(path, std::ios::binary);
+    if (!in_) throw InputError(path, "", "cannot open file");
+    if (!nextLine()) throw InputError(path, "line 1", "empty file, expected a header");
+    if (!splitCsvRecord(line_, header_))
+      throw InputError(path, "line 1", "malformed CSV header (unbalanced quotes)");
+    for (std::size_t i = 0; i < header_.size(); ++i) column_[header_[i]] = i;
+    for (const auto& r : required)
+      if (!column_.count(r)) throw InputError(path, "line 1", "missing column '" + r + "'");
   }
-  return t;
-}
 
-double field(const CsvTable& t, const std::vector<std::string>& row, const std::string& name,
-             const std::string& path, std::size_t row_index) {
-  const std::string& s = row[t.column.at(name)];
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end != '\0')
-    throw InputError(path, "line " + std::to_string(row_index + 2) + ", column " + name,
-                     "not a number: '" + s + "'");
-  return v;
-}
+  // The next non-empty row, false at the end of the file.
+  bool next() {
+    while (nextLine()) {
+      if (line_.empty()) continue;
+      if (!splitCsvRecord(line_, row_))
+        throw InputError(path_, place(), "malformed CSV row (unbalanced quotes)");
+      if (row_.size() != header_.size())
+        throw InputError(path_, place(),
+                         "has " + std::to_string(row_.size()) + " fields, header has " +
+                             std::to_string(header_.size()));
+      return true;
+    }
+    return false;
+  }
+
+  bool has(const std::string& name) const { return column_.count(name) != 0; }
+  const std::string& text(const std::string& name) const { return row_[column_.at(name)]; }
+  double number(const std::string& name) const {
+    const std::string& s = text(name);
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || *end != '\0')
+      throw InputError(path_, place() + ", column " + name, "not a number: '" + s + "'");
+    return v;
+  }
+  std::string place() const { return "line " + std::to_string(line_number_); }
+  const std::string& path() const { return path_; }
+
+ private:
+  // Lines longer than any row cosim writes are refused before they fill memory.
+  static constexpr std::size_t kMaxLineBytes = 1 << 16;
+
+  bool nextLine() {
+    buffer_.resize(kMaxLineBytes + 2);
+    in_.getline(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    const auto got = static_cast<std::size_t>(in_.gcount());
+    if (in_.bad()) throw InputError(path_, "", "cannot read file");
+    const bool at_end = in_.eof();
+    if (in_.fail()) {
+      if (got == 0 && at_end) return false;
+      ++line_number_;
+      throw InputError(path_, place(),
+                       "longer than " + std::to_string(kMaxLineBytes) + " characters");
+    }
+    ++line_number_;
+    // gcount() counts the line end it consumed; the last line may have none.
+    line_.assign(buffer_.data(), at_end ? got : got - 1);
+    if (!line_.empty() && line_.back() == '\r') line_.pop_back();
+    return true;
+  }
+
+  std::string path_;
+  std::ifstream in_;
+  std::vector<char> buffer_;
+  std::string line_;
+  std::size_t line_number_ = 0;
+  std::vector<std::string> header_, row_;
+  std::map<std::string, std::size_t> column_;
+};
 
 VehicleLog& vehicleNamed(RunLog& log, const std::string& name) {
   for (auto& v : log.vehicles)
     if (v.name == name) return v;
   log.vehicles.emplace_back().name = name;
   return log.vehicles.back();
+}
+
+// A sample's time: finite, within the run, never going back for one vehicle (lookups by time
+// are binary searches, and the video's frame count follows the last time).
+double sampleTime(const CsvLogReader& in, const LogBounds& bounds, double previous,
+                  const std::string& who) {
+  const double t = in.number("t");
+  if (!std::isfinite(t) || t < 0.0 || t > bounds.max_time)
+    throw InputError(in.path(), in.place() + ", column t",
+                     "time " + std::to_string(t) + " s is outside the run (0 to " +
+                         std::to_string(bounds.max_time) + " s)");
+  if (t < previous)
+    throw InputError(in.path(), in.place() + ", column t", "time goes backwards for " + who);
+  return t;
 }
 
 }  // namespace
@@ -111,7 +154,7 @@ std::string timeseriesCsv(const RunLog& log) {
       put(out, s.est_att.y());
       put(out, s.est_att.z());
       for (int i = 0; i < 4; ++i) put(out, s.rotor_speed[i]);
-      out += v.name + "\n";
+      out += csvField(v.name) + "\n";
     }
   }
   return out;
@@ -125,7 +168,7 @@ std::string pathCsv(const RunLog& log) {
       char buf[96];
       std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g", p.x(), p.y(), p.z());
       out += buf;
-      out += many ? "," + v.name + "\n" : "\n";
+      out += many ? "," + csvField(v.name) + "\n" : "\n";
     }
   }
   return out;
@@ -138,7 +181,7 @@ std::string movingObstaclesCsv(const RunLog& log) {
       char buf[128];
       std::snprintf(buf, sizeof buf, "%.9g,", o.t[i]);
       out += buf;
-      out += o.name;
+      out += csvField(o.name);
       std::snprintf(buf, sizeof buf, ",%.9g,%.9g,%.9g\n", o.pos[i].x(), o.pos[i].y(), o.pos[i].z());
       out += buf;
     }
@@ -146,44 +189,70 @@ std::string movingObstaclesCsv(const RunLog& log) {
   return out;
 }
 
-void readTimeseriesCsv(const std::string& path, RunLog& log) {
-  const CsvTable t = readCsv(path, {"t", "ref_x", "ref_y", "ref_z", "x", "y", "z", "qw", "qx", "qy",
-                                    "qz", "vx", "vy", "vz", "vehicle"});
-  for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    const auto& r = t.rows[i];
-    auto f = [&](const char* name) { return field(t, r, name, path, i); };
+void readTimeseriesCsv(const std::string& path, RunLog& log, const LogBounds& bounds) {
+  const std::vector<std::string> required = {"t",  "ref_x", "ref_y", "ref_z", "x",
+                                             "y",  "z",     "qw",    "qx",    "qy",
+                                             "qz", "vx",    "vy",    "vz",    "vehicle"};
+  // First the rows per vehicle, so that each vehicle's samples are allocated once (a growing
+  // vector holds up to twice its samples while it copies).
+  {
+    CsvLogReader count(path, required);
+    std::map<std::string, std::size_t> rows;
+    while (count.next()) {
+      std::size_t& n = rows[count.text("vehicle")];
+      if (++n > bounds.max_rows_per_vehicle)
+        throw InputError(path, count.place(),
+                         "more than " + std::to_string(bounds.max_rows_per_vehicle) +
+                             " rows for vehicle '" + count.text("vehicle") +
+                             "', more than the scenario's run can log");
+      if (rows.size() > bounds.max_vehicles)
+        throw InputError(
+            path, count.place(),
+            "more vehicles than the scenario has (" + std::to_string(bounds.max_vehicles) + ")");
+    }
+    for (const auto& [name, n] : rows) vehicleNamed(log, name).samples.reserve(n);
+  }
+  CsvLogReader in(path, required);
+  const bool has_ref_vel = in.has("ref_vx"), has_thrust = in.has("thrust3"),
+             has_estimate = in.has("est_qz");
+  while (in.next()) {
+    const auto f = [&](const char* name) { return in.number(name); };
+    VehicleLog& v = vehicleNamed(log, in.text("vehicle"));
     LogSample s;
-    s.t = f("t");
+    s.t = sampleTime(in, bounds, v.samples.empty() ? 0.0 : v.samples.back().t,
+                     "vehicle '" + v.name + "'");
     s.ref_pos = {f("ref_x"), f("ref_y"), f("ref_z")};
-    if (t.column.count("ref_vx")) s.ref_vel = {f("ref_vx"), f("ref_vy"), f("ref_vz")};
+    if (has_ref_vel) s.ref_vel = {f("ref_vx"), f("ref_vy"), f("ref_vz")};
     s.pos = {f("x"), f("y"), f("z")};
     s.vel = {f("vx"), f("vy"), f("vz")};
     s.att = Eigen::Quaterniond(f("qw"), f("qx"), f("qy"), f("qz")).normalized();
-    if (t.column.count("thrust3"))
-      s.rotor_thrust = {f("thrust0"), f("thrust1"), f("thrust2"), f("thrust3")};
+    if (has_thrust) s.rotor_thrust = {f("thrust0"), f("thrust1"), f("thrust2"), f("thrust3")};
     // The estimate (logs from before sensing was simulated have none: the truth was seen).
-    if (t.column.count("est_qz")) {
+    if (has_estimate) {
       s.est_pos = {f("est_x"), f("est_y"), f("est_z")};
       s.est_vel = {f("est_vx"), f("est_vy"), f("est_vz")};
-      s.est_att = Eigen::Quaterniond(f("est_qw"), f("est_qx"), f("est_qy"), f("est_qz")).normalized();
+      s.est_att =
+          Eigen::Quaterniond(f("est_qw"), f("est_qx"), f("est_qy"), f("est_qz")).normalized();
     } else {
       s.est_pos = s.pos;
       s.est_vel = s.vel;
       s.est_att = s.att;
     }
-    vehicleNamed(log, r[t.column.at("vehicle")]).samples.push_back(s);
+    v.samples.push_back(s);
   }
 }
 
-void readPathCsv(const std::string& path, RunLog& log) {
-  const CsvTable t = readCsv(path, {"x", "y", "z"});
-  const bool named = t.column.count("vehicle") != 0;
-  for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    const auto& r = t.rows[i];
-    const Eigen::Vector3d p(field(t, r, "x", path, i), field(t, r, "y", path, i),
-                            field(t, r, "z", path, i));
+void readPathCsv(const std::string& path, RunLog& log, const LogBounds& bounds) {
+  CsvLogReader in(path, {"x", "y", "z"});
+  const bool named = in.has("vehicle");
+  std::size_t rows = 0;
+  while (in.next()) {
+    if (++rows > bounds.max_path_points)
+      throw InputError(path, in.place(),
+                       "more than " + std::to_string(bounds.max_path_points) + " waypoints");
+    const Eigen::Vector3d p(in.number("x"), in.number("y"), in.number("z"));
     if (named)
-      vehicleNamed(log, r[t.column.at("vehicle")]).planned_path.push_back(p);
+      vehicleNamed(log, in.text("vehicle")).planned_path.push_back(p);
     else if (!log.vehicles.empty())
       log.vehicles.front().planned_path.push_back(p);
     else
@@ -191,27 +260,33 @@ void readPathCsv(const std::string& path, RunLog& log) {
   }
 }
 
-void readMovingObstaclesCsv(const std::string& path, RunLog& log) {
-  const CsvTable t = readCsv(path, {"t", "name", "x", "y", "z"});
+void readMovingObstaclesCsv(const std::string& path, RunLog& log, const LogBounds& bounds) {
+  CsvLogReader in(path, {"t", "name", "x", "y", "z"});
   const std::size_t first = log.moving_obstacles.size();
-  for (std::size_t i = 0; i < t.rows.size(); ++i) {
-    const auto& r = t.rows[i];
-    const std::string& name = r[t.column.at("name")];
+  std::size_t rows = 0;
+  // Saturating: the unbounded defaults would wrap their product to 1.
+  const std::size_t max_rows =
+      bounds.max_moving_obstacles != 0 && bounds.max_rows_per_vehicle >
+                                              std::numeric_limits<std::size_t>::max() /
+                                                  bounds.max_moving_obstacles
+          ? std::numeric_limits<std::size_t>::max()
+          : bounds.max_rows_per_vehicle * bounds.max_moving_obstacles;
+  while (in.next()) {
+    if (++rows > max_rows)
+      throw InputError(path, in.place(), "more rows than the scenario's run can log");
+    const std::string& name = in.text("name");
     auto it = std::find_if(log.moving_obstacles.begin() + static_cast<std::ptrdiff_t>(first),
                            log.moving_obstacles.end(),
                            [&](const MovingObstacleLog& o) { return o.name == name; });
     if (it == log.moving_obstacles.end()) {
+      if (log.moving_obstacles.size() - first >= bounds.max_moving_obstacles)
+        throw InputError(path, in.place(), "more moving obstacles than the scenario has");
       log.moving_obstacles.emplace_back().name = name;
       it = log.moving_obstacles.end() - 1;
     }
-    const double time = field(t, r, "t", path, i);
-    // The renderer looks positions up by time (a binary search).
-    if (!it->t.empty() && time < it->t.back())
-      throw InputError(path, "line " + std::to_string(i + 2),
-                       "time goes backwards for obstacle '" + name + "'");
-    it->t.push_back(time);
-    it->pos.emplace_back(field(t, r, "x", path, i), field(t, r, "y", path, i),
-                         field(t, r, "z", path, i));
+    it->t.push_back(
+        sampleTime(in, bounds, it->t.empty() ? 0.0 : it->t.back(), "obstacle '" + name + "'"));
+    it->pos.emplace_back(in.number("x"), in.number("y"), in.number("z"));
   }
 }
 

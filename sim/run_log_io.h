@@ -3,6 +3,8 @@
 // planned waypoints) and, in runs with moving obstacles, moving_obstacles.csv (t, name, x, y,
 // z: each obstacle's centre at each logged instant). `cosim render` reads them back to
 // re-render without re-simulating.
+#include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -14,13 +16,24 @@ std::string timeseriesCsv(const RunLog& log);
 std::string pathCsv(const RunLog& log);
 std::string movingObstaclesCsv(const RunLog& log);
 
+// What a log read back may hold: what the scenario's run could have logged (logBoundsFor in
+// sim/scenario.h), so that a doctored file can neither fill memory nor stretch the video.
+struct LogBounds {
+  double max_time = std::numeric_limits<double>::infinity();  // s: every t in [0, max_time]
+  std::size_t max_rows_per_vehicle = std::numeric_limits<std::size_t>::max();
+  std::size_t max_vehicles = std::numeric_limits<std::size_t>::max();
+  std::size_t max_moving_obstacles = std::numeric_limits<std::size_t>::max();
+  std::size_t max_path_points = std::numeric_limits<std::size_t>::max();
+};
+
 // Reads what timeseriesCsv/pathCsv wrote into `log` (samples and planned paths per vehicle, in
-// order of first appearance). Throws InputError naming the file and line on malformed input.
-void readTimeseriesCsv(const std::string& path, RunLog& log);
-void readPathCsv(const std::string& path, RunLog& log);
+// order of first appearance), streaming: memory holds the samples, never the file. Throws
+// InputError naming the file and line on malformed input, a time outside [0, max_time] or going
+// backwards, and more rows than `bounds` allow.
+void readTimeseriesCsv(const std::string& path, RunLog& log, const LogBounds& bounds = {});
+void readPathCsv(const std::string& path, RunLog& log, const LogBounds& bounds = {});
 // Appends the obstacles of moving_obstacles.csv to log.moving_obstacles (in order of first
-// appearance; their radius is not in the file and stays 0). Throws InputError as above, also
-// when an obstacle's times go backwards.
-void readMovingObstaclesCsv(const std::string& path, RunLog& log);
+// appearance; their radius is not in the file and stays 0). Throws InputError as above.
+void readMovingObstaclesCsv(const std::string& path, RunLog& log, const LogBounds& bounds = {});
 
 }  // namespace cosim

@@ -133,4 +133,10 @@ Scenario parseScenario(const std::string& text, const std::string& file,
 // Where the bundled models live (COSIM_MODELS_DIR env var, else the source tree's models/).
 std::filesystem::path modelsDirectory();
 
+// The file a vehicle's `model:` names: a path ending in .urdf (relative to the scenario's
+// folder), else models/<model>.xml (a quadrotor) or models/<model>.urdf (a bundled ground
+// robot). `ground` says which kind; the file may not exist.
+std::filesystem::path resolveModelFile(const std::string& model,
+                                       const std::filesystem::path& scenario_dir, bool& ground);
+
 }  // namespace cosim

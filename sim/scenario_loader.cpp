@@ -5,9 +5,11 @@
 
 #include "planning/grid/movingai.h"
 #include "planning/input_error.h"
+#include "planning/input_file.h"
 #include "planning/worlds/grid_map_world.h"
 #include "sim/scenario.h"
 #include "sim/scenario_sensing.h"
+#include "sim/yaml_document.h"
 #include "sim/yaml_reader.h"
 
 namespace cosim {
@@ -15,8 +17,14 @@ namespace cosim {
 namespace {
 
 constexpr double kMaxWorldExtent = 10000.0;  // m; larger worlds are surely a units mistake
-constexpr std::size_t kMaxObstacles = 100000;
+// MuJoCo's compiler, its collision phase, the planners' worlds and the clearance metric all
+// scale with the number of obstacles: 5 000 boxes took 4.4 s to compile here, 20 000 took 22 s
+// (one 500 m world, a loaded 2-core machine). The bundled worlds have at most 300.
+constexpr std::size_t kMaxObstacles = 10000;
 constexpr std::size_t kMaxWaypoints = 100000;
+constexpr std::size_t kMaxVehicleNameLength = 64;
+// Point-in-obstacle tests the loader may make (checkPlacementWork): about 2 s here.
+constexpr double kMaxPlacementChecks = 2e8;
 // The flight log keeps one sample (about 250 bytes) per vehicle per control step, reserved up
 // front: 20 million samples is about 5 GB. More is a mistake (a day at 10 kHz), refused before
 // anything is allocated.
@@ -62,8 +70,11 @@ void readGridMap(const YamlReader& r, const YAML::Node& n, const std::filesystem
   GridMapSpec& g = s.grid_map;
   const std::string file = r.text(n["file"], key + ".file");
   g.file = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : dir / file;
-  if (!std::filesystem::exists(g.file))
-    r.fail(n["file"], key + ".file", "file not found: " + g.file.string());
+  try {
+    checkInputFile(g.file.string(), kMaxMapFileBytes, "MovingAI map");
+  } catch (const InputError& e) {
+    r.fail(n["file"], key + ".file", g.file.string() + ": " + e.problem());
+  }
   if (n["cell"]) g.cell = r.number(n["cell"], key + ".cell", 0.01, 100.0);
   if (n["height"]) g.height = r.number(n["height"], key + ".height", 0.01, 100.0);
   if (n["ceiling"]) g.ceiling = r.number(n["ceiling"], key + ".ceiling", 0.02, 1000.0);
@@ -85,7 +96,11 @@ void readGridMap(const YamlReader& r, const YAML::Node& n, const std::filesystem
       g.grid.setBlocked(static_cast<int>(x), static_cast<int>(y), 0, true);
     }
   }
-  s.world = worldFromGridMap(g.grid, g.height, g.ceiling);
+  try {
+    s.world = worldFromGridMap(g.grid, g.height, g.ceiling);
+  } catch (const InputError& e) {
+    r.fail(n["file"], key + ".file", e.problem());
+  }
 }
 
 // Values given with --set come from the command line, not from a line of the file (YAML
@@ -158,6 +173,33 @@ void checkPointPlacement(const YamlReader& r, const YAML::Node& n, const std::st
                  std::to_string(i) + "])");
 }
 
+// Every point of the scenario (vehicles' starts, goals and waypoints, moving obstacles' paths)
+// is checked against every obstacle. Both lists are long only together by mistake (or by an
+// alias repeating a long path), and the product is what costs: refused before it is paid.
+void checkPlacementWork(const YamlReader& r, const YAML::Node& root, const Scenario& s) {
+  const auto length = [](const YAML::Node& n) {
+    return n.IsDefined() && n.IsSequence() ? n.size() : std::size_t{0};
+  };
+  const auto member = [](const YAML::Node& n, const char* key) {
+    return n.IsDefined() && n.IsMap() ? n[key] : YAML::Node();
+  };
+  double points = 0;
+  const YAML::Node vehicles = member(root, "vehicles");
+  for (std::size_t i = 0; i < length(vehicles); ++i)
+    points += 2.0 + static_cast<double>(length(member(vehicles[i], "waypoints")));
+  const YAML::Node moving = member(member(root, "world"), "moving_obstacles");
+  for (std::size_t i = 0; i < length(moving); ++i)
+    points += static_cast<double>(length(member(moving[i], "path")));
+  const double checks = points * static_cast<double>(s.world.obstacles.size());
+  if (checks > kMaxPlacementChecks)
+    r.fail(root["world"], "world",
+           std::to_string(static_cast<long long>(points)) + " points x " +
+               std::to_string(s.world.obstacles.size()) + " obstacles = " +
+               std::to_string(static_cast<long long>(checks)) + " placement checks, more than " +
+               std::to_string(static_cast<long long>(kMaxPlacementChecks)) +
+               ": use fewer waypoints or fewer obstacles");
+}
+
 // world.moving_obstacles[i]: {type: cylinder, radius, height, path: [[x, y], ...], speed, loop}
 // or {type: box, size: [x, y, z], ...}. Path points must be inside the bounds and clear of the
 // static obstacles.
@@ -202,34 +244,39 @@ void readMovingObstacle(const YamlReader& r, const YAML::Node& n, const std::str
   s.moving_obstacles.push_back(std::move(o));
 }
 
+// Vehicle names: 1 to kMaxVehicleNameLength printable ASCII characters other than space and '/'
+// (MuJoCo names are "<vehicle>/<part>"). Commas and quotes are fine (the CSV files quote them);
+// line breaks and other control bytes would split a log's rows. "" if `name` is fine.
+std::string vehicleNameProblem(const std::string& name) {
+  if (name.size() > kMaxVehicleNameLength)
+    return "a vehicle name has at most " + std::to_string(kMaxVehicleNameLength) +
+           " characters (this one has " + std::to_string(name.size()) + ")";
+  for (const char c : name) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte <= 0x20 || byte >= 0x7f || c == '/')
+      return "vehicle names are printable ASCII without spaces or '/' (this one has " +
+             (byte < 0x20 || byte == 0x7f ? std::string("a control character")
+              : byte >= 0x80              ? std::string("a non-ASCII character")
+                                          : "'" + std::string(1, c) + "'") +
+             ")";
+  }
+  return "";
+}
+
 void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& key,
                  const std::filesystem::path& scenario_dir, Scenario& s) {
   r.checkKeys(n, key, {"name", "model", "start", "goal", "waypoints", "yaw"});
   VehicleSpec v;
   v.name =
       n["name"] ? r.text(n["name"], key + ".name") : "uav" + std::to_string(s.vehicles.size() + 1);
-  if (v.name.find_first_of("/ \t") != std::string::npos)
-    r.fail(n["name"], key + ".name", "vehicle names may not contain '/' or spaces");
+  if (const std::string why = vehicleNameProblem(v.name); !why.empty())
+    r.fail(n["name"], key + ".name", why);
   for (const auto& other : s.vehicles)
     if (other.name == v.name)
       r.fail(n["name"], key + ".name", "duplicate vehicle name '" + v.name + "'");
   if (!n["model"]) r.fail(n, key, "vehicle needs a 'model' (cf2, quad_1500g, or a URDF path)");
   v.model = r.text(n["model"], key + ".model");
-  const bool is_urdf = v.model.size() > 5 && v.model.substr(v.model.size() - 5) == ".urdf";
-  if (is_urdf) {
-    v.model_file = std::filesystem::path(v.model).is_absolute() ? std::filesystem::path(v.model)
-                                                                : scenario_dir / v.model;
-    v.ground = true;
-  } else {
-    v.model_file = modelsDirectory() / (v.model + ".xml");
-    if (!std::filesystem::exists(v.model_file)) {
-      const auto urdf = modelsDirectory() / (v.model + ".urdf");
-      if (std::filesystem::exists(urdf)) {
-        v.model_file = urdf;
-        v.ground = true;
-      }
-    }
-  }
+  v.model_file = resolveModelFile(v.model, scenario_dir, v.ground);
   if (!std::filesystem::exists(v.model_file))
     r.fail(n["model"], key + ".model",
            "no model '" + v.model + "' (looked for " + v.model_file.string() + ")");
@@ -307,24 +354,32 @@ std::filesystem::path modelsDirectory() {
   return COSIM_MODELS_DIR;
 }
 
+std::filesystem::path resolveModelFile(const std::string& model,
+                                       const std::filesystem::path& scenario_dir, bool& ground) {
+  ground = model.size() > 5 && model.substr(model.size() - 5) == ".urdf";
+  if (ground)
+    return std::filesystem::path(model).is_absolute() ? std::filesystem::path(model)
+                                                      : scenario_dir / model;
+  const auto xml = modelsDirectory() / (model + ".xml");
+  const auto urdf = modelsDirectory() / (model + ".urdf");
+  std::error_code ec;
+  if (!std::filesystem::exists(xml, ec) && std::filesystem::exists(urdf, ec)) {
+    ground = true;
+    return urdf;
+  }
+  return xml;
+}
+
 Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open scenario file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseScenario(text.str(), path, overrides);
+  return parseScenario(readInputFile(path, kMaxScenarioFileBytes, "scenario file"), path,
+                       overrides);
 }
 
 // parseScenario without placing errors at their --set assignments.
 static Scenario parseScenarioText(const std::string& text, const std::string& file,
                                   const std::vector<std::string>& overrides) {
   const YamlReader r(file);
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(file, "line " + std::to_string(e.mark.line + 1), "malformed YAML: " + e.msg);
-  }
+  YAML::Node root = loadYamlDocument(text, file);
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   for (const auto& o : overrides) applyYamlOverride(root, o);
   r.checkKeys(root, "",
@@ -376,6 +431,7 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
       }
     }
   }
+  checkPlacementWork(r, root, s);
   if (world["moving_obstacles"]) {
     const YAML::Node mo = world["moving_obstacles"];
     if (!mo.IsSequence()) r.fail(mo, "world.moving_obstacles", "must be a list");
@@ -387,8 +443,11 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
     const std::string inc = r.text(world["include"], "world.include");
     s.include_file =
         std::filesystem::path(inc).is_absolute() ? std::filesystem::path(inc) : dir / inc;
-    if (!std::filesystem::exists(s.include_file))
-      r.fail(world["include"], "world.include", "file not found: " + s.include_file.string());
+    try {
+      checkInputFile(s.include_file.string(), kMaxModelFileBytes, "MJCF fragment");
+    } catch (const InputError& e) {
+      r.fail(world["include"], "world.include", s.include_file.string() + ": " + e.problem());
+    }
   }
 
   // vehicles

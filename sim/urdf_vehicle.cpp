@@ -5,11 +5,13 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "planning/input_error.h"
+#include "planning/input_file.h"
 
 namespace cosim {
 
@@ -22,6 +24,12 @@ using tinyxml2::XMLElement;
 // to 95 %), typical of a small robot's motor-driver speed loop; design value. A servo's gain is
 // the driven inertia divided by it, so every robot responds alike whatever its size.
 constexpr double kDriveTimeConstant = 0.05;
+
+// A ground robot's size limits (design values, far above real robots: a mobile manipulator has
+// about 30 links, 10 deep). The depth also stays below the 100 levels of XML that tinyxml2, the
+// parser MuJoCo reads the composed world with, accepts.
+constexpr std::size_t kMaxUrdfLinks = 1000;
+constexpr std::size_t kMaxUrdfDepth = 64;
 
 std::string fmt(double v) {
   std::ostringstream s;
@@ -77,26 +85,40 @@ class ParseMessages : public console_bridge::OutputHandler {
 };
 
 urdf::ModelInterfaceSharedPtr parseUrdf(const std::string& file) {
+  const std::string text = readInputFile(file, kMaxModelFileBytes, "URDF file");
   // tinyxml2 first: it reports XML syntax errors with a line number, urdfdom does not.
   XMLDocument xml;
-  if (xml.LoadFile(file.c_str()) != tinyxml2::XML_SUCCESS) {
-    if (xml.ErrorID() == tinyxml2::XML_ERROR_FILE_NOT_FOUND ||
-        xml.ErrorID() == tinyxml2::XML_ERROR_FILE_COULD_NOT_BE_OPENED)
-      throw InputError(file, "", "cannot open URDF file");
+  if (xml.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
     throw InputError(file, "line " + std::to_string(xml.ErrorLineNum()),
                      std::string("malformed XML: ") + xml.ErrorName());
+  // Counted before urdfdom builds anything: a robot of thousands of links is a mistake that would
+  // cost seconds and gigabytes in urdfdom and MuJoCo's compiler.
+  if (const XMLElement* robot = xml.FirstChildElement("robot")) {
+    std::size_t links = 0;
+    for (const XMLElement* l = robot->FirstChildElement("link"); l;
+         l = l->NextSiblingElement("link"))
+      if (++links > kMaxUrdfLinks)
+        throw InputError(file, "line " + std::to_string(l->GetLineNum()) + ", <link>",
+                         "more than " + std::to_string(kMaxUrdfLinks) +
+                             " links (a ground robot has a few dozen at most)");
   }
-  std::ifstream in(file);
-  std::ostringstream text;
-  text << in.rdbuf();
   ParseMessages messages;
-  urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(text.str());
+  urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(text);
   if (!model)
     throw InputError(
         file, "<robot>",
         "malformed URDF: " + (messages.first_error.empty() ? std::string("rejected by urdfdom")
                                                            : messages.first_error));
   return model;
+}
+
+// Where a URDF's <mesh filename> points: file:// stripped, relative to the URDF's folder; empty
+// for package:// (which needs ROS).
+std::filesystem::path meshPath(const std::string& filename, const std::filesystem::path& dir) {
+  if (filename.rfind("package://", 0) == 0) return {};
+  const std::string name = filename.rfind("file://", 0) == 0 ? filename.substr(7) : filename;
+  const std::filesystem::path path(name);
+  return path.is_relative() ? dir / path : path;
 }
 
 struct LinkMass {
@@ -150,8 +172,9 @@ class UrdfConverter {
       body->SetAttribute("euler", ("0 0 " + fmt(v_.yaw_deg)).c_str());
       add(doc_, body, "freejoint")->SetAttribute("name", (prefix_ + "root").c_str());
     }
+    checkTreeDepth(*base);
     addLinkContents(body, *base, Eigen::Isometry3d::Identity());
-    for (const auto& j : base->child_joints) addChild(body, *j, Eigen::Isometry3d::Identity());
+    addDescendants(body, *base);
 
     if (planar)
       addHolonomicDrive(*planar, *base);
@@ -255,15 +278,15 @@ class UrdfConverter {
       case urdf::Geometry::MESH: {
         const auto& m = static_cast<const urdf::Mesh&>(*geometry);
         const std::string mesh_place = place + " <mesh filename=\"" + m.filename + "\">";
-        std::string name = m.filename;
-        if (name.rfind("package://", 0) == 0)
+        if (m.filename.rfind("package://", 0) == 0)
           throw InputError(file_, mesh_place,
                            "package:// mesh paths need ROS; give a path relative to the URDF file");
-        if (name.rfind("file://", 0) == 0) name = name.substr(7);
-        std::filesystem::path path(name);
-        if (path.is_relative()) path = dir_ / path;
-        if (!std::filesystem::is_regular_file(path))
-          throw InputError(file_, mesh_place, "mesh file not found: " + path.string());
+        const std::filesystem::path path = meshPath(m.filename, dir_);
+        try {
+          checkInputFile(path.string(), kMaxModelFileBytes, "mesh file");
+        } catch (const InputError& e) {
+          throw InputError(file_, mesh_place, "mesh " + path.string() + ": " + e.problem());
+        }
         std::string ext = path.extension().string();
         for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
         if (ext != ".stl" && ext != ".obj" && ext != ".msh")
@@ -300,7 +323,52 @@ class UrdfConverter {
     rim_radius_ = std::max(rim_radius_, t.translation().head<2>().norm() + r);
   }
 
-  void addChild(XMLElement* parent, const urdf::Joint& j, const Eigen::Isometry3d& parent_in_base) {
+  // Refuses a tree deeper than kMaxUrdfDepth below the base, measured without recursion (urdfdom
+  // accepts a chain of any length; MuJoCo's compiler recurses once per level).
+  void checkTreeDepth(const urdf::Link& base) const {
+    std::vector<std::pair<const urdf::Link*, std::size_t>> open = {{&base, 0}};
+    while (!open.empty()) {
+      const auto [link, depth] = open.back();
+      open.pop_back();
+      if (depth > kMaxUrdfDepth)
+        throw InputError(
+            file_, "link '" + link->name + "'",
+            "more than " + std::to_string(kMaxUrdfDepth) + " links below the base on one branch");
+      for (const auto& child : link->child_links) open.emplace_back(child.get(), depth + 1);
+    }
+  }
+
+  // The bodies of every link below `base`, depth first and in the URDF's order of child joints
+  // (as a recursive walk would make them), with an explicit stack.
+  void addDescendants(XMLElement* base_body, const urdf::Link& base) {
+    struct Pending {
+      XMLElement* parent;
+      const urdf::Joint* joint;
+      Eigen::Isometry3d parent_in_base;
+    };
+    std::vector<Pending> open;
+    const auto push = [&](XMLElement* parent, const urdf::Link& link, const Eigen::Isometry3d& at) {
+      for (auto j = link.child_joints.rbegin(); j != link.child_joints.rend(); ++j)
+        open.push_back({parent, j->get(), at});
+    };
+    push(base_body, base, Eigen::Isometry3d::Identity());
+    while (!open.empty()) {
+      const Pending p = open.back();
+      open.pop_back();
+      const auto [body, link, in_base] = addChild(p.parent, *p.joint, p.parent_in_base);
+      push(body, *link, in_base);
+    }
+  }
+
+  struct AddedBody {
+    XMLElement* body;
+    urdf::LinkConstSharedPtr link;
+    Eigen::Isometry3d in_base;
+  };
+
+  // The body of joint `j`'s child link, under `parent`; its own children are the caller's.
+  AddedBody addChild(XMLElement* parent, const urdf::Joint& j,
+                     const Eigen::Isometry3d& parent_in_base) {
     urdf::LinkConstSharedPtr link = model_->getLink(j.child_link_name);
     if (!link)
       throw InputError(file_, "joint '" + j.name + "' <child>",
@@ -344,7 +412,7 @@ class UrdfConverter {
     }
     if (j.type == urdf::Joint::CONTINUOUS) continuous_.push_back(&j);
     addLinkContents(body, *link, in_base);
-    for (const auto& c : link->child_joints) addChild(body, *c, in_base);
+    return {body, link, in_base};
   }
 
   // A velocity servo on `joint`: force kv (command - joint speed), kv = inertia / time constant,
@@ -461,6 +529,27 @@ class UrdfConverter {
 };
 
 }  // namespace
+
+std::vector<std::filesystem::path> urdfMeshFiles(const std::filesystem::path& urdf) {
+  std::vector<std::filesystem::path> files;
+  XMLDocument xml;
+  try {
+    const std::string text = readInputFile(urdf.string(), kMaxModelFileBytes, "URDF file");
+    if (xml.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) return files;
+  } catch (const InputError&) {
+    return files;
+  }
+  std::vector<const XMLElement*> open = {xml.RootElement()};
+  while (!open.empty() && open.back()) {
+    const XMLElement* e = open.back();
+    open.pop_back();
+    if (const char* f = e->Attribute("filename"); f && std::strcmp(e->Name(), "mesh") == 0)
+      if (const auto p = meshPath(f, urdf.parent_path()); !p.empty()) files.push_back(p);
+    for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+      open.push_back(c);
+  }
+  return files;
+}
 
 bool addUrdfVehicle(XMLDocument& doc, XMLElement* worldbody, const VehicleSpec& vehicle,
                     double floor_z) {

@@ -20,6 +20,8 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <filesystem>
+#include <vector>
 
 #include "sim/scenario.h"
 
@@ -56,6 +58,10 @@ struct GroundDrive {
 // the robot rests on the floor (a free base on wheels; a planar base floats above it).
 bool addUrdfVehicle(tinyxml2::XMLDocument& doc, tinyxml2::XMLElement* worldbody,
                     const VehicleSpec& vehicle, double floor_z);
+
+// The mesh files a URDF names (resolved as addUrdfVehicle resolves them), for fingerprints of
+// what a run reads; nothing for a file that cannot be read (the run reports that).
+std::vector<std::filesystem::path> urdfMeshFiles(const std::filesystem::path& urdf);
 
 // The drive that addUrdfVehicle recorded for `vehicle_name` in the compiled model; false if
 // there is none (not a ground robot).

@@ -5,12 +5,15 @@
 #include <cmath>
 #include <cstring>
 #include <sstream>
+#include <utility>
 
 #include "planning/input_error.h"
+#include "planning/input_file.h"
 #include "sim/ground_vehicle_handles.h"
 #include "sim/moving_obstacle_motion.h"
 #include "sim/mujoco_messages.h"
 #include "sim/urdf_vehicle.h"
+#include "sim/world_fragment.h"
 
 namespace cosim {
 
@@ -70,9 +73,11 @@ void addObstacleGeom(XMLDocument& doc, XMLElement* worldbody, const Obstacle& o,
 
 void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* custom,
                 const VehicleSpec& v) {
+  const std::string text = readInputFile(v.model_file.string(), kMaxModelFileBytes, "model file");
   XMLDocument src;
-  if (src.LoadFile(v.model_file.c_str()) != tinyxml2::XML_SUCCESS)
-    throw InputError(v.model_file.string(), "", std::string("cannot parse model XML: ") + src.ErrorStr());
+  if (src.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
+    throw InputError(v.model_file.string(), "line " + std::to_string(src.ErrorLineNum()),
+                     std::string("cannot parse model XML: ") + src.ErrorName());
   XMLElement* root = src.FirstChildElement("mujoco");
   if (!root) throw InputError(v.model_file.string(), "", "no <mujoco> root element");
   XMLElement* wb = root->FirstChildElement("worldbody");
@@ -114,6 +119,37 @@ double rotorConstant(const mjModel* m, const std::string& prefix, const char* na
     throw InputError(file, std::string("<numeric name=\"") + name + "\">",
                      "must be one number in [" + fmt(lo) + ", " + fmt(hi) + "]");
   return v;
+}
+
+// MuJoCo's message on one line (it separates its parts with line breaks).
+std::string oneLine(std::string text) {
+  for (char& c : text)
+    if (c == '\n' || c == '\r') c = ' ';
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+// The composed world did not compile: whose fault? A world fragment that does not compile on its
+// own is reported against the fragment (MuJoCo's lines are then the fragment's lines); one that
+// does, against the scenario's world.include (it clashes with the rest, e.g. a repeated name);
+// anything else against the scenario.
+InputError compileError(const Scenario& scenario, const std::string& error) {
+  if (!scenario.include_file.empty()) {
+    char alone_error[1024] = "";
+    // MuJoCo resolves the fragment's relative file names against its folder itself here.
+    mjModel* alone =
+        mj_loadXML(scenario.include_file.c_str(), nullptr, alone_error, sizeof alone_error);
+    if (!alone)
+      return InputError(
+          scenario.include_file.string(), "",
+          "MuJoCo cannot compile this world fragment (world.include): " + oneLine(alone_error));
+    mj_deleteModel(alone);
+    return InputError(scenario.file, "key world.include",
+                      "the fragment " + scenario.include_file.string() +
+                          " does not fit the composed world: " + oneLine(error));
+  }
+  return InputError(scenario.file, "world",
+                    "MuJoCo cannot compile the composed world: " + oneLine(error));
 }
 
 }  // namespace
@@ -199,10 +235,7 @@ std::string composeWorldXml(const Scenario& s) {
   floor->SetAttribute("material", "floor");
   for (std::size_t i = 0; i < s.world.obstacles.size(); ++i)
     addObstacleGeom(doc, worldbody, s.world.obstacles[i], i);
-  if (!s.include_file.empty()) {
-    XMLElement* inc = add(doc, mujoco, "include");
-    inc->SetAttribute("file", std::filesystem::absolute(s.include_file).c_str());
-  }
+  if (!s.include_file.empty()) addWorldFragment(doc, mujoco, s.include_file);
 
   XMLElement* custom = doc.NewElement("custom");
   int on_floor = 0;  // robots whose wheels touch the floor at every step
@@ -246,10 +279,7 @@ WorldModel WorldModel::fromXml(const std::string& xml, const Scenario& scenario)
   char error[1024] = "";
   mjModel* m = mj_loadXML(name, &vfs, error, sizeof error);
   mj_deleteVFS(&vfs);
-  if (!m) {
-    std::string file = scenario.vehicles.empty() ? scenario.file : scenario.vehicles[0].model_file.string();
-    throw InputError(file, "MuJoCo model", std::string("cannot compile the composed world: ") + error);
-  }
+  if (!m) throw compileError(scenario, error);
   wm.model_.reset(m);
   wm.floor_geom_ = mj_name2id(m, mjOBJ_GEOM, "floor");
 

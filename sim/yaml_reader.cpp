@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "planning/input_error.h"
+#include "sim/yaml_document.h"
 
 namespace cosim {
 
@@ -99,6 +100,11 @@ void applyYamlOverride(YAML::Node& root, const std::string& assignment) {
     value = YAML::Load(assignment.substr(eq + 1));
   } catch (const YAML::Exception& e) {
     throw InputError("command line", "--set " + path, "value is not valid YAML: " + e.msg);
+  }
+  try {
+    checkYamlStructure(value, "command line");
+  } catch (const InputError& e) {
+    throw InputError("command line", "--set " + assignment, e.problem());
   }
   // Walk the dotted path, creating mappings; yaml-cpp nodes are handles, so reassigning a child
   // handle would rebind rather than write: collect the chain and assign at the end.

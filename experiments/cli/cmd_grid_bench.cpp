@@ -9,11 +9,14 @@
 #include <iostream>
 
 #include "experiments/cli/command.h"
+#include "experiments/cli/interrupt_flag.h"
+#include "experiments/cli/option_checks.h"
 #include "experiments/cli/output_files.h"
 #include "experiments/cli/set_options.h"
 #include "planning/grid/movingai.h"
 #include "planning/input_error.h"
 #include "planning/planner_registry.h"
+#include "planning/stop_request.h"
 
 namespace cosim::cli {
 
@@ -61,12 +64,20 @@ void addGridBenchCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("scen", a->scen, "MovingAI .scen file for that map")->required();
   cmd->add_option("--planner", a->planner, "grid planner name (see cosim plan --list)")->required();
   cmd->add_option("--limit", a->limit, "plan only the first N lines (0 = all)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wholeNumberIn(0, 100000000));
   cmd->add_option("--out", a->out, "write the per-line CSV here");
   cmd->add_option("--time-limit", a->time_limit, "seconds per line (default 10)")
-      ->check(CLI::Range(0.001, 3600.0));
+      ->check(numberIn(0.001, 3600.0));
   cmd->add_option("--set", a->sets, "planner parameter, e.g. --set connectivity=4 (repeatable)");
   cmd->callback([a, &ctx] {
+    installInterruptFlag();
+    // The output is checked before any planning, and an older one at that path goes now: a
+    // refused or interrupted rerun must not leave it looking like this run's.
+    if (!a->out.empty()) {
+      checkOutputPath(a->out, "--out");
+      std::error_code ec;
+      std::filesystem::remove(a->out, ec);
+    }
     ParamSet params("command line");
     applySetOptions(a->sets, params);
     auto planner = makeGridPlanner(a->planner, params);
@@ -92,7 +103,7 @@ void addGridBenchCommand(CLI::App& app, CommandContext& ctx) {
         "id,start_x,start_y,goal_x,goal_y,optimal,length,time_us,expansions,difference,message\n";
     std::size_t solved = 0, mismatches = 0;
     double total_us = 0.0;
-    for (std::size_t i = 0; i < lines.size(); ++i) {
+    for (std::size_t i = 0; i < lines.size() && !stopRequested(); ++i) {
       const MovingAIScenarioLine& s = lines[i];
       GridQuery q;
       q.grid = &grid;
@@ -119,6 +130,12 @@ void addGridBenchCommand(CLI::App& app, CommandContext& ctx) {
                (exp != r.counters.end() ? number(exp->second, "%.0f") : "") + ",," +
                csvField(r.message) + "\n";
       }
+    }
+    if (stopRequested()) {  // the lines planned after the stop failed at once: no result
+      std::cerr << "cosim: interrupted"
+                << (a->out.empty() ? std::string() : "; " + a->out + " was not written") << "\n";
+      ctx.status = 1;
+      return;
     }
     if (!a->out.empty()) writeFileAtomically(a->out, csv);
 

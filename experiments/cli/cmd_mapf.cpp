@@ -14,6 +14,7 @@
 #include "experiments/cli/interrupt_flag.h"
 #include "experiments/cli/mapf_benchmark.h"
 #include "experiments/cli/mapf_execution.h"
+#include "experiments/cli/option_checks.h"
 #include "experiments/cli/output_files.h"
 #include "experiments/cli/run_pipeline.h"
 #include "experiments/cli/set_options.h"
@@ -68,6 +69,19 @@ std::string pathsCsv(const std::vector<MapfPath>& paths) {
   return csv;
 }
 
+// --agents: a benchmark range START:STOP:STEP is checked by parseAgentCounts; a single count must
+// be a whole number within the planners' limit.
+CLI::Validator agentCountOrRange() {
+  const CLI::Validator count = wholeNumberIn(1, kMaxMapfAgents);
+  return CLI::Validator(
+      [count](std::string& input) -> std::string {
+        if (input.find(':') != std::string::npos) return "";
+        std::string copy = input;
+        return count(copy);
+      },
+      "N or START:STOP:STEP");
+}
+
 }  // namespace
 
 void addMapfCommand(CLI::App& app, CommandContext& ctx) {
@@ -107,7 +121,8 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
       ->required();
   cmd->add_option("--agents", a->agents,
                   "number of agents N, or a benchmark range START:STOP:STEP (e.g. 10:1000:10)")
-      ->required();
+      ->required()
+      ->check(agentCountOrRange());
   cmd->add_option("--planner", a->planner,
                   "multi-robot planner name, or a comma-separated list for a benchmark "
                   "(e.g. lacam,pibt,whca_star,cbs)")
@@ -115,7 +130,7 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_flag("--keep-going", a->keep_going,
                 "benchmark: run a planner at larger counts even after it failed on a scenario");
   cmd->add_option("--window", a->window, "WHCA* window (time steps); same as --set window=W")
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumberIn(1, 1000000));
   cmd->add_option("--out", a->out, "output folder (default: a new folder under out/)");
   cmd->add_option("--set", a->sets,
                   "planner parameter, e.g. --set priorities=fixed (repeatable); in a benchmark "
@@ -123,7 +138,7 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--connectivity", a->connectivity, "4 (default, standard MAPF) or 8")
       ->check(CLI::IsMember({4, 8}));
   cmd->add_option("--time-limit", a->time_limit, "seconds per planner run (default 60)")
-      ->check(CLI::Range(0.001, 86400.0));
+      ->check(numberIn(0.001, 3600.0));
   cmd->add_option("--seed", a->seed, "random seed (LRA* noise)");
   cmd->add_option("--block", a->blocks, "extra obstacle cell X,Y (column,row; repeatable)");
   cmd->add_flag("--execute", a->execute,
@@ -133,10 +148,10 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--cell", a->cell,
                   "--execute: cell size in metres (default 0.5 when 4-connected, 0.7 when "
                   "8-connected: room for omni_base)")
-      ->check(CLI::Range(0.05, 100.0));
+      ->check(numberIn(0.05, 100.0));
   cmd->add_option("--max-time", a->max_time,
                   "--execute: simulated seconds before giving up (default 300)")
-      ->check(CLI::Range(1.0, 86400.0));
+      ->check(numberIn(1.0, 86400.0));
   cmd->add_flag("--video", a->video, "--execute: also render DIR/execution/video.mp4");
   cmd->callback([a, &ctx] {
     const std::vector<int> counts = parseAgentCounts(a->agents);
@@ -164,6 +179,11 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
     }
     const std::string scen = a->scens.front();
     const int agents = counts.front();
+    // Interruptible from here on; the folder is checked before any work and loses an earlier
+    // result at once (a failing rerun must not leave an old execution/metrics.json in place).
+    const std::atomic<bool>& interrupt = installInterruptFlag();
+    checkOutputDir(a->out);
+    removeStaleResults(a->out, {"mapf.json", "paths.csv", "execution"});
     ParamSet params("command line");
     applySetOptions(a->sets, params);
     if (a->window > 0) params.set("window", std::to_string(a->window), "--window");
@@ -208,10 +228,13 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
     query.instance = &inst;
     query.time_limit_s = a->time_limit;
     query.seed = a->seed;
-    query.stop = &installInterruptFlag();
+    query.stop = &interrupt;
     const MapfResult result = planner->solve(query);
-    if (query.stop->load()) {
-      std::cerr << "cosim: interrupted; nothing was written\n";
+    if (interrupt.load()) {  // the planner stopped early: its outcome is no result
+      std::cerr << "cosim: interrupted; "
+                << (a->out.empty() ? std::string("no folder was written")
+                                   : a->out + " holds no plan")
+                << "\n";
       ctx.status = 1;
       return;
     }
@@ -269,7 +292,7 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
     request.out_dir = exec_dir;
     request.video = a->video;
     request.progress = true;
-    request.interrupt = &installInterruptFlag();
+    request.interrupt = &interrupt;
     const RunSummary run = executeRun(execution, request);
     if (run.message == "interrupted") {
       std::cerr << "cosim: interrupted; " << exec_dir.string() << " holds no finished run\n";

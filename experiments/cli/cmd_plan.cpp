@@ -2,10 +2,12 @@
 #include <iostream>
 
 #include "experiments/cli/command.h"
+#include "experiments/cli/interrupt_flag.h"
 #include "experiments/cli/output_files.h"
 #include "experiments/cli/scenario_planning.h"
 #include "planning/input_error.h"
 #include "planning/planner_registry.h"
+#include "planning/stop_request.h"
 #include "sim/json_writer.h"
 #include "sim/world_model.h"
 
@@ -34,6 +36,9 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
       return;
     }
     if (a->scenario.empty()) throw InputError("command line", "plan", "a scenario file is required");
+    installInterruptFlag();
+    const auto dir = prepareOutputDir(a->out, "plan");
+    removeStaleResults(dir, {"plan.json", "path.csv"});
     std::vector<std::string> overrides = a->sets;
     if (!a->planner.empty()) overrides.push_back("planner.name=" + a->planner);
     Scenario s = loadScenario(a->scenario, overrides);
@@ -43,7 +48,11 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     const WorldModel world = WorldModel::build(s);
     const VehiclePlan plan = planVehicle(s, s.vehicles.front(), world.vehicles().front().params.radius,
                                          s.planner_params);
-    const auto dir = prepareOutputDir(a->out, "plan");
+    if (stopRequested()) {  // the planner stopped early: its outcome is no result
+      std::cerr << "cosim: interrupted; " << dir.string() << " holds no plan\n";
+      ctx.status = 1;
+      return;
+    }
     std::string csv = "x,y,z\n";
     for (const auto& p : plan.path.waypoints) {
       char buf[96];

@@ -1,36 +1,48 @@
 // cosim render RUN_DIR: re-render a logged run without simulating it again.
-#include <fstream>
+#include <cmath>
 #include <iostream>
-#include <sstream>
 
 #include "experiments/cli/command.h"
 #include "experiments/cli/interrupt_flag.h"
+#include "experiments/cli/option_checks.h"
+#include "experiments/cli/output_files.h"
 #include "planning/input_error.h"
+#include "planning/input_file.h"
 #include "render/run_outputs.h"
 #include "sim/run_log_io.h"
 #include "sim/world_model.h"
+#include "sim/yaml_document.h"
 
 namespace cosim::cli {
 
 namespace {
 
 std::string readText(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  if (!in) throw InputError(p.string(), "", "cannot open (is this a run folder?)");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  std::error_code ec;
+  if (!std::filesystem::exists(p, ec))
+    throw InputError(p.string(), "", "cannot open (is this a run folder?)");
+  return readInputFile(p.string(), kMaxScenarioFileBytes, "file of a run folder");
 }
 
 // The original scenario path recorded in run.json (relative paths in the scenario resolve there).
 std::string recordedScenarioFile(const std::filesystem::path& dir) {
-  const std::string json = readText(dir / "run.json");
-  const std::string key = "\"scenario_file\": \"";
-  const auto at = json.find(key);
-  if (at == std::string::npos)
-    throw InputError((dir / "run.json").string(), "scenario_file", "missing");
-  const auto end = json.find('"', at + key.size());
-  return json.substr(at + key.size(), end - at - key.size());
+  const std::string file = (dir / "run.json").string();
+  const YAML::Node json = loadYamlDocument(readText(dir / "run.json"), file);  // JSON is YAML
+  if (!json.IsMap() || !json["scenario_file"] || !json["scenario_file"].IsScalar())
+    throw InputError(file, "scenario_file", "missing");
+  return json["scenario_file"].Scalar();
+}
+
+// What the run could have logged: the scenario bounds the log it is re-rendered from.
+LogBounds logBoundsFor(const Scenario& s) {
+  LogBounds b;
+  // The last sample may fall a control period after max_time; a second is ample.
+  b.max_time = s.sim.max_time + 1.0;
+  b.max_rows_per_vehicle = static_cast<std::size_t>(std::ceil(b.max_time * s.sim.control_rate)) + 2;
+  b.max_vehicles = s.vehicles.size();
+  b.max_moving_obstacles = s.moving_obstacles.size();
+  b.max_path_points = 20000000;
+  return b;
 }
 
 }  // namespace
@@ -59,18 +71,19 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_flag("--frames", a->frames,
                 "write PNG frames (00001.png, ...) into a folder instead of a video");
   cmd->add_option("--at", a->at, "with --out FILE.png: the frame at this simulated time (s)")
-      ->check(CLI::Range(0.0, 1e9));
+      ->check(numberIn(0.0, 1e9));
   cmd->add_option("--speedup", a->speedup,
                   "simulated seconds per video second (default: the scenario's)")
-      ->check(CLI::Range(0.01, 1000.0));
+      ->check(numberIn(0.01, 1000.0));
   cmd->add_option("--fps", a->fps, "frames per second (default: the scenario's)")
-      ->check(CLI::Range(1, 240));
+      ->check(wholeNumberIn(1, 240));
   cmd->add_option("--width", a->width, "frame width in pixels, even (default: the scenario's)")
-      ->check(CLI::Range(64, 3840));
+      ->check(wholeNumberIn(64, 3840));
   cmd->add_option("--height", a->height, "frame height in pixels, even (default: the scenario's)")
-      ->check(CLI::Range(64, 2160));
+      ->check(wholeNumberIn(64, 2160));
   cmd->add_flag("--quiet", a->quiet, "no progress bar");
   cmd->callback([a, &ctx] {
+    const std::atomic<bool>& interrupt = installInterruptFlag();
     const std::filesystem::path dir = a->dir;
     const std::string yaml = readText(dir / "scenario.yaml");
     Scenario s = parseScenario(yaml, recordedScenarioFile(dir));
@@ -92,32 +105,41 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
       throw InputError("command line", "--width/--height", "must be even (H.264, yuv420p)");
     if (a->fps) s.render.fps = a->fps;
     if (a->speedup > 0) s.render.speedup = a->speedup;
+    // Where the output goes is checked before anything is read or drawn.
+    const std::string camera = s.render.camera;
+    std::filesystem::path out = a->out;
+    if (out.empty()) out = dir / (a->frames ? "frames_" + camera : "video_" + camera + ".mp4");
+    const bool one_frame = out.extension() == ".png" && !a->frames;
+    checkOutputPath(out, a->out.empty() ? "run folder" : "--out", a->frames);
     RunLog log;
     // The time series first: it names the vehicles, and a single vehicle's path.csv has no
     // vehicle column (its rows belong to the first vehicle).
-    readTimeseriesCsv((dir / "timeseries.csv").string(), log);
-    readPathCsv((dir / "path.csv").string(), log);
+    const LogBounds bounds = logBoundsFor(s);
+    readTimeseriesCsv((dir / "timeseries.csv").string(), log, bounds);
+    readPathCsv((dir / "path.csv").string(), log, bounds);
     // Where the moving obstacles were (without it they would stand at their start); runs
     // logged before the file existed have none.
     if (!s.moving_obstacles.empty() && std::filesystem::exists(dir / "moving_obstacles.csv"))
-      readMovingObstaclesCsv((dir / "moving_obstacles.csv").string(), log);
+      readMovingObstaclesCsv((dir / "moving_obstacles.csv").string(), log, bounds);
+    if (interrupt.load()) {
+      std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
+      ctx.status = 1;
+      return;
+    }
     const WorldModel world = WorldModel::build(s);  // its off-screen buffer fits the frame size
     for (std::size_t v = 0; v < log.vehicles.size() && v < s.vehicles.size(); ++v) {
       log.vehicles[v].goal = s.vehicles[v].goal();
       log.vehicles[v].radius = world.vehicles()[v].params.radius;
     }
     RunRenderer renderer(world, s, log, s.render.width, s.render.height);
-    const std::string camera = s.render.camera;
-    std::filesystem::path out = a->out;
-    if (out.empty()) out = dir / (a->frames ? "frames_" + camera : "video_" + camera + ".mp4");
-    if (out.extension() == ".png" && !a->frames) {
+    if (one_frame) {
       std::vector<std::uint8_t> rgb;
       renderer.render(a->at >= 0 ? a->at : renderer.endTime(), camera, rgb);
       writePng(out, rgb, renderer.width(), renderer.height());
     } else {
       const int frames = renderRunVideo(renderer, s.render, camera, out,
                                         a->frames ? VideoFormat::PngSequence : VideoFormat::Mp4,
-                                        !a->quiet, &installInterruptFlag());
+                                        !a->quiet, &interrupt);
       if (frames == 0) {  // SIGINT/SIGTERM: ffmpeg was stopped and its partial output deleted
         std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
         ctx.status = 1;

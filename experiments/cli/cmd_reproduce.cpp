@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "experiments/cli/command.h"
+#include "experiments/cli/option_checks.h"
 #include "experiments/cli/output_files.h"
 #include "experiments/reproduce/report_files.h"
 #include "planning/input_error.h"
@@ -78,7 +79,7 @@ void addReproduceCommand(CLI::App& app, CommandContext& ctx) {
   auto args = std::make_shared<Args>();
   cmd->add_option("name", args->name, "which experiment (see --list)");
   cmd->add_option("--runs", args->runs, "repetitions per configuration (default: the seed's)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wholeNumberIn(0, 1000000000));
   cmd->add_option("--seed", args->seed, "base random seed (run i uses seed + i)");
   cmd->add_option("--out", args->out, "output folder (default: a new folder under out/)");
   cmd->add_flag("--quick", args->quick, "a small version, for smoke tests");

@@ -5,7 +5,9 @@
 
 #include "experiments/cli/command.h"
 #include "experiments/cli/interrupt_flag.h"
+#include "experiments/cli/option_checks.h"
 #include "experiments/cli/output_files.h"
+#include "experiments/cli/run_files.h"
 #include "experiments/cli/run_pipeline.h"
 #include "planning/input_error.h"
 
@@ -36,21 +38,26 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
       "--no-images", a->no_images,
       "skip final.png, figures/ and index.html too (with --no-video: no rendering at all)");
   cmd->add_option("--seed", a->seed, "random seed (overrides sim.seed)")
-      ->check(CLI::Range(0L, 2147483647L));
+      ->check(wholeNumberIn(0L, 2147483647L));
   cmd->add_option("--set", a->sets, "override a scenario key, e.g. --set planner.name=astar")
       ->allow_extra_args(false);
   cmd->add_flag("--quiet", a->quiet, "no progress lines");
   cmd->callback([a, &ctx] {
+    // Interruptible from here on, loading included; and the folder loses an earlier run's
+    // results before anything else, so neither a refusal nor an interruption below can leave
+    // them looking like this run's.
+    const std::atomic<bool>& interrupt = installInterruptFlag();
+    RunRequest request;
+    request.out_dir = prepareOutputDir(a->out, "run");
+    removeStaleResults(request.out_dir, kRunResultNames);
     const std::string path = a->scenario.empty() ? defaultScenarioPath() : a->scenario;
     std::vector<std::string> overrides = a->sets;
     if (a->seed >= 0) overrides.push_back("sim.seed=" + std::to_string(a->seed));
     Scenario scenario = loadScenario(path, overrides);
-    RunRequest request;
-    request.out_dir = prepareOutputDir(a->out, "run");
     request.video = !a->no_video;
     request.images = !a->no_images;
     request.progress = !a->quiet;
-    request.interrupt = &installInterruptFlag();
+    request.interrupt = &interrupt;
     RunSummary s;
     try {
       s = executeRun(scenario, request);

@@ -9,6 +9,7 @@
 
 #include "experiments/cli/command.h"
 #include "experiments/cli/interrupt_flag.h"
+#include "experiments/cli/option_checks.h"
 #include "experiments/cli/output_files.h"
 #include "experiments/sweep/sweep_jobs.h"
 #include "experiments/sweep/sweep_outputs.h"
@@ -60,7 +61,7 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
   auto a = std::make_shared<Args>();
   cmd->add_option("sweep", a->sweep, "sweep YAML file")->required();
   cmd->add_option("--jobs", a->jobs, "jobs run in parallel (default: the available cores)")
-      ->check(CLI::Range(1, 4096));
+      ->check(wholeNumberIn(1, 4096));
   cmd->add_option("--shard", a->shard,
                   "run only slice I of N (I/N, 1-based; 'auto' takes it from Slurm's\n"
                   "SLURM_ARRAY_TASK_ID/MIN/COUNT); merge afterwards with --merge-only");
@@ -68,6 +69,7 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_flag("--merge-only", a->merge_only, "only merge finished jobs into results.csv");
   cmd->add_flag("--quiet", a->quiet, "no progress lines");
   cmd->callback([a, &ctx] {
+    const std::atomic<bool>& interrupt = installInterruptFlag();
     const SweepSpec spec = loadSweepSpec(a->sweep);
     const SweepShard shard = parseSweepShard(
         a->shard, [](const char* name) -> const char* { return std::getenv(name); });
@@ -80,10 +82,19 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
 
     int status = 0;
     if (!a->merge_only) {
+      // The merged tables of an earlier invocation go before any job runs: until this one merges
+      // again, nothing in the folder may present a result whose inputs have since changed.
+      removeStaleResults(out, {"results.csv", "summary.csv", "figure.png", "figure.svg"});
       std::vector<SweepJob> mine;
       for (const auto& j : jobs)
         if (shard.owns(j.id)) mine.push_back(j);
       validateSweepJobs(spec, mine);
+      if (interrupt.load()) {
+        std::cerr << "cosim: sweep interrupted before its jobs started; run the same command "
+                     "again to start it\n";
+        ctx.status = 1;
+        return;
+      }
       SweepRunOptions o;
       o.out_dir = out;
       o.jobs = a->jobs > 0 ? a->jobs : availableCores();
@@ -92,7 +103,7 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
       o.job_timeout_s = spec.job_timeout_s;
       o.kill_grace_s = spec.kill_grace_s;
       o.progress = !a->quiet;
-      o.interrupt = &installInterruptFlag();
+      o.interrupt = &interrupt;
       const SweepRunReport r = runSweepJobs(jobs, o);
       if (r.interrupted) {
         std::cerr << "cosim: sweep interrupted: " << r.unfinished

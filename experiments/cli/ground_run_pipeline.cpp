@@ -113,7 +113,7 @@ GroundPlan planTeam(Scenario& s, const WorldModel& world, double speed) {
   const double resolution =
       s.grid_map.present() ? s.grid_map.cell : p.getDouble("resolution", 0.5, 0.01, 100.0);
   const int connectivity = p.getInt("connectivity", 4, 4, 8);
-  const double time_limit = p.getDouble("time_limit", 30.0, 0.001, 86400.0);
+  const double time_limit = p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);
   if (connectivity != 4 && connectivity != 8)
     throw InputError(s.file, "planner.connectivity", "must be 4 or 8");
   plan.inflation = largestRadius(world) + s.planner_margin;
@@ -425,6 +425,35 @@ void checkRobotsFitGridMap(const Scenario& s, double robot_radius, int connectiv
                          std::to_string(cell * need / room) + " m");
 }
 
+void checkRunPlanners(const Scenario& s) {
+  const auto single = [&s](const std::string& name, ParamSet p, const std::string& key) {
+    if (name.empty()) return;
+    p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);  // read by planVehicle
+    makePlanner(name, p, key);
+  };
+  if (!isGroundRun(s)) return single(s.planner_name, s.planner_params, "key planner.name");
+  const std::string& name = s.planner_name;
+  ParamSet p = s.planner_params;
+  if (isNavigatorName(name)) {
+    p.getDouble("resolution", 0.5, 0.01, 100.0);
+    makeNavigator(name, p);
+    p.requireAllUsed("planner '" + name + "' (in cosim run: resolution and sight)");
+  } else if (isMapfPlannerName(name)) {
+    if (!s.grid_map.present()) p.getDouble("resolution", 0.5, 0.01, 100.0);
+    p.getInt("connectivity", 4, 4, 8);
+    p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);
+    makeMapfPlanner(name, p, "planner.name");
+  } else {
+    single(name, p, "key planner.name");
+  }
+  if (!s.aerial.planner_name.empty()) {
+    if (!PlannerRegistry::instance().find(s.aerial.planner_name))
+      throw InputError(s.file, "aerial.planner.name",
+                       "unknown single-agent planner '" + s.aerial.planner_name + "'");
+    single(s.aerial.planner_name, s.aerial.planner_params, "key aerial.planner.name");
+  }
+}
+
 bool isGroundRun(const Scenario& s) {
   if (!s.moving_obstacles.empty()) return true;
   return std::any_of(s.vehicles.begin(), s.vehicles.end(),
@@ -447,6 +476,7 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
                      "none (ground robots feel no disturbances)");
   RunSummary summary;
   const WorldModel world = WorldModel::build(scenario);
+  if (stopRequestedFor(request)) return interruptedRun();
   Scenario robots = scenario;
   robots.vehicles.clear();
   for (std::size_t v : robot_ids) robots.vehicles.push_back(scenario.vehicles[v]);
@@ -490,6 +520,8 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
   if (!quadrotor_ids.empty())  // also when the robots have no plan: bad input is exit 2
     quadrotors = prepareQuadrotorPilots(air, world, quadrotor_ids, request);
   const bool drive = plan.success && quadrotors.ready;
+  // A stop during planning ends the planners early: their "no plan" is not a result.
+  if (stopRequestedFor(request)) return interruptedRun();
 
   // The timed plan's corners are rounded so that the robots can follow them within their
   // acceleration limit (GroundTimedPath::setSmoothing).
@@ -705,7 +737,7 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
 
   // Interrupted while rendering: no index.html, no metrics.json, nothing that looks finished.
   if (!writeRunFiles(world, scenario, log, request, drive, metrics, summary))
-    return RunSummary{.status = 1, .message = "interrupted", .metrics = {}, .sim_speed_x = 0.0};
+    return interruptedRun();
   return summary;
 }
 

@@ -17,6 +17,12 @@ void checkRobotsFitGridMap(const Scenario& scenario, double robot_radius, int co
 // True if the scenario is for this pipeline: a ground robot, or moving obstacles.
 bool isGroundRun(const Scenario& scenario);
 
+// Builds every planner the run of `scenario` would build (the team planner, navigator or
+// single-agent planner of the robots, the quadrotors' planner), reading the parameters the run
+// reads, so that an unknown planner or parameter is found without running: sweeps check each
+// job with it before starting any. Throws InputError as the run would.
+void checkRunPlanners(const Scenario& scenario);
+
 // Throws InputError for bad input found late (unknown planner, bad parameters, a team planner
 // named for the quadrotors, moving obstacles without ground robots or that the navigator's grid
 // cannot represent).

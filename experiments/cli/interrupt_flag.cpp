@@ -2,11 +2,14 @@
 
 #include <csignal>
 
+#include "planning/stop_request.h"
+
 namespace cosim {
 
 namespace {
-std::atomic<bool> g_interrupted{false};
-extern "C" void onSignal(int) { g_interrupted.store(true); }
+extern "C" void onSignal(int) {
+  requestStop();
+}
 }  // namespace
 
 const std::atomic<bool>& installInterruptFlag() {
@@ -19,7 +22,7 @@ const std::atomic<bool>& installInterruptFlag() {
     return true;
   }();
   (void)installed;
-  return g_interrupted;
+  return stopRequestFlag();
 }
 
 }  // namespace cosim

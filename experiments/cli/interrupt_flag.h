@@ -1,11 +1,12 @@
 #pragma once
-// SIGINT/SIGTERM set a flag that long loops poll, so an interrupted run stops cleanly and
-// leaves no file that looks finished.
+// SIGINT/SIGTERM set the process's stop request (planning/stop_request.h) that planners and long
+// loops poll, so an interrupted command stops cleanly and leaves no file that looks finished.
+// Commands that poll it install the handlers first thing, before loading their input.
 #include <atomic>
 
 namespace cosim {
 
-// Installs the handlers (idempotent) and returns the flag they set.
+// Installs the handlers (idempotent) and returns the flag they set (stopRequestFlag()).
 const std::atomic<bool>& installInterruptFlag();
 
 }  // namespace cosim

@@ -34,8 +34,11 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help and --version are "errors" with exit code 0 in CLI11.
-    const int code = app.exit(e);
-    return code == 0 ? 0 : 2;
+    if (e.get_exit_code() == 0) return app.exit(e);
+    // Bad usage is bad input: one line, like every other (CLI11 adds a second).
+    std::cerr << "cosim: command line: " << cosim::printableText(e.what())
+              << " (see cosim --help)\n";
+    return 2;
   } catch (const cosim::InputError& e) {
     std::cerr << "cosim: " << e.what() << "\n";
     return 2;

@@ -6,12 +6,16 @@
 
 namespace cosim {
 
+const std::vector<std::string> kRunResultNames = {
+    "metrics.json", "index.html", "timeseries.csv", "path.csv", "moving_obstacles.csv",
+    "final.png",    "video*.mp4", "figures",        "frames_*"};
+
 bool writeRunFiles(const WorldModel& world, const Scenario& scenario, const RunLog& log,
                    const RunRequest& request, bool render, const JsonObject& metrics,
                    const RunSummary& summary) {
   const auto& dir = request.out_dir;
-  // A folder reused with --out keeps an earlier run's files until they are replaced: the marks
-  // of a finished run go first, so an interruption below cannot pair them with new logs.
+  // A folder reused with --out lost an earlier run's results when this run started
+  // (kRunResultNames); the marks of a finished run go again in case something wrote them since.
   std::error_code ignored;
   std::filesystem::remove(dir / "metrics.json", ignored);
   std::filesystem::remove(dir / "index.html", ignored);

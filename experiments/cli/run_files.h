@@ -8,6 +8,10 @@
 
 namespace cosim {
 
+// What `cosim run` writes into its folder that says "a run happened" (everything but the copy of
+// the scenario, which may be the very file being run): removed before the run starts.
+extern const std::vector<std::string> kRunResultNames;
+
 // `render`: whether there is anything to draw (false when planning failed). Returns false, with
 // no index.html and no metrics.json written, if the interrupt flag stopped the rendering.
 bool writeRunFiles(const WorldModel& world, const Scenario& scenario, const RunLog& log,

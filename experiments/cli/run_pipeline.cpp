@@ -62,6 +62,14 @@ double longestSaturation(const VehicleLog& v) {
   return longest;
 }
 
+bool stopRequestedFor(const RunRequest& request) {
+  return request.interrupt && request.interrupt->load();
+}
+
+RunSummary interruptedRun() {
+  return RunSummary{.status = 1, .message = "interrupted", .metrics = {}, .sim_speed_x = 0.0};
+}
+
 RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
   if (isGroundRun(scenario)) return executeGroundRun(scenario, request);
   RunSummary summary;
@@ -70,9 +78,12 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
   // 1. Plan a path for every vehicle, and 2. its reference and controller.
   std::vector<std::size_t> all(scenario.vehicles.size());
   for (std::size_t v = 0; v < all.size(); ++v) all[v] = v;
+  if (stopRequestedFor(request)) return interruptedRun();
   QuadrotorPilots quadrotors = prepareQuadrotorPilots(scenario, world, all, request);
   const std::vector<VehiclePlan>& plans = quadrotors.plans;
   const bool all_planned = quadrotors.ready;
+  // A stop during planning ends the planners early: their "no path" is not a result.
+  if (stopRequestedFor(request)) return interruptedRun();
 
   // 3. Fly.
   RunLog log;
@@ -192,7 +203,7 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
 
   // Interrupted while rendering: no index.html, no metrics.json, nothing that looks finished.
   if (!writeRunFiles(world, scenario, log, request, all_planned, metrics, summary))
-    return RunSummary{.status = 1, .message = "interrupted", .metrics = {}, .sim_speed_x = 0.0};
+    return interruptedRun();
   return summary;
 }
 

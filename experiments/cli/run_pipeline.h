@@ -31,8 +31,14 @@ struct RunSummary {
   double sim_speed_x = 0.0;
 };
 
-// Throws InputError for bad input discovered late (unknown planner, bad gains).
+// Throws InputError for bad input discovered late (unknown planner, bad gains). Stopped by the
+// request's interrupt flag (between stages, in planning, flight and rendering), it returns
+// interruptedRun() having written no metrics.json or index.html.
 RunSummary executeRun(Scenario& scenario, const RunRequest& request);
+
+// Whether the request's interrupt flag is set; what a run stopped by it returns.
+bool stopRequestedFor(const RunRequest& request);
+RunSummary interruptedRun();
 
 // A quadrotor's entry in metrics.json's "vehicles" list (without its name and model).
 JsonObject flightMetricsJson(const FlightMetrics& m);

@@ -19,7 +19,7 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, do
     }
     return plan;
   }
-  const double time_limit = params.getDouble("time_limit", 30.0, 0.001, 86400.0);
+  const double time_limit = params.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);
   auto planner =
       makePlanner(scenario.planner_name, params, "key planner.name", &plan.ignored_params);
   plan.params = params.effective();

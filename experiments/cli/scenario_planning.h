@@ -10,6 +10,10 @@
 
 namespace cosim {
 
+// The largest planner.time_limit (s) a scenario may ask for: an hour. More is surely a mistake
+// (a day was allowed), and SIGINT/SIGTERM stop a planner at any time anyway.
+constexpr double kMaxPlannerTimeLimit = 3600.0;
+
 struct VehiclePlan {
   bool success = false;
   Path path;

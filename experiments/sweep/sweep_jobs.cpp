@@ -6,11 +6,14 @@
 #include <map>
 #include <sstream>
 
+#include "experiments/cli/ground_run_pipeline.h"
 #include "experiments/cli/output_files.h"
 #include "experiments/sweep/generated_scenario.h"
 #include "planning/input_error.h"
 #include "planning/planner_registry.h"
+#include "planning/stop_request.h"
 #include "sim/scenario.h"
+#include "sim/scenario_input_files.h"
 
 namespace cosim {
 
@@ -26,18 +29,59 @@ std::string readText(const std::filesystem::path& p, const std::string& place,
 }
 
 // FNV-1a, 64 bit: a stable content hash (std::hash is not stable across builds).
-std::string fingerprint(const std::string& scenario_text,
-                        const std::vector<std::string>& overrides) {
-  std::uint64_t h = 1469598103934665603ull;
-  const auto mix = [&h](const std::string& s) {
-    for (unsigned char c : s) h = (h ^ c) * 1099511628211ull;
-    h = (h ^ 0xff) * 1099511628211ull;  // separator: ("ab","c") != ("a","bc")
-  };
-  mix(scenario_text);
-  for (const auto& o : overrides) mix(o);
-  char buf[20];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h));
-  return buf;
+class Fnv1a {
+ public:
+  void add(const char* data, std::size_t n) {
+    for (std::size_t i = 0; i < n; ++i)
+      h_ = (h_ ^ static_cast<unsigned char>(data[i])) * 1099511628211ull;
+  }
+  // A string, then a separator: ("ab","c") != ("a","bc").
+  void addField(const std::string& s) {
+    add(s.data(), s.size());
+    h_ = (h_ ^ 0xff) * 1099511628211ull;
+  }
+  std::string hex() const {
+    char buf[20];
+    std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(h_));
+    return buf;
+  }
+
+ private:
+  std::uint64_t h_ = 1469598103934665603ull;
+};
+
+// The content hash of one input file, or what stands in its place ("missing", "not a regular
+// file"), read in pieces (a grid map may be hundreds of megabytes).
+std::string fileDigest(const std::filesystem::path& p) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(p, ec);
+  if (ec || !std::filesystem::exists(status)) return "missing";
+  if (!std::filesystem::is_regular_file(status)) return "not a regular file";
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return "unreadable";
+  Fnv1a h;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0)
+    h.add(buffer, static_cast<std::size_t>(in.gcount()));
+  return h.hex();
+}
+
+// A job's fingerprint: its scenario text, its overrides and every file the run reads (the grid
+// map, the world fragment and its meshes, URDFs and theirs), so that a result only counts for
+// the inputs it was made from. `digests` caches file hashes across jobs.
+std::string fingerprint(const std::string& scenario_text, const std::filesystem::path& scenario,
+                        const std::vector<std::string>& overrides,
+                        std::map<std::filesystem::path, std::string>& digests) {
+  Fnv1a h;
+  h.addField(scenario_text);
+  for (const auto& o : overrides) h.addField(o);
+  for (const auto& f : scenarioInputFiles(scenario_text, scenario.string(), overrides)) {
+    auto it = digests.find(f);
+    if (it == digests.end()) it = digests.emplace(f, fileDigest(f)).first;
+    h.addField(f.string());
+    h.addField(it->second);
+  }
+  return h.hex();
 }
 
 // "line 3, key planner.step" names planner.step and planner, not planner.s.
@@ -89,6 +133,7 @@ std::vector<SweepJob> expandSweepJobs(const SweepSpec& spec, const std::filesyst
 
   std::vector<SweepJob> jobs;
   jobs.reserve(sources.size() * combinations);
+  std::map<std::filesystem::path, std::string> digests;
   for (const auto& src : sources)
     for (std::size_t c = 0; c < combinations; ++c) {
       SweepJob job;
@@ -106,7 +151,7 @@ std::vector<SweepJob> expandSweepJobs(const SweepSpec& spec, const std::filesyst
       }
       for (std::size_t k = 0; k < spec.vary.size(); ++k)
         job.overrides.push_back(spec.vary[k].key + "=" + job.values[k]);
-      job.fingerprint = fingerprint(src.text, job.overrides);
+      job.fingerprint = fingerprint(src.text, src.path, job.overrides, digests);
       jobs.push_back(std::move(job));
     }
   return jobs;
@@ -115,15 +160,12 @@ std::vector<SweepJob> expandSweepJobs(const SweepSpec& spec, const std::filesyst
 void validateSweepJobs(const SweepSpec& spec, const std::vector<SweepJob>& jobs) {
   std::map<std::filesystem::path, std::string> texts;
   for (const auto& job : jobs) {
+    if (stopRequested()) return;  // the caller reports the interruption
     auto& text = texts[job.scenario_path];
     if (text.empty()) text = readText(job.scenario_path, "scenario " + job.scenario, spec.file);
     try {
       Scenario s = parseScenario(text, job.scenario_path.string(), job.overrides);
-      if (!s.planner_name.empty()) {
-        ParamSet params = s.planner_params;
-        params.getDouble("time_limit", 30.0, 0.001, 86400.0);  // read by the run pipeline
-        makePlanner(s.planner_name, params);
-      }
+      checkRunPlanners(s);  // team planners and navigators too, as the run builds them
     } catch (const InputError& e) {
       // Name the sweep file's key behind the problem when there is one.
       std::string place = "job " + std::to_string(job.id);

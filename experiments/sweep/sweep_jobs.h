@@ -17,8 +17,10 @@ struct SweepJob {
   std::filesystem::path scenario_path;
   std::vector<std::string> values;     // one per SweepSpec::vary entry, same order
   std::vector<std::string> overrides;  // "key=value" for `cosim run --set`: fixed, then varied
-  // Hash of the scenario text and the overrides: a finished result only counts for the job it was
-  // made for (a changed scenario file or sweep file reruns the jobs it affects).
+  // Hash of the scenario text, the overrides and every file the job's run reads (grid map, world
+  // fragment and its meshes, URDFs and their meshes; sim/scenario_input_files.h): a finished
+  // result only counts for the inputs it was made from (a changed scenario file, sweep file or
+  // included file reruns the jobs it affects).
   std::string fingerprint;
 };
 
@@ -29,6 +31,7 @@ std::vector<SweepJob> expandSweepJobs(const SweepSpec& spec, const std::filesyst
 // Loads every job's scenario with its overrides (strict loader) and builds its planner, so an
 // unknown key, a bad value or an unknown planner parameter stops the sweep before it starts.
 // Throws InputError naming the sweep file, the vary/set key involved and the problem.
+// Returns early (having checked only some jobs) once the process is asked to stop.
 void validateSweepJobs(const SweepSpec& spec, const std::vector<SweepJob>& jobs);
 
 // The job's folder name: its id, zero-padded to the width of the largest id (at least 4 digits).

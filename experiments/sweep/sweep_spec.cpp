@@ -1,10 +1,13 @@
 #include "experiments/sweep/sweep_spec.h"
 
+#include <cctype>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "planning/input_error.h"
+#include "planning/input_file.h"
+#include "sim/yaml_document.h"
 #include "sim/yaml_reader.h"
 
 namespace cosim {
@@ -29,7 +32,19 @@ bool isScenarioKey(const std::string& key) {
   return true;
 }
 
-// `set:` accepts dotted keys and nested maps alike; both become dotted overrides.
+// Why `name` cannot be a folder name ("" if it can): letters, digits, '.', '_' and '-', at most
+// 64, not starting with '.' (no "..", no hidden folders).
+std::string unsafeNameReason(const std::string& name) {
+  if (name.size() > 64) return "longer than 64 characters";
+  if (name.front() == '.') return "starts with '.'";
+  for (const char c : name)
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-'))
+      return "only letters, digits, '.', '_' and '-' are allowed";
+  return "";
+}
+
+// `set:` accepts dotted keys and nested maps alike; both become dotted overrides. The depth of
+// this recursion is bounded by loadYamlDocument (kMaxYamlDepth).
 void flattenOverrides(const YamlReader& r, const YAML::Node& n, const std::string& prefix,
                       std::vector<std::pair<std::string, std::string>>& out) {
   r.requireMap(n, prefix.empty() ? "set" : "set." + prefix);
@@ -113,22 +128,12 @@ std::filesystem::path resolveSweepScenarioPath(const std::string& written,
 }
 
 SweepSpec loadSweepSpec(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file.string(), "", "cannot open sweep file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseSweepSpec(text.str(), file);
+  return parseSweepSpec(readInputFile(file.string(), kMaxScenarioFileBytes, "sweep file"), file);
 }
 
 SweepSpec parseSweepSpec(const std::string& text, const std::filesystem::path& file) {
   const YamlReader r(file.string());
-  YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::ParserException& e) {
-    throw InputError(file.string(), "line " + std::to_string(e.mark.line + 1),
-                     "malformed YAML: " + e.msg);
-  }
+  const YAML::Node root = loadYamlDocument(text, file.string());
   if (!root.IsMap())
     throw InputError(file.string(), "", "a sweep file is a mapping (scenarios:, vary:, ...)");
   r.checkKeys(root, "", {"name", "scenarios", "generators", "vary", "set", "output", "limits"});
@@ -136,6 +141,10 @@ SweepSpec parseSweepSpec(const std::string& text, const std::filesystem::path& f
   SweepSpec s;
   s.file = file;
   s.name = root["name"] ? r.text(root["name"], "name") : file.stem().string();
+  // The name becomes a folder (out/sweep-NAME): a path in it would write elsewhere.
+  if (const std::string why = unsafeNameReason(s.name); !why.empty())
+    r.fail(root["name"] ? root["name"] : root, "name",
+           "'" + s.name + "' cannot name the sweep's folder: " + why);
   if (root["scenarios"]) {
     const YAML::Node list = root["scenarios"];
     if (!list.IsSequence() && !list.IsScalar())

@@ -5,29 +5,27 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "planning/input_error.h"
+#include "planning/input_file.h"
 
 namespace cosim {
 
 namespace {
 
-std::string readWholeFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "", "cannot open file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// Splits into lines, dropping a trailing '\r' (some benchmark files use CRLF).
-std::vector<std::string> splitLines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::string line;
-  std::istringstream in(text);
-  while (std::getline(in, line)) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
+// Splits into lines, dropping a trailing '\r' (some benchmark files use CRLF). Views into the
+// text, not copies: the largest map is 256 MB of rows.
+std::vector<std::string_view> splitLines(const std::string& text) {
+  std::vector<std::string_view> lines;
+  std::size_t begin = 0;
+  while (begin < text.size()) {
+    std::size_t end = text.find('\n', begin);
+    if (end == std::string::npos) end = text.size();
+    std::string_view line(text.data() + begin, end - begin);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
     lines.push_back(line);
+    begin = end + 1;
   }
   return lines;
 }
@@ -35,14 +33,15 @@ std::vector<std::string> splitLines(const std::string& text) {
 std::string lineRef(std::size_t index) { return "line " + std::to_string(index + 1); }
 
 // Parses "<key> <integer>" from a header line.
-int headerValue(const std::vector<std::string>& lines, std::size_t i, const std::string& key,
+int headerValue(const std::vector<std::string_view>& lines, std::size_t i, const std::string& key,
                 const std::string& file) {
   if (i >= lines.size()) throw InputError(file, lineRef(i), "missing '" + key + "' header");
-  std::istringstream in(lines[i]);
+  std::istringstream in{std::string(lines[i])};
   std::string word;
   long value = 0;
   if (!(in >> word) || word != key || !(in >> value))
-    throw InputError(file, lineRef(i), "expected '" + key + " <number>', got '" + lines[i] + "'");
+    throw InputError(file, lineRef(i),
+                     "expected '" + key + " <number>', got '" + std::string(lines[i]) + "'");
   if (value <= 0 || value > 1000000)
     throw InputError(file, lineRef(i), key + " must be between 1 and 1000000");
   return static_cast<int>(value);
@@ -51,12 +50,12 @@ int headerValue(const std::vector<std::string>& lines, std::size_t i, const std:
 }  // namespace
 
 OccupancyGrid readMovingAIMap(const std::string& path) {
-  return parseMovingAIMap(readWholeFile(path), path);
+  return parseMovingAIMap(readInputFile(path, kMaxMapFileBytes, "MovingAI map"), path);
 }
 
 OccupancyGrid parseMovingAIMap(const std::string& text, const std::string& file) {
-  const std::vector<std::string> lines = splitLines(text);
-  if (lines.empty() || lines[0].rfind("type", 0) != 0)
+  const std::vector<std::string_view> lines = splitLines(text);
+  if (lines.empty() || lines[0].substr(0, 4) != "type")
     throw InputError(file, "line 1", "expected 'type octile' header");
   const int height = headerValue(lines, 1, "height", file);
   const int width = headerValue(lines, 2, "width", file);
@@ -71,7 +70,7 @@ OccupancyGrid parseMovingAIMap(const std::string& text, const std::string& file)
                          std::to_string(lines.size() - 4));
   OccupancyGrid grid(width, height);
   for (int y = 0; y < height; ++y) {
-    const std::string& row = lines[4 + y];
+    const std::string_view row = lines[4 + y];
     if (static_cast<int>(row.size()) != width)
       throw InputError(file, lineRef(4 + y),
                        "row has " + std::to_string(row.size()) + " characters, expected " +
@@ -100,20 +99,20 @@ OccupancyGrid parseMovingAIMap(const std::string& text, const std::string& file)
 }
 
 std::vector<MovingAIScenarioLine> readMovingAIScenario(const std::string& path) {
-  return parseMovingAIScenario(readWholeFile(path), path);
+  return parseMovingAIScenario(readInputFile(path, kMaxMapFileBytes, "MovingAI scenario"), path);
 }
 
 std::vector<MovingAIScenarioLine> parseMovingAIScenario(const std::string& text,
                                                         const std::string& file) {
-  const std::vector<std::string> lines = splitLines(text);
-  if (lines.empty() || lines[0].rfind("version", 0) != 0)
+  const std::vector<std::string_view> lines = splitLines(text);
+  if (lines.empty() || lines[0].substr(0, 7) != "version")
     throw InputError(file, "line 1", "expected 'version 1' header");
   std::vector<MovingAIScenarioLine> out;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     if (lines[i].find_first_not_of(" \t") == std::string::npos) continue;
     // Whitespace-separated fields work for both the tab and the older space-separated variant;
     // map names in these files contain no spaces.
-    std::istringstream in(lines[i]);
+    std::istringstream in{std::string(lines[i])};
     MovingAIScenarioLine s;
     s.line = static_cast<int>(i + 1);
     std::string extra, optimal;

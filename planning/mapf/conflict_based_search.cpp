@@ -239,9 +239,15 @@ MapfResult ConflictBasedSearch::solve(const MapfQuery& query) {
   MapfResult result;
 
   std::vector<std::unique_ptr<ReverseResumableAStar>> distance;
-  for (int a = 0; a < n; ++a)
+  for (int a = 0; a < n; ++a) {
+    if (deadline.expired()) {
+      result.message = "time limit reached";
+      result.time_ms = deadline.elapsedMs();
+      return result;
+    }
     distance.push_back(std::make_unique<ReverseResumableAStar>(grid, grid.id(inst.goals[a]),
-                                                               grid.id(inst.starts[a])));
+                                                               grid.id(inst.starts[a]), &deadline));
+  }
   SpaceTimeAStar search(grid);
   ConflictFinder finder(grid);
   long expansions = 0, low_level_calls = 0, bypasses = 0;
@@ -284,6 +290,7 @@ MapfResult ConflictBasedSearch::solve(const MapfQuery& query) {
 
   tree[0].paths.resize(n);
   for (int a = 0; a < n; ++a) {
+    if (deadline.expired()) return finish("time limit reached");
     const SpaceTimePlan plan = replan(a, AgentConstraints(), tree[0].paths);
     if (!plan.found)
       return finish(budget_hit ? "time limit reached"

@@ -19,9 +19,14 @@ MapfResult CooperativeAStar::solve(const MapfQuery& query) {
 
   std::vector<std::unique_ptr<GoalDistance>> heuristic;
   for (int a = 0; a < n; ++a) {
+    if (deadline.expired()) {
+      result.message = "time limit reached";
+      result.time_ms = deadline.elapsedMs();
+      return result;
+    }
     const int goal = grid.id(inst.goals[a]), start = grid.id(inst.starts[a]);
     if (options_.abstract_heuristic)
-      heuristic.push_back(std::make_unique<ReverseResumableAStar>(grid, goal, start));
+      heuristic.push_back(std::make_unique<ReverseResumableAStar>(grid, goal, start, &deadline));
     else
       heuristic.push_back(std::make_unique<GridLowerBoundDistance>(grid, goal));
   }

@@ -2,8 +2,10 @@
 
 namespace cosim {
 
-ReverseResumableAStar::ReverseResumableAStar(const MapfGrid& grid, int goal, int start)
+ReverseResumableAStar::ReverseResumableAStar(const MapfGrid& grid, int goal, int start,
+                                             const Deadline* deadline)
     : grid_(&grid),
+      deadline_(deadline),
       goal_(goal),
       start_(start),
       g_(grid.cellCount(), kUnreachable),
@@ -15,7 +17,9 @@ ReverseResumableAStar::ReverseResumableAStar(const MapfGrid& grid, int goal, int
 
 int ReverseResumableAStar::distance(int cell) {
   if (!closed_[cell]) resumeUntilClosed(cell);
-  return closed_[cell] ? g_[cell] : kUnreachable;
+  if (closed_[cell]) return g_[cell];
+  // Stopped by the deadline with cells left to expand: nothing is known to be unreachable.
+  return open_.empty() ? kUnreachable : grid_->lowerBound(cell, goal_);
 }
 
 void ReverseResumableAStar::resumeUntilClosed(int target) {
@@ -23,6 +27,10 @@ void ReverseResumableAStar::resumeUntilClosed(int target) {
     const auto [f, minus_g, cell] = open_.top();
     open_.pop();
     if (closed_[cell] || -minus_g > g_[cell]) continue;  // stale entry
+    if ((expansions_ & 1023) == 1023 && deadline_ && deadline_->expired()) {
+      open_.emplace(f, minus_g, cell);  // not expanded: kept for a later resume
+      return;
+    }
     closed_[cell] = 1;
     ++expansions_;
     // Moves are symmetric (the corner rule does not depend on direction), so the forward
@@ -33,7 +41,6 @@ void ReverseResumableAStar::resumeUntilClosed(int target) {
       g_[n] = g;
       open_.emplace(g + grid_->lowerBound(n, start_), -g, n);
     }
-    (void)f;
     if (cell == target) return;
   }
 }

@@ -9,6 +9,7 @@
 #include <tuple>
 #include <vector>
 
+#include "planning/deadline.h"
 #include "planning/mapf/goal_distance.h"
 #include "planning/mapf/mapf_grid.h"
 
@@ -16,9 +17,14 @@ namespace cosim {
 
 class ReverseResumableAStar final : public GoalDistance {
  public:
-  ReverseResumableAStar(const MapfGrid& grid, int goal, int start);
+  // With a `deadline`, a resumed search stops when it expires (one resume could otherwise cover
+  // the whole map, seconds on the largest ones).
+  ReverseResumableAStar(const MapfGrid& grid, int goal, int start,
+                        const Deadline* deadline = nullptr);
 
-  // True distance from `cell` to the goal, or kUnreachable.
+  // True distance from `cell` to the goal, or kUnreachable. Past the deadline, for a cell not yet
+  // closed: the grid's lower bound (still admissible, so searches stay correct; the planner sees
+  // the expired deadline itself and stops).
   int distance(int cell) override;
   long expansions() const { return expansions_; }
 
@@ -27,6 +33,7 @@ class ReverseResumableAStar final : public GoalDistance {
   void resumeUntilClosed(int target);
 
   const MapfGrid* grid_;
+  const Deadline* deadline_;
   int goal_, start_;
   std::vector<int> g_;
   std::vector<std::uint8_t> closed_;

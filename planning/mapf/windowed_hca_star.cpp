@@ -23,9 +23,15 @@ MapfResult WindowedHcaStar::solve(const MapfQuery& query) {
   std::vector<std::unique_ptr<ReverseResumableAStar>> distance;
   std::vector<std::vector<int>> executed(n);
   for (int a = 0; a < n; ++a) {
+    if (deadline.expired()) {
+      result.message = "time limit reached";
+      result.time_ms = deadline.elapsedMs();
+      return result;
+    }
     position[a] = grid.id(inst.starts[a]);
     goal[a] = grid.id(inst.goals[a]);
-    distance.push_back(std::make_unique<ReverseResumableAStar>(grid, goal[a], position[a]));
+    distance.push_back(
+        std::make_unique<ReverseResumableAStar>(grid, goal[a], position[a], &deadline));
     executed[a].push_back(position[a]);
     if (distance[a]->distance(position[a]) >= GoalDistance::kUnreachable) {
       result.message = "goal of agent " + std::to_string(a) + " is unreachable";
@@ -83,7 +89,11 @@ MapfResult WindowedHcaStar::solve(const MapfQuery& query) {
         plans[a] = plan.cells;
       }
       if (failed < 0) break;
-      if (!dynamic || attempt >= n || deadline.expired()) {
+      if (deadline.expired()) {
+        result.message = "time limit reached";
+        break;
+      }
+      if (!dynamic || attempt >= n) {
         result.message = "agent " + std::to_string(failed) +
                          " found no route in the window at t=" + std::to_string(t0);
         break;

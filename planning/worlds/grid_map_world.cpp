@@ -1,10 +1,14 @@
 #include "planning/worlds/grid_map_world.h"
 
+#include <string>
 #include <vector>
+
+#include "planning/input_error.h"
 
 namespace cosim {
 
-World worldFromGridMap(const OccupancyGrid& grid, double height, double ceiling) {
+World worldFromGridMap(const OccupancyGrid& grid, double height, double ceiling,
+                       std::size_t max_boxes) {
   const double c = grid.cellSize();
   const Eigen::Vector3d origin = grid.origin();
   World world;
@@ -22,6 +26,11 @@ World worldFromGridMap(const OccupancyGrid& grid, double height, double ceiling)
   for (int y = 0; y < grid.ny(); ++y)
     for (int x = 0; x < grid.nx(); ++x) {
       if (!open(x, y)) continue;
+      if (world.obstacles.size() >= max_boxes)
+        throw InputError("", "",
+                         "the map's blocked cells make more than " + std::to_string(max_boxes) +
+                             " boxes (scattered cells each need one); use a map with fewer, "
+                             "larger obstacles");
       int x1 = x;
       while (x1 + 1 < grid.nx() && open(x1 + 1, y)) ++x1;
       int y1 = y;

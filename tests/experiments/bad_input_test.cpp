@@ -3,6 +3,8 @@
 // with one stderr line naming the problem, and never leave a result file that looks finished.
 // The README's "Bad inputs and faults" table lists these cases.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -44,15 +46,85 @@ std::string mapText(int w, int h, const std::string& rows) {
 struct BadInput {
   std::string name;
   // {in} is replaced by the file holding `content`, {in2} by the one holding `content2`, {out}
-  // by a fresh output path, {data} by tests/data/movingai.
+  // by a fresh output path, {dir} by the case's folder (the program runs there).
   std::string args;
   std::string content, content2;
   int exit_code;
-  std::string message;  // the stderr line must contain this ({in} as in args)
+  std::string message;  // the stderr line must contain this ({in}, {dir} as in args)
+  // More files in the case's folder (name relative to it, content), and a FIFO to make there.
+  std::vector<std::pair<std::string, std::string>> files = {};
+  std::string fifo = "";
 };
 
 void PrintTo(const BadInput& c, std::ostream* os) {
   *os << c.name;
+}
+
+// A MovingAI map of w x h cells, every cell free, or a checkerboard (every other cell blocked).
+std::string wideMap(int w, int h, bool checkerboard) {
+  std::string rows;
+  rows.reserve(static_cast<std::size_t>(w + 1) * h);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) rows += checkerboard && (x + y) % 2 ? '@' : '.';
+    rows += '\n';
+  }
+  return mapText(w, h, rows);
+}
+
+// A URDF robot whose links form one chain of `links` (each fixed to the one before).
+std::string chainUrdf(int links) {
+  std::string u = "<robot name=\"chain\">\n";
+  const std::string inertial =
+      "<inertial><mass value=\"1\"/><inertia ixx=\"0.01\" iyy=\"0.01\" izz=\"0.01\" ixy=\"0\" "
+      "ixz=\"0\" iyz=\"0\"/></inertial>";
+  for (int i = 0; i < links; ++i) {
+    u += "<link name=\"l" + std::to_string(i) + "\">" + inertial + "</link>\n";
+    if (i > 0)
+      u += "<joint name=\"j" + std::to_string(i) + "\" type=\"fixed\"><parent link=\"l" +
+           std::to_string(i - 1) + "\"/><child link=\"l" + std::to_string(i) + "\"/></joint>\n";
+  }
+  return u + "</robot>\n";
+}
+
+// A small world for one ground robot of `model` (a file beside the scenario, or a bundled name).
+std::string robotScenario(const std::string& model, const std::string& world_extra = "") {
+  return "world: {bounds: {min: [0, 0, 0], max: [20, 20, 3]}" + world_extra +
+         "}\nvehicles: [{name: r, model: " + model + ", start: [2, 2, 0], goal: [18, 2, 0]}]\n";
+}
+
+// A run folder as cosim run leaves it, with a time series of the given rows (after the header).
+std::vector<std::pair<std::string, std::string>> runFolder(const std::string& rows) {
+  return {
+      {"run/scenario.yaml", kValid},
+      {"run/run.json", "{\"scenario_file\": \"run/scenario.yaml\"}\n"},
+      {"run/path.csv", "x,y,z\n2,2,1\n18,18,1\n"},
+      {"run/timeseries.csv", "t,ref_x,ref_y,ref_z,x,y,z,vx,vy,vz,qw,qx,qy,qz,vehicle\n" + rows}};
+}
+
+// 10 000 tiny spheres high up, and a vehicle with 25 000 waypoints below them: 2.5e8 checks.
+std::string manyPointsTimesObstacles() {
+  std::string y = "world:\n  bounds: {min: [0, 0, 0], max: [200, 200, 10]}\n  obstacles:\n";
+  for (int i = 0; i < 10000; ++i)
+    y += "    - {type: sphere, pos: [" + std::to_string(1 + (i % 100) * 1.9) + ", " +
+         std::to_string(1 + (i / 100) * 1.9) + ", 9], radius: 0.01}\n";
+  y += "vehicles:\n  - name: uav1\n    model: cf2\n    start: [1, 1, 1]\n    waypoints:\n";
+  for (int i = 0; i < 25000; ++i)
+    y += "      - [" + std::to_string(1 + i % 190) + ", " + std::to_string(1 + i / 190 % 190) +
+         ", 1]\n";
+  return y + "planner: {name: astar, resolution: 0.5}\n";
+}
+
+// A moving obstacle's path of 2000 points, shared through an alias by 1000 obstacles.
+std::string aliasSharedMovingPath() {
+  std::string y = "world:\n  bounds: {min: [0, 0, 0], max: [100, 100, 3]}\n  moving_obstacles:\n";
+  y += "    - {type: cylinder, radius: 0.2, height: 1, speed: 1, path: &p [";
+  for (int i = 0; i < 2000; ++i)
+    y += (i ? ", [" : "[") + std::to_string(50 + (i % 40)) + ", " + std::to_string(50 + i / 40) +
+         "]";
+  y += "]}\n";
+  for (int i = 1; i < 1000; ++i)
+    y += "    - {type: cylinder, radius: 0.2, height: 1, speed: 1, path: *p}\n";
+  return y + "vehicles: [{name: r, model: omni_base, start: [2, 2, 0], goal: [18, 2, 0]}]\n";
 }
 
 std::vector<BadInput> badInputs() {
@@ -176,19 +248,19 @@ std::vector<BadInput> badInputs() {
       // Sensing, estimation, aerodynamics (the realism issue).
       {"unknown_sensor_preset", plan, kValid + "sensors: {preset: lidar}\n", "", 2,
        "key sensors.preset: unknown preset 'lidar' (ideal, mocap, onboard)"},
-      {"negative_sensor_noise", plan, kValid + "sensors: {preset: mocap, position: {noise: -0.1}}\n",
-       "", 2, "key sensors.position.noise: must be >= 0"},
+      {"negative_sensor_noise", plan,
+       kValid + "sensors: {preset: mocap, position: {noise: -0.1}}\n", "", 2,
+       "key sensors.position.noise: must be >= 0"},
       {"latency_longer_than_run", plan,
-       kValid + "sensors: {preset: mocap, attitude: {latency: 0.5}}\nsim: {max_time: 0.3}\n", "",
-       2, "key sensors.attitude.latency: latency 0.5 s is longer than the run"},
+       kValid + "sensors: {preset: mocap, attitude: {latency: 0.5}}\nsim: {max_time: 0.3}\n", "", 2,
+       "key sensors.attitude.latency: latency 0.5 s is longer than the run"},
       {"ekf_without_sensors", plan, kValid + "estimator: {name: ekf}\n", "", 2,
        "key estimator.name: 'ekf' needs sensors to fuse"},
       {"ekf_without_position_sensor", plan,
        kValid + "sensors: {imu: {rate: 500}}\nestimator: {name: ekf}\n", "", 2,
        "key estimator.name: 'ekf' needs a position sensor"},
-      {"sensor_faster_than_physics", plan,
-       kValid + "sensors: {preset: mocap, imu: {rate: 5000}}\n", "", 2,
-       "key sensors.imu.rate: rate 5000 Hz is above the physics rate"},
+      {"sensor_faster_than_physics", plan, kValid + "sensors: {preset: mocap, imu: {rate: 5000}}\n",
+       "", 2, "key sensors.imu.rate: rate 5000 Hz is above the physics rate"},
       {"wind_without_drag", plan, kValid + "disturbances: {wind: [3, 0, 0]}\n", "", 2,
        "key disturbances.wind: wind acts through drag and this scenario has none"},
       {"model_error_absurd", plan, kValid + "model_error: {mass: 3}\n", "", 2,
@@ -263,6 +335,174 @@ std::vector<BadInput> badInputs() {
       {"mapf_benchmark_unknown_planner",
        "mapf {in} {in2} --agents 1:3:1 --planner lacam,teleport --out {out}", map8, scen8, 2,
        "unknown multi-robot planner 'teleport'"},
+      // Hardening, round two (issue 19): what an adversarial probe broke.
+      // YAML structure: alias cycles, alias bombs, keys given twice (at any level).
+      {"alias_cycle_in_scenario", plan, kValid + "sim: &s {timestep: *s}\n", "", 2,
+       "line 5, key sim.timestep: an alias refers to a node that contains it"},
+      {"alias_cycle_in_set_value", "plan {in} --set 'sim=&a [*a]' --out {out}", kValid, "", 2,
+       "--set sim=&a [*a]: an alias refers to a node that contains it"},
+      {"alias_bomb", plan,
+       kValid +
+           [] {
+             std::string b = "render: {l0: &l0 [x, x, x, x, x, x, x, x, x, x]";
+             for (int i = 1; i <= 8; ++i) {
+               const std::string p = "*l" + std::to_string(i - 1);
+               b += ", l" + std::to_string(i) + ": &l" + std::to_string(i) + " [" + p + ", " + p +
+                    ", " + p + ", " + p + ", " + p + ", " + p + ", " + p + ", " + p + ", " + p +
+                    ", " + p + "]";
+             }
+             return b + "}\n";
+           }(),
+       "", 2, "values once its aliases are expanded"},
+      {"alias_shared_moving_obstacle_path", "run {in} --no-video --out {out}",
+       aliasSharedMovingPath(), "", 2, "values once its aliases are expanded"},
+      {"duplicate_top_level_key", plan, kValid + "planner: {name: rrt}\n", "", 2,
+       "line 5, key planner: key 'planner' is given twice in this mapping"},
+      {"duplicate_nested_key", plan,
+       withPlanner("planner: {name: astar, resolution: 0.5, "
+                   "resolution: 0.25}\n"),
+       "", 2, "key planner.resolution: key 'resolution' is given twice"},
+      // Sweeps: a self-referencing `set:` (a crash in the flattener), an unsafe name, a world
+      // generator asked for 50 million trees.
+      {"sweep_set_alias_cycle",
+       "sweep {in} --out {out} --quiet",
+       "scenarios: [s.yaml]\nset: &s {a: *s}\n",
+       "",
+       2,
+       "key set.a: an alias refers to a node that contains it",
+       {{"s.yaml", kValid}}},
+      {"sweep_set_alias_cycle_merge_only",
+       "sweep {in} --out {out} --merge-only --quiet",
+       "scenarios: [s.yaml]\nset: &s {a: *s}\n",
+       "",
+       2,
+       "key set.a: an alias refers to a node that contains it",
+       {{"s.yaml", kValid}}},
+      {"sweep_unsafe_name",
+       "sweep {in} --quiet",
+       "name: ../../../escaped\nscenarios: [s.yaml]\n",
+       "",
+       2,
+       "key name: '../../../escaped' cannot name the sweep's folder: starts with '.'",
+       {{"s.yaml", kValid}}},
+      {"sweep_forest_of_10_km", "sweep {in} --out {out} --quiet",
+       "generators: [{type: forest, density: 0.5, size: [10000, 10000, 10]}]\n", "", 2,
+       "obstacles, more than the 10000 a scenario may hold"},
+      // Files that are not files: a device read forever, a FIFO that blocks.
+      {"scenario_is_dev_zero", "plan /dev/zero --out {out}", "", "", 2,
+       "/dev/zero: is not a regular file"},
+      {"scenario_is_fifo",
+       "plan {dir}/pipe.yaml --out {out}",
+       "",
+       "",
+       2,
+       "pipe.yaml: is not a regular file",
+       {},
+       "pipe.yaml"},
+      {"include_is_fifo",
+       "run {in} --no-video --out {out}",
+       withWorld("world: {bounds: {min: [0, 0, 0], max: [20, 20, 6]}, include: pipe.xml}\n"),
+       "",
+       2,
+       "key world.include: {dir}/pipe.xml: is not a regular file",
+       {},
+       "pipe.xml"},
+      // Names: a documented character set and length.
+      {"vehicle_name_with_newline", plan,
+       withVehicles(
+           "vehicles: [{name: \"a\\nb\", model: cf2, start: [2, 2, 1], goal: [18, 18, 1]}]\n"),
+       "", 2, "vehicles[0].name: vehicle names are printable ASCII without spaces or '/'"},
+      {"vehicle_name_of_200_kb", plan,
+       withVehicles("vehicles: [{name: " + std::string(200000, 'n') +
+                    ", model: cf2, start: [2, 2, 1], goal: [18, 18, 1]}]\n"),
+       "", 2, "a vehicle name has at most 64 characters"},
+      // Limits before allocation for what a small file multiplies.
+      {"grid_map_checkerboard",
+       "run {in} --no-video --out {out}",
+       "world: {grid_map: {file: checker.map, cell: 0.1}}\n"
+       "vehicles: [{name: r, model: omni_base, start: [0.05, 0.05, 0], goal: [0.25, 0.05, 0]}]\n",
+       "",
+       2,
+       "key world.grid_map.file: the map's blocked cells make more than 10000 boxes",
+       {{"checker.map", wideMap(1000, 1000, true)}}},
+      {"points_times_obstacles", plan, manyPointsTimesObstacles(), "", 2,
+       "placement checks, more than 200000000"},
+      {"mapf_agents_times_cells", "mapf {in} {in2} --agents 100 --planner hca_star --out {out}",
+       wideMap(2000, 2000, false),
+       [] {
+         std::string scen = "version 1\n";
+         for (int i = 0; i < 100; ++i)
+           scen += "0\tx.map\t2000\t2000\t" + std::to_string(i) + "\t0\t" + std::to_string(i) +
+                   "\t1999\t2000\n";
+         return scen;
+       }(),
+       2, "100 agents x 4000000 cells = 400000000, more than the 100000000"},
+      {"planner_time_limit_of_a_day", plan,
+       withPlanner("planner: {name: astar, resolution: 0.5, time_limit: 86400}\n"), "", 2,
+       "'time_limit' = 86400 is outside [0.001, 3600]"},
+      // URDF robots of a 20 000-link chain (a crash: one recursion per link) and a deep one.
+      {"urdf_chain_of_20000_links",
+       "run {in} --no-video --out {out}",
+       robotScenario("chain.urdf"),
+       "",
+       2,
+       "chain.urdf: line 2001, <link>: more than 1000 links",
+       {{"chain.urdf", chainUrdf(20000)}}},
+      {"urdf_chain_deeper_than_64",
+       "run {in} --no-video --out {out}",
+       robotScenario("deep.urdf"),
+       "",
+       2,
+       "deep.urdf: link 'l65': more than 64 links below the base on one branch",
+       {{"deep.urdf", chainUrdf(100)}}},
+      // world.include: the scenario owns the physics options; sizes are bounded; errors name the
+      // fragment.
+      {"include_sets_timestep",
+       "run {in} --no-video --out {out}",
+       withWorld("world: {bounds: {min: [0, 0, 0], max: [20, 20, 6]}, include: frag.xml}\n"),
+       "",
+       2,
+       "frag.xml: line 2, <option>: a world fragment may not set the world's <option>",
+       {{"frag.xml", "<mujoco>\n  <option timestep=\"0.01\"/>\n</mujoco>\n"}}},
+      {"include_height_field_38000_squared",
+       "run {in} --no-video --out {out}",
+       withWorld("world: {bounds: {min: [0, 0, 0], max: [20, 20, 6]}, include: frag.xml}\n"),
+       "",
+       2,
+       "frag.xml: line 1, <hfield>: a height field of 38000 x 38000",
+       {{"frag.xml",
+         "<mujoco><asset><hfield name=\"h\" nrow=\"38000\" ncol=\"38000\" "
+         "size=\"1 1 1 1\"/></asset></mujoco>\n"}}},
+      {"include_error_names_the_fragment",
+       "run {in} --no-video --out {out}",
+       withWorld("world: {bounds: {min: [0, 0, 0], max: [20, 20, 6]}, include: frag.xml}\n"),
+       "",
+       2,
+       "frag.xml: MuJoCo cannot compile this world fragment (world.include): ",
+       {{"frag.xml",
+         "<mujoco>\n<worldbody>\n<geom type=\"pyramid\" size=\"1\"/>\n"
+         "</worldbody>\n</mujoco>\n"}}},
+      // Options: NaN is not a number; 0 agents is one clear line.
+      {"mapf_time_limit_nan",
+       "mapf {in} {in2} --agents 1 --planner cbs --time-limit nan --out {out}", map8, scen8, 2,
+       "--time-limit: must be a number from 0.001 to 3600, got 'nan'"},
+      {"mapf_cell_nan", "mapf {in} {in2} --agents 1 --planner cbs --execute --cell nan --out {out}",
+       map8, scen8, 2, "--cell: must be a number from 0.05 to 100, got 'nan'"},
+      {"mapf_zero_agents", "mapf {in} {in2} --agents 0 --planner cbs --out {out}", map8, scen8, 2,
+       "--agents: must be a whole number from 1 to 10000, got '0'"},
+      // Output paths checked before any work; names of 254 bytes are valid.
+      {"grid_bench_out_in_missing_folder",
+       "grid-bench {in} {in2} --planner astar --out /nonexistent/x.csv", map8, scen8, 2,
+       "/nonexistent/x.csv: --out: folder /nonexistent does not exist"},
+      {"render_out_in_missing_folder", "render {dir}/run --out {dir}/missing/v.mp4 --quiet", "", "",
+       2, "--out: folder {dir}/missing does not exist",
+       runFolder("0,2,2,1,2,2,1,0,0,0,1,0,0,0,uav1\n1,3,3,1,3,3,1,0,0,0,1,0,0,0,uav1\n")},
+      {"render_log_row_at_1e9_s", "render {dir}/run --out {dir}/v.mp4 --quiet", "", "", 2,
+       "timeseries.csv: line 3, column t: time 1000000000.000000 s is outside the run",
+       runFolder("0,2,2,1,2,2,1,0,0,0,1,0,0,0,uav1\n1e9,3,3,1,3,3,1,0,0,0,1,0,0,0,uav1\n")},
+      {"out_file_name_of_254_bytes",
+       "grid-bench {in} {in2} --planner astar --out {dir}/" + std::string(250, 'x') + ".csv", map8,
+       scen8, 0, "written:"},
   };
 }
 
@@ -278,21 +518,39 @@ TEST_P(BadInputTest, ExitsWithOneLineNamingTheProblemAndLeavesNoResult) {
   const BadInput& c = GetParam();
   const fs::path dir = freshDir("bad-input-" + c.name);
   fs::create_directories(dir);
+  for (const auto& [name, content] : c.files) {
+    fs::create_directories((dir / name).parent_path());
+    std::ofstream(dir / name, std::ios::binary) << content;
+  }
+  if (!c.fifo.empty()) {
+    ASSERT_EQ(::mkfifo((dir / c.fifo).c_str(), 0644), 0);
+  }
   const bool is_map = c.args.rfind("grid-bench", 0) == 0 || c.args.rfind("mapf", 0) == 0;
   const fs::path in = dir / (is_map ? "x.map" : "scenario.yaml");
   const fs::path in2 = dir / "x.scen";
   std::ofstream(in, std::ios::binary) << c.content;
   std::ofstream(in2, std::ios::binary) << c.content2;
+  // The output folder exists (as after an earlier run): what a command may leave there is checked
+  // below, and a command writing a file into it (grid-bench) finds it.
   const fs::path out = dir / "out";
+  fs::create_directories(out);
   std::string args = replaceAll(c.args, "{in}", in.string());
   args = replaceAll(args, "{in2}", in2.string());
   args = replaceAll(args, "{out}", out.string());
+  args = replaceAll(args, "{dir}", dir.string());
 
-  const CommandResult r = runCosim(args);
+  // Never a hang (the watchdog ends the program at 60 s: exit 124 or 137) and never more than
+  // 1 GB of memory (the largest resident size of any program this test process has waited for;
+  // ctest runs each case in a process of its own).
+  const CommandResult r = runCosim(args, dir, 60);
   EXPECT_EQ(r.status, c.exit_code) << args << "\nstderr: " << r.err << "\nstdout: " << r.out;
+  struct rusage usage {};
+  ::getrusage(RUSAGE_CHILDREN, &usage);
+  EXPECT_LT(usage.ru_maxrss, 1024L * 1024L) << "KiB resident at most";  // ru_maxrss is in KiB
   // The program's own message, never a crash report or an internal error.
   const std::string all = r.err + r.out;
-  const std::string message = replaceAll(c.message, "{in}", in.string());
+  const std::string message =
+      replaceAll(replaceAll(c.message, "{in}", in.string()), "{dir}", dir.string());
   EXPECT_NE(all.find(message), std::string::npos) << "stderr: " << r.err << "\nstdout: " << r.out;
   // No raw control bytes from the input (a NUL would cut the line, an escape drive the terminal).
   EXPECT_EQ(std::count_if(r.err.begin(), r.err.end(),

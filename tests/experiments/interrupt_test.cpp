@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include "tests/experiments/cli_test_support.h"
@@ -251,6 +252,80 @@ TEST(VideoFailure, FfmpegDyingMidVideoIsAnErrorMessageNotADeathBySigpipe) {
       << slurp(err);
   EXPECT_EQ(partialFile(out, ".part"), fs::path());
   EXPECT_FALSE(fs::exists(out / "metrics.json"));
+  fs::remove_all(dir);
+}
+
+// --- Interrupted while planning, into the folder of an earlier finished run -----------------
+
+// A scenario whose goal stands in a closed box: RRT grows its tree towards it until its time
+// limit (minutes) or node limit (ten million), so a signal surely arrives while it plans.
+const char* kUnreachableGoal =
+    "world:\n  bounds: {min: [0, 0, 0], max: [40, 40, 10]}\n  obstacles:\n"
+    "    - {type: box, pos: [30, 30, 0.5], size: [6, 6, 0.4]}\n"
+    "    - {type: box, pos: [30, 30, 9.5], size: [6, 6, 0.4]}\n"
+    "    - {type: box, pos: [27, 30, 5], size: [0.4, 6, 9.4]}\n"
+    "    - {type: box, pos: [33, 30, 5], size: [0.4, 6, 9.4]}\n"
+    "    - {type: box, pos: [30, 27, 5], size: [6, 0.4, 9.4]}\n"
+    "    - {type: box, pos: [30, 33, 5], size: [6, 0.4, 9.4]}\n"
+    "vehicles: [{name: uav1, model: cf2, start: [2, 2, 2], goal: [30, 30, 5]}]\n"
+    "planner: {name: rrt, max_nodes: 10000000, time_limit: 600}\n";
+
+TEST(Interrupt, SigtermWhilePlanningARerunLeavesNeitherTheOldNorANewResult) {
+  const fs::path dir = freshDir("interrupt-planning");
+  fs::create_directories(dir);
+  const fs::path out = dir / "run", err = dir / "err";
+  // An earlier run finished in the folder: its metrics.json said reached_goal true.
+  std::ofstream(dir / "quick.yaml")
+      << "world: {bounds: {min: [0, 0, 0], max: [12, 8, 4]}}\n"
+         "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [4, 2, 1]}]\n"
+         "sim: {max_time: 10}\n";
+  const CommandResult first = runCosim("run " + (dir / "quick.yaml").string() +
+                                       " --no-video --quiet --out " + out.string());
+  ASSERT_EQ(first.status, 0) << first.err;
+  ASSERT_TRUE(jsonTrue(slurp(out / "metrics.json"), "reached_goal"));
+
+  std::ofstream(dir / "walled.yaml") << kUnreachableGoal;
+  const pid_t pid =
+      spawnCosim({"run", (dir / "walled.yaml").string(), "--no-video", "--out", out.string()}, err);
+  ASSERT_GT(pid, 0);
+  ASSERT_TRUE(waitForText(err, "planning uav1 with rrt", std::chrono::seconds(120))) << slurp(err);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  kill(pid, SIGTERM);
+  // The planner polls the stop request with its deadline: it ends at once, not at 600 s.
+  EXPECT_EQ(waitExitWithin(pid, std::chrono::seconds(30)), 1);
+  EXPECT_NE(slurp(err).find("interrupted; " + out.string() + " holds no finished run"),
+            std::string::npos)
+      << slurp(err);
+  expectNoFinishedOrTemporaryFiles(out);
+  for (const char* old : {"index.html", "timeseries.csv", "path.csv"})
+    EXPECT_FALSE(fs::exists(out / old)) << old << " of the earlier run is still there";
+  fs::remove_all(dir);
+}
+
+TEST(Interrupt, SigtermDuringALongCbsSearchEndsItWithoutAPlan) {
+  const fs::path dir = freshDir("interrupt-cbs");
+  fs::create_directories(dir);
+  const fs::path out = dir / "mapf", err = dir / "err";
+  const std::string data = COSIM_TEST_DATA_DIR "/movingai/";
+  // An earlier, solved instance left its mapf.json in the folder.
+  const CommandResult first =
+      runCosim("mapf " + data + "empty-8-8.map " + data +
+               "empty-8-8-random-1.scen --agents 2 --planner cbs --out " + out.string());
+  ASSERT_EQ(first.status, 0) << first.err;
+  ASSERT_TRUE(fs::exists(out / "mapf.json"));
+  // 200 agents on a 32 x 32 map with obstacles: CBS searches for minutes (time limit 600 s).
+  const pid_t pid = spawnCosim(
+      {"mapf", data + "random-32-32-10.map", data + "random-32-32-10-random-1.scen", "--agents",
+       "200", "--planner", "cbs", "--time-limit", "600", "--out", out.string()},
+      err);
+  ASSERT_GT(pid, 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+  kill(pid, SIGTERM);
+  EXPECT_EQ(waitExitWithin(pid, std::chrono::seconds(30)), 1);
+  EXPECT_NE(slurp(err).find("interrupted; " + out.string() + " holds no plan"), std::string::npos)
+      << slurp(err);
+  EXPECT_FALSE(fs::exists(out / "mapf.json"));
+  EXPECT_FALSE(fs::exists(out / "paths.csv"));
   fs::remove_all(dir);
 }
 

@@ -69,7 +69,7 @@ TEST(MapfCommand, ExitCodesForFailureAndBadInput) {
   const std::string base = "mapf " + kMap + " " + kScen + " --out " + dir.string();
   // Independent A* paths conflict on 30 agents: planning failed, not bad input.
   EXPECT_EQ(runCosim(base + " --agents 30 --planner independent_astar").status, 1);
-  const auto too_many = runCosim(base + " --agents 100000 --planner cbs");
+  const auto too_many = runCosim(base + " --agents 5000 --planner cbs");
   EXPECT_EQ(too_many.status, 2);
   EXPECT_NE(too_many.err.find("scenario lines"), std::string::npos);
   EXPECT_EQ(runCosim(base + " --agents 5 --planner astar").status, 2);

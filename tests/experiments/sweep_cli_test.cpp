@@ -240,5 +240,66 @@ TEST(SweepContractExample, TheContractsForestAndCanyonExampleRunsFromTheProjectF
   fs::remove_all(dir);
 }
 
+// The bundled team scenario sweeps like `cosim run` runs it (its validation used to know only
+// the single-agent planners: "unknown planner 'cbs'", exit 2). Short flights keep it quick.
+TEST(SweepGroundTeam, TheBundledGroundTeamScenarioSweeps) {
+  const fs::path dir = test::freshDir("sweep-ground-team");
+  fs::create_directories(dir);
+  std::ofstream(dir / "team.yaml") << "scenarios: [experiments/scenarios/ground_team.yaml]\n"
+                                      "vary: {planner.name: [cbs, whca_star]}\n"
+                                      "set: {sim.max_time: 3}\noutput: {video: false}\n";
+  const auto r = runCosim(
+      "sweep " + (dir / "team.yaml").string() + " --out " + (dir / "out").string() + " --quiet",
+      COSIM_SOURCE_DIR);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = readCsv(dir / "out" / "results.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  const auto status = static_cast<std::size_t>(std::find(rows[0].begin(), rows[0].end(), "status") -
+                                               rows[0].begin());
+  // 3 s is too short to arrive: the runs completed and failed their task, as `cosim run` says.
+  for (int job = 1; job <= 2; ++job) EXPECT_EQ(rows[job].at(status), "failed") << r.err;
+  fs::remove_all(dir);
+}
+
+// A sweep resumed after a file its scenario includes changed reruns the job (the old result
+// showed 0 collisions where a fresh run has them), and one resumed without changes runs nothing.
+TEST(SweepResume, AJobWhoseIncludedFragmentChangedRunsAgain) {
+  const fs::path dir = test::freshDir("sweep-include-changed");
+  fs::create_directories(dir);
+  std::ofstream(dir / "frag.xml") << "<mujoco><worldbody/></mujoco>\n";
+  std::ofstream(dir / "s.yaml")
+      << "world: {bounds: {min: [0, 0, 0], max: [12, 8, 4]}, include: frag.xml}\n"
+         "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [8, 2, 1]}]\n"
+         "sim: {max_time: 10}\n";
+  std::ofstream(dir / "sweep.yaml") << "scenarios: [s.yaml]\noutput: {video: false}\n";
+  const std::string cmd =
+      "sweep " + (dir / "sweep.yaml").string() + " --out " + (dir / "out").string();
+  const auto first = runCosim(cmd);
+  ASSERT_EQ(first.status, 0) << first.err;
+  const auto column = [](const std::vector<std::vector<std::string>>& rows,
+                         const std::string& name) {
+    return rows.at(1).at(static_cast<std::size_t>(std::find(rows[0].begin(), rows[0].end(), name) -
+                                                  rows[0].begin()));
+  };
+  EXPECT_EQ(column(readCsv(dir / "out" / "results.csv"), "collisions"), "0");
+
+  const auto unchanged = runCosim(cmd);
+  EXPECT_NE(unchanged.err.find("1 jobs, 1 already finished, 0 to run"), std::string::npos)
+      << unchanged.err;
+
+  // A wall across the straight flight: the same scenario text now collides.
+  std::ofstream(dir / "frag.xml")
+      << "<mujoco><worldbody><geom type=\"box\" pos=\"5 2 1\" size=\"0.2 3 2\"/>"
+         "</worldbody></mujoco>\n";
+  const auto resumed = runCosim(cmd);
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("1 jobs, 0 already finished, 1 to run"), std::string::npos)
+      << resumed.err;
+  const auto rows = readCsv(dir / "out" / "results.csv");
+  EXPECT_NE(column(rows, "collisions"), "0");
+  EXPECT_EQ(column(rows, "status"), "failed");
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace cosim

@@ -183,6 +183,69 @@ TEST_F(SweepSpecTest, AChangedScenarioChangesTheJobFingerprint) {
   EXPECT_EQ(after[0].fingerprint, expandSweepJobs(s, root_ / "out")[0].fingerprint);
 }
 
+// Every file a job's run reads is part of its fingerprint: a resumed sweep reruns the jobs whose
+// world fragment, grid map, URDF or mesh changed, though their scenario text did not.
+TEST_F(SweepSpecTest, AChangedIncludedFileChangesTheFingerprintOfTheJobsThatReadIt) {
+  write(root_ / "scenarios/frag.xml", "<mujoco><worldbody/></mujoco>\n");
+  write(root_ / "scenarios/map.map", "type octile\nheight 2\nwidth 2\nmap\n..\n..\n");
+  write(root_ / "scenarios/mesh.stl", "solid m\nendsolid m\n");
+  write(root_ / "scenarios/robot.urdf",
+        "<robot name=\"r\"><link name=\"base\"><visual><geometry><mesh filename=\"mesh.stl\"/>"
+        "</geometry></visual></link></robot>\n");
+  write(root_ / "scenarios/inc.yaml",
+        "world: {bounds: {min: [0, 0, 0], max: [20, 20, 6]}, include: frag.xml}\n"
+        "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [18, 18, 1]}]\n");
+  write(root_ / "scenarios/grid.yaml",
+        "world: {grid_map: {file: map.map, cell: 1}}\n"
+        "vehicles: [{name: r, model: robot.urdf, start: [0.5, 0.5, 0], goal: [1.5, 0.5, 0]}]\n");
+  const SweepSpec s = parse("scenarios: [../scenarios/inc.yaml, ../scenarios/grid.yaml]\n");
+  const auto fingerprints = [&] {
+    std::vector<std::string> f;
+    for (const auto& job : expandSweepJobs(s, root_ / "out")) f.push_back(job.fingerprint);
+    return f;
+  };
+  const auto before = fingerprints();
+  ASSERT_EQ(before.size(), 2u);
+  EXPECT_EQ(fingerprints(), before);  // nothing changed, nothing reruns
+
+  write(root_ / "scenarios/frag.xml",
+        "<mujoco><worldbody><geom type=\"box\" size=\"1 1 1\" pos=\"10 10 "
+        "1\"/></worldbody></mujoco>\n");
+  auto after = fingerprints();
+  EXPECT_NE(after[0], before[0]) << "the fragment changed";
+  EXPECT_EQ(after[1], before[1]) << "the grid job does not read the fragment";
+
+  const auto step = after;
+  write(root_ / "scenarios/map.map", "type octile\nheight 2\nwidth 2\nmap\n.@\n..\n");
+  after = fingerprints();
+  EXPECT_EQ(after[0], step[0]);
+  EXPECT_NE(after[1], step[1]) << "the grid map changed";
+
+  const auto step2 = after;
+  write(root_ / "scenarios/mesh.stl", "solid m2\nendsolid m2\n");
+  after = fingerprints();
+  EXPECT_NE(after[1], step2[1]) << "the URDF's mesh changed";
+
+  const auto step3 = after;
+  fs::remove(root_ / "scenarios/mesh.stl");
+  after = fingerprints();
+  EXPECT_NE(after[1], step3[1]) << "the URDF's mesh went missing";
+}
+
+// The bundled team scenario sweeps: its validation knows the team planners (cbs was "unknown").
+TEST_F(SweepSpecTest, TeamAndNavigatorPlannersOfGroundScenariosValidate) {
+  const std::string team =
+      std::string(COSIM_SOURCE_DIR) + "/experiments/scenarios/ground_team.yaml";
+  const SweepSpec s =
+      parse("scenarios: [" + team + "]\nvary: {planner.name: [cbs, whca_star, astar]}\n");
+  EXPECT_NO_THROW(validateSweepJobs(s, expandSweepJobs(s, root_ / "out")));
+  EXPECT_EQ(errorOf("scenarios: [" + team + "]\nvary: {planner.window: [4]}\n"),
+            "line 2, key vary.planner.window | scenario " + team + " with planner.window=4: " +
+                team +
+                ": --set planner.window=4, key planner.window: unknown parameter 'window' for "
+                "planner 'cbs'");
+}
+
 TEST(SweepShard, ShardsPartitionTheJobsRoundRobin) {
   const auto none = [](const char*) -> const char* { return nullptr; };
   const SweepShard a = parseSweepShard("1/3", none), b = parseSweepShard("2/3", none),

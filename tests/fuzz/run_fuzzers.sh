@@ -1,8 +1,14 @@
 #!/bin/bash
 # Builds the libFuzzer targets (tests/fuzz/*.cpp) with clang in build-fuzz and runs each for a
-# bounded time, seeded from the bundled files. Fails on any crash, sanitizer report, leak,
-# out-of-memory or timeout; the input that caused it is left in build-fuzz/artifacts/.
+# bounded time, seeded from the bundled files and from tests/fuzz/corpus/<target>/ (structure-
+# aware seeds: aliases, anchors, merge keys, tags, duplicate keys, deep trees, oversized fields;
+# and every input behind an earlier finding), with a dictionary of YAML or MJCF/URDF tokens.
+# Fails on any crash, sanitizer report, leak, out-of-memory or timeout; the input that caused it
+# is left in build-fuzz/artifacts/. Keep it as a regression input:
+#   cp build-fuzz/artifacts/<target>-crash-* tests/fuzz/corpus/<target>/
+# (CTest replays every corpus in every build: <target>_corpus, tests/fuzz/replay_corpus.cpp.)
 # Usage: tests/fuzz/run_fuzzers.sh [SECONDS_PER_TARGET (default 60)] [TARGET...]
+#   CI runs 30 s per target; the long run is tests/fuzz/run_fuzzers.sh 600 (10 min per target).
 set -uo pipefail
 cd "$(dirname "$0")/../.."
 ROOT=$(pwd)
@@ -25,7 +31,7 @@ CC=clang CXX=clang++ cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=RelWithDebInfo -D
   -DCOSIM_WITH_SIM=ON >/dev/null || exit 3
 cmake --build "$BUILD" -j"$JOBS" --target fuzzers || exit 3
 
-# Seeds: the bundled files each parser is meant to read.
+# Seeds: the bundled files each parser is meant to read, and the target's kept corpus.
 seeds() {
   case "$1" in
     fuzz_scenario) ls experiments/scenarios/*.yaml ;;
@@ -33,12 +39,21 @@ seeds() {
     fuzz_movingai_map) ls tests/data/movingai/*.map ;;
     fuzz_movingai_scen) ls tests/data/movingai/*.scen ;;
     fuzz_urdf) ls models/*.urdf ;;
+    fuzz_world_fragment) ls tests/fuzz/corpus/fuzz_world_fragment/*.xml ;;
+  esac
+  [ -d "tests/fuzz/corpus/$1" ] && find "tests/fuzz/corpus/$1" -type f
+}
+dictionary() {
+  case "$1" in
+    fuzz_scenario | fuzz_sweep) echo "-dict=$ROOT/tests/fuzz/yaml.dict" ;;
+    fuzz_urdf | fuzz_world_fragment) echo "-dict=$ROOT/tests/fuzz/mjcf.dict" ;;
   esac
 }
 
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
-  for t in fuzz_scenario fuzz_sweep fuzz_movingai_map fuzz_movingai_scen fuzz_urdf; do
+  for t in fuzz_scenario fuzz_sweep fuzz_movingai_map fuzz_movingai_scen fuzz_urdf fuzz_urdf_tree \
+      fuzz_world_fragment; do
     [ -x "$BUILD/tests/fuzz/$t" ] && targets+=("$t")
   done
 fi
@@ -51,10 +66,12 @@ failed=()
 for t in "${targets[@]}"; do
   corpus="$BUILD/corpus/$t"
   mkdir -p "$corpus"
-  for f in $(seeds "$t"); do cp -f "$f" "$corpus/"; done
+  # Seeds are copied under names of their own (a kept corpus file may share a bundled name).
+  for f in $(seeds "$t"); do cp -f "$f" "$corpus/seed-$(echo "$f" | tr '/' '_')"; done
   echo "fuzz: $t for ${SECONDS_EACH} s (corpus $(ls "$corpus" | wc -l) files)"
   # The corpus directory grows between runs (kept in build-fuzz, never in the source tree).
-  if ! "$BUILD/tests/fuzz/$t" "$corpus" -max_total_time="$SECONDS_EACH" -timeout=10 \
+  # shellcheck disable=SC2046  # the dictionary option is one word or none
+  if ! "$BUILD/tests/fuzz/$t" "$corpus" $(dictionary "$t") -max_total_time="$SECONDS_EACH" -timeout=10 \
       -rss_limit_mb=2048 -max_len=65536 -print_final_stats=1 \
       -artifact_prefix="$BUILD/artifacts/$t-" >"$BUILD/artifacts/$t.log" 2>&1; then
     failed+=("$t")

@@ -147,5 +147,28 @@ TEST(WorldGenerator, MazeDensityKnocksOutWallsOnly) {
   EXPECT_LT(wall_area[1], wall_area[0] - 9.0 * 10);
 }
 
+// Options that would make more obstacles than a scenario may hold are refused before generating
+// (a 10 km forest at density 0.5 would be 50 million trunks).
+TEST(WorldGenerators, RefuseMoreObstaclesThanAScenarioMayHoldBeforeGenerating) {
+  ForestOptions forest;
+  forest.world.size = {10000, 10000, 10};
+  forest.world.density = 0.5;
+  try {
+    generateForest(forest);
+    FAIL() << "generated";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.place(), "generator forest");
+    EXPECT_NE(e.problem().find("more than the 10000 a scenario may hold"), std::string::npos);
+  }
+  CityOptions city;
+  city.world.size = {10000, 10000, 10};
+  EXPECT_THROW(generateCity(city), InputError);
+  MazeWorldOptions maze;
+  maze.world.size = {10000, 10000, 10};
+  EXPECT_THROW(generateMazeWorld(maze), InputError);
+  forest.world.size = {50, 50, 10};  // the default world stays well inside
+  EXPECT_GT(generateForest(forest).world.obstacles.size(), 100u);
+}
+
 }  // namespace
 }  // namespace cosim

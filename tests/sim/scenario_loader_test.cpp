@@ -1,4 +1,8 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 
 #include "planning/input_error.h"
 #include "sim/scenario.h"
@@ -157,5 +161,62 @@ TEST(ScenarioLoader, GridMapRejectsBoundsBesideItAndCellsOffTheMap) {
   // A start on a blocked cell is inside an obstacle.
   EXPECT_NE(placeOfError(gridMapScenario("{file: " + kEightByEight + ", blocked: [[0, 0]]}"))
                 .find("inside obstacle"),
+            std::string::npos);
+}
+
+// Vehicle names: 1 to 64 printable ASCII characters without spaces or '/'. A comma or a quote
+// is legal (the CSV files quote them); a line break or a 200 KB name (repeated on every row of
+// the log) is not.
+TEST(ScenarioLoader, VehicleNamesHaveADocumentedCharacterSetAndLength) {
+  const auto named = [](const std::string& quoted) {
+    return replace(kGood, "name: uav1", "name: " + quoted);
+  };
+  EXPECT_EQ(parseScenario(named("'a,\"b\"'"), "s.yaml").vehicles[0].name, "a,\"b\"");
+  EXPECT_EQ(parseScenario(named(std::string(64, 'n')), "s.yaml").vehicles[0].name.size(), 64u);
+  EXPECT_NE(placeOfError(named(std::string(65, 'n')))
+                .find("key vehicles[0].name | a vehicle name has at most 64 characters (this one "
+                      "has 65)"),
+            std::string::npos);
+  EXPECT_NE(placeOfError(named("\"a\\nb\"")).find("(this one has a control character)"),
+            std::string::npos);
+  EXPECT_NE(placeOfError(named("\"a\\tb\"")).find("(this one has a control character)"),
+            std::string::npos);
+  EXPECT_NE(placeOfError(named("'a b'")).find("(this one has ' ')"), std::string::npos);
+  EXPECT_NE(placeOfError(named("a/b")).find("(this one has '/')"), std::string::npos);
+  EXPECT_NE(placeOfError(named("\"dr\\u00f6hne\"")).find("(this one has a non-ASCII character)"),
+            std::string::npos);
+}
+
+TEST(ScenarioLoader, AGridMapOfScatteredCellsIsRefusedBeforeItsBoxesAreMade) {
+  const std::string file = (std::filesystem::temp_directory_path() /
+                            ("cosim-checker-" + std::to_string(::getpid()) + ".map"))
+                               .string();
+  {
+    std::ofstream out(file);
+    out << "type octile\nheight 300\nwidth 300\nmap\n";
+    for (int y = 0; y < 300; ++y) {
+      for (int x = 0; x < 300; ++x) out << ((x + y) % 2 ? '@' : '.');
+      out << '\n';
+    }
+  }
+  // 45 000 blocked cells, none adjacent to another: 45 000 boxes, more than 10 000.
+  EXPECT_NE(placeOfError(gridMapScenario("{file: " + file + ", cell: 0.1}"))
+                .find("key world.grid_map.file | the map's blocked cells make more than 10000 "
+                      "boxes"),
+            std::string::npos);
+  std::filesystem::remove(file);
+}
+
+TEST(ScenarioLoader, PointsTimesObstaclesBeyondTheCheckBudgetIsRefused) {
+  std::string y = "world:\n  bounds: {min: [0, 0, 0], max: [100, 100, 10]}\n  obstacles:\n";
+  for (int i = 0; i < 10000; ++i)
+    y += "    - {type: sphere, pos: [" + std::to_string(1 + (i % 100) * 0.95) + ", " +
+         std::to_string(1 + (i / 100) * 0.95) + ", 9], radius: 0.01}\n";
+  y += "vehicles:\n  - {name: u, model: cf2, start: [1, 1, 1], waypoints: [";
+  for (int i = 0; i < 20001; ++i) y += (i ? ", [" : "[") + std::to_string(1 + i % 90) + ", 2, 1]";
+  y += "]}\n";
+  // (2 + 20001) points x 10000 obstacles = 200030000 > 2e8.
+  EXPECT_NE(placeOfError(y).find("key world | 20003 points x 10000 obstacles = 200030000 placement "
+                                 "checks, more than 200000000"),
             std::string::npos);
 }

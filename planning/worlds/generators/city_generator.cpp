@@ -19,6 +19,7 @@ GeneratedWorld generateCity(const CityOptions& o) {
   if (nx < 1 || ny < 1 || size.z() < 3)
     throw InputError("", "generator city",
                      "world too small for one lot between streets (and 3 m of height)");
+  checkGeneratedObstacleCount(static_cast<double>(nx) * ny, "city");  // one block per lot at most
   const double ox = (size.x() - (nx * o.pitch + o.street)) / 2;
   const double oy = (size.y() - (ny * o.pitch + o.street)) / 2;
 

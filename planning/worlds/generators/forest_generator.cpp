@@ -26,8 +26,9 @@ GeneratedWorld generateForest(const ForestOptions& o) {
   // Trunk count from the covered area: E[pi r^2] for r uniform in [a, b] is pi (a^2 + ab + b^2)/3.
   const double a = o.min_radius, b = o.max_radius;
   const double mean_disc = M_PI * (a * a + a * b + b * b) / 3.0;
-  const auto wanted =
-      static_cast<std::size_t>(std::llround(o.world.density * size.x() * size.y() / mean_disc));
+  const double expected = o.world.density * size.x() * size.y() / mean_disc;
+  checkGeneratedObstacleCount(expected, "forest");
+  const auto wanted = static_cast<std::size_t>(std::llround(expected));
   std::mt19937_64 rng(o.world.seed);
   // Trunks that would stand in a clearing are redrawn; the attempt cap bounds the work when the
   // clearings take much of a small world.

@@ -15,4 +15,14 @@ void checkWorldGeneratorOptions(const WorldGeneratorOptions& o, double max_densi
     throw InputError("", place, "density must be in [0, " + std::to_string(max_density) + "]");
 }
 
+void checkGeneratedObstacleCount(double expected, const std::string& generator) {
+  if (expected > kMaxGeneratedObstacles)
+    throw InputError("", "generator " + generator,
+                     "these options make about " +
+                         std::to_string(static_cast<long long>(expected)) +
+                         " obstacles, more than the " +
+                         std::to_string(static_cast<long long>(kMaxGeneratedObstacles)) +
+                         " a scenario may hold (a smaller size or density)");
+}
+
 }  // namespace cosim

@@ -30,6 +30,14 @@ inline double uniformDraw(std::mt19937_64& rng, double lo, double hi) {
   return lo + (hi - lo) * unitDraw(rng);
 }
 
+// Obstacles a generated world may have: what a scenario may hold (the loader's limit, 10 000).
+// Each generator estimates its count from its options and refuses more before generating any
+// (a 10 km forest at density 0.5 would be 50 million trunks, over 10 GB).
+constexpr double kMaxGeneratedObstacles = 10000;
+
+// Throws InputError (place: "generator <name>") unless `expected` <= kMaxGeneratedObstacles.
+void checkGeneratedObstacleCount(double expected, const std::string& generator);
+
 // Throws InputError (place: "generator <name>") if the size is not positive on every axis or the
 // density is outside [0, max_density].
 void checkWorldGeneratorOptions(const WorldGeneratorOptions& o, double max_density,

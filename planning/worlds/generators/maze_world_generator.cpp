@@ -15,6 +15,8 @@ GeneratedWorld generateMazeWorld(const MazeWorldOptions& o) {
   const int ny = static_cast<int>(std::floor(size.y() / o.cell));
   if (nx < 3 || ny < 3 || size.z() < 1)
     throw InputError("", "generator maze", "fewer than 3 x 3 cells fit (size / cell)");
+  // Walls are merged along rows into boxes: at most one box per two cells.
+  checkGeneratedObstacleCount(0.5 * nx * ny, "maze");
   OccupancyGrid maze = generateMaze(nx, ny, o.world.seed);
 
   // Open loops: a wall cell with exactly one odd coordinate separates two corridor cells; keep it

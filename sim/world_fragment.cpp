@@ -1,0 +1,201 @@
+#include "sim/world_fragment.h"
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "planning/input_error.h"
+#include "planning/input_file.h"
+
+namespace cosim {
+
+namespace {
+
+using tinyxml2::XMLDocument;
+using tinyxml2::XMLElement;
+
+constexpr std::uintmax_t kMaxAssetFileBytes = 32u << 20;  // one mesh, height field or texture
+
+const char* const kAllowedSections[] = {"asset", "default", "worldbody", "contact"};
+const char* const kFileAttributes[] = {"file",     "fileright", "fileleft", "fileup",
+                                       "filedown", "filefront", "fileback"};
+
+std::string at(const XMLElement* e) {
+  return "line " + std::to_string(e->GetLineNum()) + ", <" + e->Name() + ">";
+}
+
+// The (width, height) a PNG file declares in its header, or (0, 0) if it is not a PNG.
+std::array<long, 2> pngSize(const std::string& bytes) {
+  static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (bytes.size() < 24 || std::memcmp(bytes.data(), kSignature, 8) != 0) return {0, 0};
+  const auto big = [&](std::size_t i) {
+    long v = 0;
+    for (std::size_t k = 0; k < 4; ++k) v = (v << 8) | static_cast<unsigned char>(bytes[i + k]);
+    return v;
+  };
+  return {big(16), big(20)};
+}
+
+class FragmentChecker {
+ public:
+  explicit FragmentChecker(const std::filesystem::path& file)
+      : file_(file.string()), dir_(std::filesystem::absolute(file).parent_path()) {}
+
+  void checkSection(XMLElement* section) {
+    const std::string name = section->Name();
+    if (name == "option" || name == "compiler" || name == "size" || name == "visual" ||
+        name == "statistic")
+      fail(section, "a world fragment may not set the world's <" + name +
+                        "> (the scenario does: sim.timestep for the physics step)");
+    if (name == "include") fail(section, "a world fragment may not include further files");
+    bool allowed = false;
+    for (const char* a : kAllowedSections) allowed = allowed || name == a;
+    if (!allowed)
+      fail(
+          section,
+          "<" + name + "> is not allowed in a world fragment (asset, default, worldbody, contact)");
+    // Every element below, without recursion (tinyxml2 bounds the depth at 100 anyway).
+    std::vector<XMLElement*> open = {section};
+    while (!open.empty()) {
+      XMLElement* e = open.back();
+      open.pop_back();
+      checkElement(e);
+      for (XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+        open.push_back(c);
+    }
+  }
+
+ private:
+  [[noreturn]] void fail(const XMLElement* e, const std::string& problem) const {
+    throw InputError(file_, at(e), problem);
+  }
+
+  long attribute(const XMLElement* e, const char* name) const {
+    const char* v = e->Attribute(name);
+    if (!v) return 0;
+    char* end = nullptr;
+    const long n = std::strtol(v, &end, 10);
+    if (end == v) fail(e, std::string("'") + name + "' must be a whole number");
+    return n;
+  }
+
+  void checkElement(XMLElement* e) {
+    if (++elements_ > kMaxFragmentElements)
+      fail(e, "more than " + std::to_string(kMaxFragmentElements) + " elements");
+    const std::string name = e->Name();
+    if (name == "include") fail(e, "a world fragment may not include further files");
+    if (name == "composite")
+      fail(e, "composite objects are not allowed in a world fragment (they generate bodies)");
+    for (const char* attr : kFileAttributes)
+      if (const char* f = e->Attribute(attr)) resolveFile(e, attr, f);
+    if (name == "hfield")
+      checkSize(e, attribute(e, "nrow"), attribute(e, "ncol"), kMaxHeightFieldSamples,
+                "height field");
+    if (name == "texture")
+      checkSize(e, attribute(e, "width"), attribute(e, "height"), kMaxTexturePixels, "texture");
+  }
+
+  // rows x cols within [0, limit], without overflowing.
+  void checkSize(const XMLElement* e, long rows, long cols, long limit,
+                 const std::string& what) const {
+    if (rows < 0 || cols < 0 || (cols > 0 && rows > limit / cols))
+      fail(e, "a " + what + " of " + std::to_string(rows) + " x " + std::to_string(cols) +
+                  " is more than the " + std::to_string(limit) + " samples allowed");
+  }
+
+  // A file named by the fragment: relative to the fragment's folder, a regular file of bounded
+  // size, and (for height fields and textures) of bounded dimensions. Rewritten as absolute.
+  void resolveFile(XMLElement* e, const char* attr, const std::string& written) {
+    std::filesystem::path p(written);
+    if (p.is_relative()) p = dir_ / p;
+    const std::string where = at(e) + " " + attr + "=\"" + written + "\"";
+    std::string bytes;
+    try {
+      bytes = readInputFile(p.string(), kMaxAssetFileBytes, "mesh, height field or texture file");
+    } catch (const InputError& err) {
+      throw InputError(file_, where, err.problem() + " (" + p.string() + ")");
+    }
+    const std::string name = e->Name();
+    if (name == "hfield" || name == "texture") {
+      long w = 0, h = 0;
+      if (const auto size = pngSize(bytes); size[0] > 0) {
+        w = size[0];
+        h = size[1];
+      } else if (name == "hfield" && bytes.size() >= 8) {
+        // MuJoCo's own height field format: int32 nrow, int32 ncol, then the floats.
+        std::int32_t rows = 0, cols = 0;
+        std::memcpy(&rows, bytes.data(), 4);
+        std::memcpy(&cols, bytes.data() + 4, 4);
+        w = rows;
+        h = cols;
+      }
+      const long limit = name == "hfield" ? kMaxHeightFieldSamples : kMaxTexturePixels;
+      if (w < 0 || h < 0 || (h > 0 && w > limit / h))
+        throw InputError(file_, where,
+                         "the file holds " + std::to_string(w) + " x " + std::to_string(h) +
+                             " samples, more than the " + std::to_string(limit) + " allowed");
+    }
+    e->SetAttribute(attr, std::filesystem::absolute(p).lexically_normal().c_str());
+  }
+
+  std::string file_;
+  std::filesystem::path dir_;
+  long elements_ = 0;
+};
+
+// The fragment parsed, or throws InputError.
+void parseFragment(const std::filesystem::path& fragment, XMLDocument& src) {
+  const std::string file = fragment.string();
+  const std::string text = readInputFile(file, kMaxModelFileBytes, "MJCF fragment");
+  if (src.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
+    throw InputError(file, "line " + std::to_string(src.ErrorLineNum()),
+                     std::string("malformed XML: ") + src.ErrorName());
+  const XMLElement* root = src.RootElement();
+  if (!root || std::strcmp(root->Name(), "mujoco") != 0)
+    throw InputError(file, root ? at(root) : std::string("line 1"),
+                     "a world fragment is a <mujoco> element");
+}
+
+}  // namespace
+
+std::vector<std::filesystem::path> worldFragmentFiles(const std::filesystem::path& fragment) {
+  std::vector<std::filesystem::path> files;
+  XMLDocument src;
+  try {
+    parseFragment(fragment, src);
+  } catch (const InputError&) {
+    return files;
+  }
+  const std::filesystem::path dir = std::filesystem::absolute(fragment).parent_path();
+  std::vector<const XMLElement*> open = {src.RootElement()};
+  while (!open.empty() && files.size() <= static_cast<std::size_t>(kMaxFragmentElements)) {
+    const XMLElement* e = open.back();
+    open.pop_back();
+    for (const char* attr : kFileAttributes)
+      if (const char* f = e->Attribute(attr)) {
+        const std::filesystem::path p(f);
+        files.push_back(p.is_relative() ? dir / p : p);
+      }
+    for (const XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+      open.push_back(c);
+  }
+  return files;
+}
+
+void addWorldFragment(XMLDocument& doc, XMLElement* mujoco, const std::filesystem::path& fragment) {
+  XMLDocument src;
+  parseFragment(fragment, src);
+  XMLElement* root = src.RootElement();
+  FragmentChecker checker(fragment);
+  for (XMLElement* section = root->FirstChildElement(); section;
+       section = section->NextSiblingElement())
+    checker.checkSection(section);
+  for (XMLElement* section = root->FirstChildElement(); section;
+       section = section->NextSiblingElement())
+    mujoco->InsertEndChild(section->DeepClone(&doc));
+}
+
+}  // namespace cosim
