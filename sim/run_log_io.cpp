@@ -168,7 +168,11 @@ std::string pathCsv(const RunLog& log) {
       char buf[96];
       std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g", p.x(), p.y(), p.z());
       out += buf;
-      out += many ? "," + csvField(v.name) + "\n" : "\n";
+      if (many) {  // appended piece by piece: GCC 12's -Wrestrict misfires on operator+ chains
+        out += ',';
+        out += csvField(v.name);
+      }
+      out += '\n';
     }
   }
   return out;
