@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "planning/input_error.h"
@@ -84,6 +85,35 @@ class ParseMessages : public console_bridge::OutputHandler {
   std::string first_error;
 };
 
+// The joints must make a tree: urdfdom links each child to its parent with shared pointers, so a
+// loop of joints (a -> b -> a) leaves a cycle of them behind when it then rejects the robot (a
+// leak the fuzzer found). Checked here on the XML, iteratively (no recursion the input controls).
+void checkJointGraph(const XMLDocument& xml, const std::string& file) {
+  const XMLElement* robot = xml.FirstChildElement("robot");
+  if (!robot) return;  // urdfdom names that problem
+  std::map<std::string, std::string> parent_of;  // child link -> parent link
+  for (const XMLElement* j = robot->FirstChildElement("joint"); j;
+       j = j->NextSiblingElement("joint")) {
+    const XMLElement* parent = j->FirstChildElement("parent");
+    const XMLElement* child = j->FirstChildElement("child");
+    const char* p = parent ? parent->Attribute("link") : nullptr;
+    const char* c = child ? child->Attribute("link") : nullptr;
+    if (!p || !c) continue;  // urdfdom names that problem
+    const std::string where = "line " + std::to_string(j->GetLineNum()) + ", <joint>";
+    if (!parent_of.emplace(c, p).second)
+      throw InputError(file, where,
+                       std::string("link '") + c + "' is the child of two joints (a kinematic "
+                                                   "loop; a URDF robot is a tree)");
+    // Walk up from the new joint's parent: reaching its child closes a loop. The walk ends within
+    // the number of joints, since every earlier joint kept the graph a forest.
+    for (auto it = parent_of.find(p); it != parent_of.end(); it = parent_of.find(it->second))
+      if (it->first == c || it->second == c)
+        throw InputError(file, where,
+                         std::string("link '") + c + "' is its own ancestor (the joints form a "
+                                                     "loop; a URDF robot is a tree)");
+  }
+}
+
 urdf::ModelInterfaceSharedPtr parseUrdf(const std::string& file) {
   const std::string text = readInputFile(file, kMaxModelFileBytes, "URDF file");
   // tinyxml2 first: it reports XML syntax errors with a line number, urdfdom does not.
@@ -102,6 +132,7 @@ urdf::ModelInterfaceSharedPtr parseUrdf(const std::string& file) {
                          "more than " + std::to_string(kMaxUrdfLinks) +
                              " links (a ground robot has a few dozen at most)");
   }
+  checkJointGraph(xml, file);
   ParseMessages messages;
   urdf::ModelInterfaceSharedPtr model = urdf::parseURDF(text);
   if (!model)

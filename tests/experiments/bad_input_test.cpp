@@ -455,6 +455,17 @@ std::vector<BadInput> badInputs() {
        2,
        "deep.urdf: link 'l65': more than 64 links below the base on one branch",
        {{"deep.urdf", chainUrdf(100)}}},
+      {"urdf_joints_form_a_loop",
+       "run {in} --no-video --out {out}",
+       robotScenario("loop.urdf"),
+       "",
+       2,
+       "loop.urdf: line 4, <joint>: link 'a' is its own ancestor (the joints form a loop",
+       {{"loop.urdf",
+         "<robot name=\"loop\">\n<link name=\"a\"/><link name=\"b\"/>\n"
+         "<joint name=\"ab\" type=\"fixed\"><parent link=\"a\"/><child link=\"b\"/></joint>\n"
+         "<joint name=\"ba\" type=\"fixed\"><parent link=\"b\"/><child link=\"a\"/></joint>\n"
+         "</robot>\n"}}},
       // world.include: the scenario owns the physics options; sizes are bounded; errors name the
       // fragment.
       {"include_sets_timestep",
