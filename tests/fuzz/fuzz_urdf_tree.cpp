@@ -4,15 +4,10 @@
 // (`byte & 3` back: all zeros make a chain as long as the input), its joint type is
 // `(byte >> 2) & 3` (fixed, revolute, continuous, prismatic) and bit 4 gives it a collision box.
 // A 20 000-byte input is the 20 000-link chain whose recursive conversion crashed the program.
-#include <unistd.h>
-
-#include <filesystem>
-#include <fstream>
 #include <string>
 
-#include "planning/input_error.h"
-#include "sim/urdf_vehicle.h"
 #include "tests/fuzz/fuzz_input.h"
+#include "tests/fuzz/urdf_conversion.h"
 
 namespace {
 
@@ -41,28 +36,6 @@ std::string treeUrdf(const std::uint8_t* data, std::size_t size) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::filesystem::path file =
-      std::filesystem::temp_directory_path() /
-      ("cosim-fuzz-tree-" + std::to_string(::getpid()) + ".urdf");
-  {
-    std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    out << treeUrdf(data, size);
-  }
-  tinyxml2::XMLDocument doc;
-  tinyxml2::XMLElement* root = doc.NewElement("mujoco");
-  doc.InsertEndChild(root);
-  tinyxml2::XMLElement* worldbody = root->InsertNewChildElement("worldbody");
-  cosim::VehicleSpec vehicle;
-  vehicle.name = "robot";
-  vehicle.model = file.string();
-  vehicle.model_file = file;
-  vehicle.ground = true;
-  vehicle.waypoints.push_back({1.0, 1.0, 0.0});
-  try {
-    cosim::addUrdfVehicle(doc, worldbody, vehicle, 0.0);
-    tinyxml2::XMLPrinter printer;
-    doc.Print(&printer);
-  } catch (const cosim::InputError&) {
-  }
+  cosim::fuzz::convertUrdfText(treeUrdf(data, size), "tree");
   return 0;
 }
