@@ -14,6 +14,7 @@
 
 #include "control/figure_eight_reference.h"
 #include "experiments/cli/output_files.h"
+#include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "render/figures.h"
 #include "sim/controller_factory.h"
@@ -39,14 +40,6 @@ const StudyController kControllers[] = {{"geometric", "geometric", false},
                                         {"indi", "indi", false},
                                         {"indi_drag", "indi", true},
                                         {"dsl_pid", "dsl_pid", false}};
-
-std::string fixed(double v, int decimals) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(decimals);
-  s << v;
-  return s.str();
-}
 
 // An empty 30 x 20 x 8 m room, quad_1500g at the figure's centre, with the study's conditions.
 Scenario studyScenario(const FigureEightShape& shape, double seconds, std::uint64_t seed) {

@@ -1,5 +1,6 @@
 #include "experiments/reproduce/report_files.h"
 
+#include <cstdio>
 #include <filesystem>
 
 #include "experiments/cli/output_files.h"
@@ -37,6 +38,18 @@ std::string writeReportFiles(const std::string& name, const Options& options,
   writeFileAtomically(dir / (name + ".json"), reportJson(name, options, report));
   writeFileAtomically(dir / (name + ".md"), md);
   return md;
+}
+
+std::string fmt(const char* printf_format, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, printf_format, v);
+  return buf;
+}
+
+std::string fixed(double v, int decimals) {
+  char format[16];
+  std::snprintf(format, sizeof format, "%%.%df", decimals);
+  return fmt(format, v);
 }
 
 }  // namespace cosim::reproduce

@@ -11,6 +11,11 @@ namespace cosim::reproduce {
 // The report as written to NAME.md: with --quick, a line under the title says it is a quick run.
 std::string reportMarkdown(const Options& options, const Report& report);
 
+// One number for a report's tables, printf-style (fmt("%.2f", x)), or with `decimals` digits
+// after the point.
+std::string fmt(const char* printf_format, double v);
+std::string fixed(double v, int decimals);
+
 // NAME.json's text.
 std::string reportJson(const std::string& name, const Options& options, const Report& report);
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "experiments/cli/output_files.h"
+#include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/run_spread.h"
 #include "experiments/reproduce/seed002_workspaces.h"
@@ -24,12 +25,6 @@
 namespace cosim::reproduce {
 
 namespace {
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
 
 std::string point(int x, int y) {
   char b[32];

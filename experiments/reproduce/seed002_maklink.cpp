@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "experiments/cli/output_files.h"
+#include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/seed002_maklink_map.h"
 #include "planning/deadline.h"
@@ -108,12 +109,6 @@ GaRun realCodedGa(const Seed002MaklinkMap& map, const std::vector<int>& lines, s
   run.length = best;
   run.time_ms = clock.elapsedMs();
   return run;
-}
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
 }
 
 std::string offsetsText(const std::vector<double>& h) {

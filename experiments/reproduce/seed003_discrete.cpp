@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "planning/grid/astar.h"
 #include "planning/grid/basic_theta_star.h"
@@ -41,12 +42,6 @@ struct Measured {
   double length = 0, time_ms = 0, los = 0, expansions = 0;
   std::vector<double> times_ms;
 };
-
-std::string fmt(const char* format, double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, format, v);
-  return buf;
-}
 
 std::string obstacleList(const World& w) {
   std::string s;

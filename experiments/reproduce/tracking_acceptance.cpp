@@ -8,20 +8,13 @@
 #include <sstream>
 
 #include "experiments/cli/run_pipeline.h"
+#include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "planning/input_error.h"
 
 namespace cosim::reproduce {
 
 namespace {
-
-std::string fixed(double v, int decimals) {
-  std::ostringstream s;
-  s.setf(std::ios::fixed);
-  s.precision(decimals);
-  s << v;
-  return s.str();
-}
 
 // The bundled scenarios flown by a single quadrotor (ground-robot scenarios are left out).
 std::vector<std::filesystem::path> quadrotorScenarios() {
