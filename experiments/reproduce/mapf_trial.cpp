@@ -1,18 +1,15 @@
 #include "experiments/reproduce/mapf_trial.h"
 
 #include <cmath>
-#include <cstdio>
 
+#include "experiments/reproduce/report_files.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/mapf/solution_validator.h"
 
 namespace cosim {
 
 std::string formatFixed(double v, int digits) {
-  if (std::isnan(v)) return "-";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
+  return std::isnan(v) ? "-" : reproduce::fixed(v, digits);
 }
 
 MapfTrial runMapfTrial(const std::string& planner,

@@ -47,9 +47,9 @@ std::string fmt(const char* printf_format, double v) {
 }
 
 std::string fixed(double v, int decimals) {
-  char format[16];
-  std::snprintf(format, sizeof format, "%%.%df", decimals);
-  return fmt(format, v);
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
 }
 
 }  // namespace cosim::reproduce
