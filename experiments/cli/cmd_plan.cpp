@@ -48,8 +48,9 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
       try {
         return loadCheckedScenario(a->scenario, overrides, PlannerUse::FirstVehicle);
       } catch (const InputError& e) {  // a planner named by --planner: say so, not --set
-        const std::string set_place = "--set " + overrides.back() + ", key planner.name";
-        if (a->planner.empty() || e.place() != set_place) throw;
+        if (a->planner.empty() ||
+            e.place() != "--set planner.name=" + a->planner + ", key planner.name")
+          throw;
         throw InputError(e.file(), "--planner " + a->planner, e.problem());
       }
     }();

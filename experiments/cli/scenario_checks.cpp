@@ -38,7 +38,8 @@ std::string scenarioKeyPlace(const std::string& path, const std::vector<std::str
   for (auto o = overrides.rbegin(); o != overrides.rend(); ++o) {
     const std::string assigned = o->substr(0, o->find('='));
     if (key.compare(0, assigned.size(), assigned) == 0 &&
-        (key.size() == assigned.size() || key[assigned.size()] == '.'))
+        (key.size() == assigned.size() || key[assigned.size()] == '.' ||
+         key[assigned.size()] == '['))
       return "--set " + *o + ", key " + key;
   }
   // The file was loaded a moment ago: read it again to find the key's line.

@@ -225,7 +225,7 @@ std::vector<BadInput> badInputs() {
        "team planners are for `cosim mapf` and for `cosim run` on a scenario of ground robots or "
        "of a quadrotor team"},
       {"saco_start_and_goal_at_different_heights", "plan {in} --out {dir}/new",
-       withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2, 1.2], goal: [18, 18, 3.2]}]\n") +
+       kWorld + "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1.2], goal: [18, 18, 3.2]}]\n" +
            "planner: {name: saco, resolution: 0.5}\n",
        "", 1,
        "start and goal must be at the same height, in one layer of the 0.5 m grid (start in z 1-1.5 "

@@ -244,7 +244,8 @@ TEST_F(SweepSpecTest, TeamAndNavigatorPlannersOfGroundScenariosValidate) {
             "line 2, key vary.planner.window | scenario " + team + " with planner.window=4: " +
                 team +
                 ": --set planner.window=4, key planner.window: unknown parameter 'window' for "
-                "planner 'cbs'");
+                "planner 'cbs' (allowed: bypass, connectivity, max_expansions, max_nodes, "
+                "resolution, time_limit)");
 }
 
 TEST(SweepShard, ShardsPartitionTheJobsRoundRobin) {
