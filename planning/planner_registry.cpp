@@ -74,8 +74,8 @@ const PlannerEntry& findOrThrow(const std::string& name, const ParamSet& params,
   const std::string hint = didYouMean(name, known);
   throw InputError(params.file(), place,
                    "unknown " + std::string(grid_only ? "grid " : "") + "planner '" + name + "' (" +
-                       (hint.empty() ? "" : hint + " ") + "known: " + (list.empty() ? "none" : list) +
-                       ")");
+                       (hint.empty() ? "" : hint + " ") +
+                       "known: " + (list.empty() ? "none" : list) + ")");
 }
 }  // namespace
 

@@ -97,9 +97,9 @@ namespace {
 
 // One step of an override's path: a mapping key, or (after it, in brackets) a list index.
 struct PathStep {
-  std::string key;          // empty for an index step
+  std::string key;  // empty for an index step
   std::size_t index = 0;
-  std::string shown;        // the path up to and including this step, for messages
+  std::string shown;  // the path up to and including this step, for messages
 };
 
 // "vehicles[0].goal" -> vehicles, [0], goal.

@@ -113,8 +113,8 @@ std::unique_ptr<MapfPlanner> makeMapfPlanner(const std::string& name, ParamSet& 
   }
   const std::string hint = didYouMean(name, names);
   throw InputError(params.file(), place,
-                   "unknown multi-robot planner '" + name + "' (" + (hint.empty() ? "" : hint + " ") +
-                       "known: " + known + ")");
+                   "unknown multi-robot planner '" + name + "' (" +
+                       (hint.empty() ? "" : hint + " ") + "known: " + known + ")");
 }
 
 }  // namespace cosim

@@ -102,10 +102,9 @@ std::set<std::string> trajectoryKeys(const std::string& mode) {
       "vehicles: [{name: uav1, model: cf2, start: [1, 1, 1], goal: [5, 5, 1]}]\n"
       "planner: {name: astar, resolution: 0.5}\n";
   std::ofstream(dir / "s.yaml") << scenario;
-  const CommandResult r =
-      runCosim("run " + (dir / "s.yaml").string() + " --no-video --no-images --quiet --out " +
-               (dir / "out").string() + " --set trajectory.mode=" + mode +
-               " --set trajectory.zzz_probe=1");
+  const CommandResult r = runCosim(
+      "run " + (dir / "s.yaml").string() + " --no-video --no-images --quiet --out " +
+      (dir / "out").string() + " --set trajectory.mode=" + mode + " --set trajectory.zzz_probe=1");
   fs::remove_all(dir);
   EXPECT_EQ(r.status, 2) << r.err;
   EXPECT_NE(r.err.find("unknown parameter 'zzz_probe' for trajectory mode '" + mode + "'"),
@@ -152,11 +151,10 @@ TEST(ReadmeScenarioKeys, EverySectionListsExactlyTheKeysTheLoaderAccepts) {
 TEST(ReadmeScenarioKeys, EveryTopLevelSectionHasARow) {
   const auto table = readmeKeyTable();
   for (const std::string& key : loaderKeys("")) {
-    const bool has_row =
-        std::any_of(table.begin(), table.end(), [&key](const auto& row) {
-          return row.first.rfind("`" + key + "`", 0) == 0 || row.first.rfind("`" + key + ".", 0) == 0 ||
-                 row.first.rfind("`" + key + "[", 0) == 0;
-        });
+    const bool has_row = std::any_of(table.begin(), table.end(), [&key](const auto& row) {
+      return row.first.rfind("`" + key + "`", 0) == 0 || row.first.rfind("`" + key + ".", 0) == 0 ||
+             row.first.rfind("`" + key + "[", 0) == 0;
+    });
     EXPECT_TRUE(has_row) << "README.md's key table has no row for section " << key;
   }
 }

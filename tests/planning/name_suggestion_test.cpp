@@ -17,13 +17,13 @@ TEST(NameSuggestion, EditDistanceCountsInsertionsDeletionsSubstitutionsAndSwaps)
 }
 
 TEST(NameSuggestion, SuggestsOnlyNearMisses) {
-  const std::vector<std::string> planners = {"astar", "theta_star", "lazy_theta_star", "rrt",
-                                             "rrt_star", "prm"};
+  const std::vector<std::string> planners = {"astar", "theta_star", "lazy_theta_star",
+                                             "rrt",   "rrt_star",   "prm"};
   EXPECT_EQ(closestName("thetastar", planners), "theta_star");
   EXPECT_EQ(closestName("rrt_str", planners), "rrt_star");
   EXPECT_EQ(closestName("teleport", planners), "");  // not a slip of any of them
-  EXPECT_EQ(closestName("rrt", planners), "");        // a known name needs no suggestion
-  EXPECT_EQ(closestName("x", {"a", "prm"}), "");      // one letter would "match" any letter
+  EXPECT_EQ(closestName("rrt", planners), "");       // a known name needs no suggestion
+  EXPECT_EQ(closestName("x", {"a", "prm"}), "");     // one letter would "match" any letter
   EXPECT_EQ(didYouMean("wrld", {"world", "vehicles"}), "did you mean 'world'?");
   EXPECT_EQ(didYouMean("zzz_probe", {"world", "vehicles"}), "");
 }

@@ -33,10 +33,10 @@ std::string errorOf(const std::vector<std::string>& sets) {
 }  // namespace
 
 TEST(ScenarioSetOverride, ReachesListElementsAndTheirKeys) {
-  const Scenario s = parseScenario(
-      kTwoVehicles, "s.yaml",
-      {"vehicles[0].goal=[36,20,2.5]", "vehicles[1].model=cf2", "world.obstacles[1].radius=0.5",
-       "world.bounds.max=[40, 30, 8]"});
+  const Scenario s =
+      parseScenario(kTwoVehicles, "s.yaml",
+                    {"vehicles[0].goal=[36,20,2.5]", "vehicles[1].model=cf2",
+                     "world.obstacles[1].radius=0.5", "world.bounds.max=[40, 30, 8]"});
   EXPECT_EQ(s.vehicles[0].goal(), Eigen::Vector3d(36, 20, 2.5));
   EXPECT_EQ(s.vehicles[1].model, "cf2");
   EXPECT_EQ(s.vehicles[0].model, "quad_1500g");  // the other element is untouched
@@ -46,19 +46,19 @@ TEST(ScenarioSetOverride, ReachesListElementsAndTheirKeys) {
 }
 
 TEST(ScenarioSetOverride, NestedIndicesReplaceOneElementOfAnInnerList) {
-  const Scenario s = parseScenario(
-      kTwoVehicles, "s.yaml",
-      {"vehicles[1].waypoints=[[5, 5, 2], [8, 4, 2]]", "vehicles[1].waypoints[1]=[9, 3, 2]",
-       "vehicles[1].waypoints[0][2]=3"});
+  const Scenario s =
+      parseScenario(kTwoVehicles, "s.yaml",
+                    {"vehicles[1].waypoints=[[5, 5, 2], [8, 4, 2]]",
+                     "vehicles[1].waypoints[1]=[9, 3, 2]", "vehicles[1].waypoints[0][2]=3"});
   ASSERT_EQ(s.vehicles[1].waypoints.size(), 3u);  // two waypoints, then the goal
   EXPECT_EQ(s.vehicles[1].waypoints[0], Eigen::Vector3d(5, 5, 3));
   EXPECT_EQ(s.vehicles[1].waypoints[1], Eigen::Vector3d(9, 3, 2));
 }
 
 TEST(ScenarioSetOverride, AWholeElementCanBeReplaced) {
-  const Scenario s = parseScenario(
-      kTwoVehicles, "s.yaml",
-      {"vehicles[1]={name: scout, model: cf2, start: [3, 3, 1], goal: [17, 3, 1]}"});
+  const Scenario s =
+      parseScenario(kTwoVehicles, "s.yaml",
+                    {"vehicles[1]={name: scout, model: cf2, start: [3, 3, 1], goal: [17, 3, 1]}"});
   EXPECT_EQ(s.vehicles[1].name, "scout");
   EXPECT_EQ(s.vehicles[1].goal(), Eigen::Vector3d(17, 3, 1));
 }
