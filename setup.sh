@@ -35,12 +35,16 @@ fi
 JOBS=$(nproc 2>/dev/null || echo 2)
 # ccache keys on paths relative to the checkout, so another clone of the project reuses the cache.
 export CCACHE_BASEDIR="$PWD"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j"$JOBS"
-
 case "${1:-build}" in
-  run)  build/cosim run --out out/default ;;
-  test) ctest --test-dir build --output-on-failure -j"$JOBS" ;;
-  build) ;;
+  run|test|build) ;;
   *) echo "usage: $0 [run|test|build]" >&2; exit 2 ;;
+esac
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# `run` builds only the program it runs (not the test suite); `test` and `build` build everything.
+case "${1:-build}" in
+  run)  cmake --build build -j"$JOBS" --target cosim
+        build/cosim run --out out/default ;;
+  test) cmake --build build -j"$JOBS"
+        ctest --test-dir build --output-on-failure -j"$JOBS" ;;
+  build) cmake --build build -j"$JOBS" ;;
 esac

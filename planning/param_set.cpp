@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "planning/input_error.h"
+#include "planning/name_suggestion.h"
 
 namespace cosim {
 
@@ -94,13 +95,30 @@ std::string ParamSet::getString(const std::string& name, const std::string& fall
   return v;
 }
 
+namespace {
+// "unknown parameter 'x' for OWNER (did you mean 'y'? allowed: ...)": the allowed names are those
+// the owner asked for.
+std::string unknownParameterProblem(const std::string& name, const std::string& owner,
+                                    const std::map<std::string, bool>& asked) {
+  std::vector<std::string> names;
+  std::string list;
+  for (const auto& [known, used] : asked) {
+    names.push_back(known);
+    list += (list.empty() ? "" : ", ") + known;
+  }
+  const std::string hint = didYouMean(name, names);
+  return "unknown parameter '" + name + "' for " + owner + " (" + (hint.empty() ? "" : hint + " ") +
+         "allowed: " + (list.empty() ? "none" : list) + ")";
+}
+}  // namespace
+
 std::vector<std::string> ParamSet::requireAllUsedExcept(
     const std::string& owner, const std::vector<std::string>& tolerated) const {
   std::vector<std::string> ignored;
   for (const auto& [name, entry] : values_) {
     if (used_.count(name)) continue;
     if (std::find(tolerated.begin(), tolerated.end(), name) == tolerated.end())
-      fail(name, "unknown parameter '" + name + "' for " + owner);
+      fail(name, unknownParameterProblem(name, owner, used_));
     ignored.push_back(name);
   }
   return ignored;
@@ -108,7 +126,7 @@ std::vector<std::string> ParamSet::requireAllUsedExcept(
 
 void ParamSet::requireAllUsed(const std::string& owner) const {
   for (const auto& [name, entry] : values_) {
-    if (!used_.count(name)) fail(name, "unknown parameter '" + name + "' for " + owner);
+    if (!used_.count(name)) fail(name, unknownParameterProblem(name, owner, used_));
   }
 }
 

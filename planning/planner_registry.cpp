@@ -5,6 +5,8 @@
 #include "planning/grid/grid_planners.h"
 #include "planning/grid/grid_world_planner.h"
 #include "planning/input_error.h"
+#include "planning/mapf/mapf_planner_registry.h"
+#include "planning/name_suggestion.h"
 #include "planning/sampling/sampling_planners.h"
 #include "planning/swarm/planners_000.h"
 #include "planning/swarm/planners_002.h"
@@ -56,15 +58,24 @@ namespace {
 const PlannerEntry& findOrThrow(const std::string& name, const ParamSet& params,
                                 const std::string& place, bool grid_only) {
   const PlannerEntry* entry = PlannerRegistry::instance().find(name);
-  if (!entry || (grid_only && !entry->make_grid)) {
-    std::string known;
-    for (const auto& e : PlannerRegistry::instance().entries())
-      if (!grid_only || e.make_grid) known += (known.empty() ? "" : ", ") + e.name;
-    throw InputError(params.file(), place,
-                     "unknown " + std::string(grid_only ? "grid " : "") + "planner '" + name +
-                         "' (known: " + (known.empty() ? "none" : known) + ")");
-  }
-  return *entry;
+  if (entry && (!grid_only || entry->make_grid)) return *entry;
+  const std::string kind = grid_only ? "grid planner" : "single-agent planner";
+  for (const auto& team : mapfPlanners())
+    if (team.name == name)
+      throw InputError(params.file(), place,
+                       "'" + name + "' is a team (multi-robot) planner, not a " + kind +
+                           ": team planners are for `cosim mapf` and for `cosim run` on a "
+                           "scenario of ground robots or of a quadrotor team");
+  std::vector<std::string> known;
+  for (const auto& e : PlannerRegistry::instance().entries())
+    if (!grid_only || e.make_grid) known.push_back(e.name);
+  std::string list;
+  for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+  const std::string hint = didYouMean(name, known);
+  throw InputError(params.file(), place,
+                   "unknown " + std::string(grid_only ? "grid " : "") + "planner '" + name + "' (" +
+                       (hint.empty() ? "" : hint + " ") +
+                       "known: " + (list.empty() ? "none" : list) + ")");
 }
 }  // namespace
 

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "planning/input_error.h"
+#include "planning/name_suggestion.h"
 #include "sim/yaml_document.h"
 
 namespace cosim {
@@ -33,8 +34,10 @@ void YamlReader::checkKeys(const YAML::Node& node, const std::string& key,
     if (!known) {
       std::string list;
       for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+      const std::string hint = didYouMean(name, allowed);
       fail(kv.first, key.empty() ? name : key + "." + name,
-           "unknown key '" + name + "' (allowed: " + list + ")");
+           "unknown key '" + name + "' (" + (hint.empty() ? "" : hint + " ") + "allowed: " + list +
+               ")");
     }
   }
 }
@@ -90,6 +93,52 @@ Eigen::Vector3d YamlReader::vec3(const YAML::Node& node, const std::string& key)
   return v;
 }
 
+namespace {
+
+// One step of an override's path: a mapping key, or (after it, in brackets) a list index.
+struct PathStep {
+  std::string key;  // empty for an index step
+  std::size_t index = 0;
+  std::string shown;  // the path up to and including this step, for messages
+};
+
+// "vehicles[0].goal" -> vehicles, [0], goal.
+std::vector<PathStep> parseOverridePath(const std::string& path, const std::string& assignment) {
+  const auto bad = [&](const std::string& problem) {
+    return InputError("command line", "--set " + assignment, problem);
+  };
+  std::vector<PathStep> steps;
+  std::stringstream parts(path);
+  std::string shown;
+  for (std::string part; std::getline(parts, part, '.');) {
+    const std::size_t bracket = part.find('[');
+    const std::string key = part.substr(0, bracket);
+    if (key.empty()) throw bad("empty key in path '" + path + "'");
+    shown += (shown.empty() ? "" : ".") + key;
+    steps.push_back({key, 0, shown});
+    for (std::size_t at = bracket; at != std::string::npos;) {
+      const std::size_t close = part.find(']', at);
+      const std::string digits =
+          close == std::string::npos ? "" : part.substr(at + 1, close - at - 1);
+      if (digits.empty() || digits.size() > 9 ||
+          digits.find_first_not_of("0123456789") != std::string::npos ||
+          (close + 1 < part.size() && part[close + 1] != '['))
+        throw bad("'" + part + "': a list element is written name[N], N a whole number from 0");
+      shown += "[" + digits + "]";
+      steps.push_back({"", std::stoul(digits), shown});
+      at = close + 1 < part.size() ? close + 1 : std::string::npos;
+    }
+  }
+  if (steps.empty()) throw bad("empty key in path");
+  return steps;
+}
+
+std::string elementCount(std::size_t n) {
+  return n == 1 ? "1 element" : std::to_string(n) + " elements";
+}
+
+}  // namespace
+
 void applyYamlOverride(YAML::Node& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
@@ -106,27 +155,46 @@ void applyYamlOverride(YAML::Node& root, const std::string& assignment) {
   } catch (const InputError& e) {
     throw InputError("command line", "--set " + assignment, e.problem());
   }
-  // Walk the dotted path, creating mappings; yaml-cpp nodes are handles, so reassigning a child
-  // handle would rebind rather than write: collect the chain and assign at the end.
-  std::vector<std::string> keys;
-  std::stringstream ss(path);
-  for (std::string k; std::getline(ss, k, '.');) {
-    if (k.empty()) throw InputError("command line", "--set " + path, "empty key in path");
-    keys.push_back(k);
-  }
+  const std::vector<PathStep> steps = parseOverridePath(path, assignment);
+  const auto fail = [&](const std::string& problem) {
+    throw InputError("command line", "--set " + assignment, problem);
+  };
+  // Walk the path, creating mappings for missing keys; list elements must exist. yaml-cpp nodes
+  // are handles, so reassigning a child handle would rebind rather than write: collect the
+  // chain and assign at the end.
   std::vector<YAML::Node> chain{root};
-  for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+  for (std::size_t i = 0; i < steps.size(); ++i) {
     YAML::Node parent = chain.back();
-    if (parent.IsDefined() && !parent.IsNull() && !parent.IsMap())
-      throw InputError("command line", "--set " + path, "'" + keys[i] + "' is inside a non-mapping");
-    YAML::Node child = parent[keys[i]];
-    if (!child.IsDefined() || child.IsNull()) {
-      parent[keys[i]] = YAML::Node(YAML::NodeType::Map);
-      child = parent[keys[i]];
+    const PathStep& step = steps[i];
+    const std::string above = i == 0 ? "the document" : steps[i - 1].shown;
+    const bool last = i + 1 == steps.size();
+    if (!step.key.empty()) {
+      if (parent.IsDefined() && !parent.IsNull() && !parent.IsMap())
+        fail("'" + step.key + "' is inside " + above + ", which is not a mapping");
+      if (last) break;
+      YAML::Node child = parent[step.key];
+      if (!child.IsDefined() || child.IsNull()) {
+        if (steps[i + 1].key.empty())
+          fail(step.shown + " is not in the scenario, so it has no element " +
+               steps[i + 1].shown.substr(step.shown.size()) + " to set");
+        parent[step.key] = YAML::Node(YAML::NodeType::Map);
+        child = parent[step.key];
+      }
+      chain.push_back(child);
+      continue;
     }
-    chain.push_back(child);
+    if (!parent.IsSequence()) fail(above + " is not a list, so it has no element " + step.shown);
+    if (step.index >= parent.size())
+      fail("index " + std::to_string(step.index) + " is out of range: " + above + " has " +
+           elementCount(parent.size()) +
+           (parent.size() ? " (indices 0 to " + std::to_string(parent.size() - 1) + ")" : ""));
+    if (last) break;
+    chain.push_back(parent[step.index]);
   }
-  chain.back()[keys.back()] = value;
+  if (steps.back().key.empty())
+    chain.back()[steps.back().index] = value;
+  else
+    chain.back()[steps.back().key] = value;
 }
 
 }  // namespace cosim

@@ -4,6 +4,7 @@
 #include "experiments/cli/command.h"
 #include "experiments/cli/interrupt_flag.h"
 #include "experiments/cli/output_files.h"
+#include "experiments/cli/scenario_checks.h"
 #include "experiments/cli/scenario_planning.h"
 #include "planning/input_error.h"
 #include "planning/planner_registry.h"
@@ -37,13 +38,23 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     }
     if (a->scenario.empty()) throw InputError("command line", "plan", "a scenario file is required");
     installInterruptFlag();
-    const auto dir = prepareOutputDir(a->out, "plan");
-    removeStaleResults(dir, {"plan.json", "path.csv"});
+    // An earlier plan goes first; a new folder only once the scenario and its planner passed
+    // their checks (scenario_checks.h).
+    checkOutputDir(a->out);
+    if (!a->out.empty()) removeStaleResults(a->out, {"plan.json", "path.csv"});
     std::vector<std::string> overrides = a->sets;
     if (!a->planner.empty()) overrides.push_back("planner.name=" + a->planner);
-    Scenario s = loadScenario(a->scenario, overrides);
-    if (s.planner_name.empty())
-      throw InputError(s.file, "key planner", "no planner named (use --planner NAME)");
+    Scenario s = [&] {
+      try {
+        return loadCheckedScenario(a->scenario, overrides, PlannerUse::FirstVehicle);
+      } catch (const InputError& e) {  // a planner named by --planner: say so, not --set
+        if (a->planner.empty() ||
+            e.place() != "--set planner.name=" + a->planner + ", key planner.name")
+          throw;
+        throw InputError(e.file(), "--planner " + a->planner, e.problem());
+      }
+    }();
+    const auto dir = prepareOutputDir(a->out, "plan");
     // The vehicle's size comes from its model: compose the world to read it.
     const WorldModel world = WorldModel::build(s);
     const VehiclePlan plan = planVehicle(s, s.vehicles.front(), world.vehicles().front().params.radius,

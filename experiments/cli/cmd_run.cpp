@@ -9,6 +9,7 @@
 #include "experiments/cli/output_files.h"
 #include "experiments/cli/run_files.h"
 #include "experiments/cli/run_pipeline.h"
+#include "experiments/cli/scenario_checks.h"
 #include "planning/input_error.h"
 
 namespace cosim::cli {
@@ -45,15 +46,17 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
   cmd->callback([a, &ctx] {
     // Interruptible from here on, loading included; and the folder loses an earlier run's
     // results before anything else, so neither a refusal nor an interruption below can leave
-    // them looking like this run's.
+    // them looking like this run's. A new folder is made only once the scenario and its
+    // planners passed their checks: bad input leaves no empty folder behind.
     const std::atomic<bool>& interrupt = installInterruptFlag();
     RunRequest request;
-    request.out_dir = prepareOutputDir(a->out, "run");
-    removeStaleResults(request.out_dir, kRunResultNames);
+    checkOutputDir(a->out);
+    if (!a->out.empty()) removeStaleResults(a->out, kRunResultNames);
     const std::string path = a->scenario.empty() ? defaultScenarioPath() : a->scenario;
     std::vector<std::string> overrides = a->sets;
     if (a->seed >= 0) overrides.push_back("sim.seed=" + std::to_string(a->seed));
-    Scenario scenario = loadScenario(path, overrides);
+    Scenario scenario = loadCheckedScenario(path, overrides, PlannerUse::Run);
+    request.out_dir = prepareOutputDir(a->out, "run");
     request.video = !a->no_video;
     request.images = !a->no_images;
     request.progress = !a->quiet;

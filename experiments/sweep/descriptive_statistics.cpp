@@ -2,24 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <tuple>
 
 namespace cosim {
-
-double studentT975(std::size_t df) {
-  // Exact table for small samples (the usual case: a handful of seeds per group).
-  static const double table[] = {
-      12.7062, 4.30265, 3.18245, 2.77645, 2.57058, 2.44691, 2.36462, 2.30600, 2.26216, 2.22814,
-      2.20099, 2.17881, 2.16037, 2.14479, 2.13145, 2.11991, 2.10982, 2.10092, 2.09302, 2.08596,
-      2.07961, 2.07387, 2.06866, 2.06390, 2.05954, 2.05553, 2.05183, 2.04841, 2.04523, 2.04227};
-  if (df == 0) return std::numeric_limits<double>::quiet_NaN();
-  if (df <= 30) return table[df - 1];
-  // Cornish-Fisher expansion about the normal quantile (Abramowitz & Stegun 26.7.5); error
-  // below 1e-4 for df > 30.
-  const double z = 1.959963985, v = static_cast<double>(df);
-  const double z3 = z * z * z, z5 = z3 * z * z;
-  return z + (z3 + z) / (4 * v) + (5 * z5 + 16 * z3 + 3 * z) / (96 * v * v);
-}
 
 Descriptive describeSample(std::vector<double> x) {
   Descriptive d;
@@ -41,10 +28,37 @@ Descriptive describeSample(std::vector<double> x) {
   double ss = 0;
   for (double v : x) ss += (v - d.mean) * (v - d.mean);
   d.sd = std::sqrt(ss / static_cast<double>(d.n - 1));
-  const double half = studentT975(d.n - 1) * d.sd / std::sqrt(static_cast<double>(d.n));
-  d.ci95_low = d.mean - half;
-  d.ci95_high = d.mean + half;
+  std::tie(d.ci95_low, d.ci95_high) = bootstrapMeanInterval95(x);
   return d;
+}
+
+std::pair<double, double> bootstrapMeanInterval95(const std::vector<double>& values,
+                                                  std::size_t resamples) {
+  // SplitMix64 (Steele, Lea and Flood 2014): the same stream on every platform, unlike the
+  // standard library's distributions.
+  std::uint64_t state = 0x5eed5eed5eed5eedULL;
+  const auto next = [&state] {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  };
+  const std::size_t n = values.size();
+  std::vector<double> means(resamples);
+  for (double& mean : means) {
+    double sum = 0;
+    for (std::size_t k = 0; k < n; ++k) sum += values[next() % n];  // bias below 1e-17
+    mean = sum / static_cast<double>(n);
+  }
+  std::sort(means.begin(), means.end());
+  // Percentiles by linear interpolation between order statistics (Hyndman and Fan's type 7).
+  const auto percentile = [&means](double p) {
+    const double at = p * static_cast<double>(means.size() - 1);
+    const std::size_t below = static_cast<std::size_t>(at);
+    const std::size_t above = std::min(below + 1, means.size() - 1);
+    return means[below] + (at - static_cast<double>(below)) * (means[above] - means[below]);
+  };
+  return {percentile(0.025), percentile(0.975)};
 }
 
 }  // namespace cosim

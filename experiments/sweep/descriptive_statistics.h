@@ -1,7 +1,10 @@
 #pragma once
-// Mean, sample standard deviation, median and the 95 % confidence interval of the mean
-// (Student's t with n - 1 degrees of freedom: mean +- t * sd / sqrt(n)) of a sample.
+// Mean, sample standard deviation, median and a 95 % confidence interval of the mean of a sample.
+// The interval is the percentile bootstrap's (Efron and Tibshirani 1993, ch. 13): it lies within
+// the sample's own range, so it respects the range of the quantity (no negative lengths or times,
+// no success rate above 1), where Student's t interval of two lengths 10 and 12 m reached -1.7 m.
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace cosim {
@@ -14,7 +17,9 @@ struct Descriptive {
 
 Descriptive describeSample(std::vector<double> values);
 
-// The two-sided 95 % quantile t(0.975, df) of Student's t distribution (df >= 1).
-double studentT975(std::size_t df);
+// The 2.5 % and 97.5 % percentiles of the means of `resamples` bootstrap resamples of `values`
+// (n >= 1), drawn with a fixed seed: the same sample always gives the same interval.
+std::pair<double, double> bootstrapMeanInterval95(const std::vector<double>& values,
+                                                  std::size_t resamples = 10000);
 
 }  // namespace cosim

@@ -86,7 +86,9 @@ SweepSummary summarizeSweep(const SweepTable& t) {
         double v;
         if ((*r)[status_col] == "ok" && numericValue((*r)[c], v)) values.push_back(v);
       }
-      s.rows.push_back({key, t.header[c], members.size(), describeSample(values)});
+      // A metric no ok job of the group has (all failed, or it does not apply) has no row.
+      if (!values.empty())
+        s.rows.push_back({key, t.header[c], members.size(), describeSample(values)});
     }
   }
   return s;

@@ -3,7 +3,8 @@
 // group is the scenario plus every varied key except seeds (keys whose last part ends in "seed",
 // e.g. sim.seed). For each group: `ok_rate` (status ok as 1, anything else as 0, over all its
 // finished jobs), then every numeric metric over the group's ok jobs (a failed run's lengths and
-// times would mix two populations). Long format, one row per group and metric.
+// times would mix two populations; a metric none of them has gets no row). Long format, one row
+// per group and metric.
 #include <string>
 #include <vector>
 

@@ -9,6 +9,7 @@
 #include "planning/mapf/pibt_planner.h"
 #include "planning/mapf/potential_field.h"
 #include "planning/mapf/windowed_hca_star.h"
+#include "planning/name_suggestion.h"
 
 namespace cosim {
 
@@ -104,10 +105,16 @@ std::unique_ptr<MapfPlanner> makeMapfPlanner(const std::string& name, ParamSet& 
     params.requireAllUsed("planner '" + name + "'");
     return planner;
   }
+  std::vector<std::string> names;
   std::string known;
-  for (const auto& e : mapfPlanners()) known += (known.empty() ? "" : ", ") + e.name;
+  for (const auto& e : mapfPlanners()) {
+    names.push_back(e.name);
+    known += (known.empty() ? "" : ", ") + e.name;
+  }
+  const std::string hint = didYouMean(name, names);
   throw InputError(params.file(), place,
-                   "unknown multi-robot planner '" + name + "' (known: " + known + ")");
+                   "unknown multi-robot planner '" + name + "' (" +
+                       (hint.empty() ? "" : hint + " ") + "known: " + known + ")");
 }
 
 }  // namespace cosim

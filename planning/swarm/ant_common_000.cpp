@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 
 namespace cosim {
@@ -66,9 +67,15 @@ std::optional<AntGrid> antGridForQuery(const GridQuery& query, bool conditional_
                                        GridPlanResult& result) {
   const OccupancyGrid& g = *query.grid;
   if (query.start.z != query.goal.z) {
-    result.message = "2D planner: start and goal must lie on the same grid layer (start z " +
-                     std::to_string(query.start.z) + ", goal z " + std::to_string(query.goal.z) +
-                     ")";
+    // In metres, as the user gave them: grid layers are an internal detail.
+    const double half = 0.5 * g.cellSize();
+    const double start_z = g.cellCenter(query.start).z(), goal_z = g.cellCenter(query.goal).z();
+    char heights[192];
+    std::snprintf(heights, sizeof heights,
+                  "2D planner: start and goal must be at the same height, in one layer of the "
+                  "%.3g m grid (start in z %.3g-%.3g m, goal in z %.3g-%.3g m)",
+                  g.cellSize(), start_z - half, start_z + half, goal_z - half, goal_z + half);
+    result.message = heights;
     return std::nullopt;
   }
   if (g.blocked(query.start) || g.blocked(query.goal)) {

@@ -1,5 +1,7 @@
 #include "planning/swarm/planar_layer_002.h"
 
+#include <cstdio>
+
 namespace cosim {
 
 PlanarLayer planarLayerFor(const GridQuery& query) {
@@ -24,8 +26,13 @@ PlanarLayer planarLayerFor(const GridQuery& query) {
   for (int z = s.z; z != t.z;) {
     z += step;
     if (g.blocked(t.x, t.y, z)) {
-      out.error = "this planner plans on the start's layer (z = " + std::to_string(s.z) +
-                  "); the goal's column is blocked at layer " + std::to_string(z);
+      // In metres, as the user gave them: grid layers are an internal detail.
+      char where[160];
+      std::snprintf(where, sizeof where,
+                    "this planner plans at the start's height (z %.3g m) and climbs to the "
+                    "goal's; the goal's column is blocked at z %.3g m",
+                    g.cellCenter(s).z(), g.cellCenter({t.x, t.y, z}).z());
+      out.error = where;
       return out;
     }
     out.climb.push_back({t.x, t.y, z});

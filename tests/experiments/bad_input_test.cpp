@@ -211,7 +211,25 @@ std::vector<BadInput> badInputs() {
       {"unknown_planner", plan, withPlanner("planner: {name: teleport}\n"), "", 2,
        "unknown planner 'teleport'"},
       {"misspelt_planner_parameter", plan, withPlanner("planner: {name: astar, resolutoin: 0.5}\n"),
-       "", 2, "unknown parameter 'resolutoin'"},
+       "", 2,
+       "{in}: line 4, key planner.resolutoin: unknown parameter 'resolutoin' for planner 'astar' "
+       "(did you mean 'resolution'? allowed: "},
+      // Planner errors come before the output folder and the "planning ... with" progress line
+      // (one stderr line), at the line of planner.name, with a "did you mean" for near misses.
+      {"planner_name_near_miss", "run {in} --no-video --out {dir}/new", withPlanner("planner: {name: thetastar}\n"),
+       "", 2,
+       "{in}: line 4, key planner.name: unknown planner 'thetastar' (did you mean 'theta_star'? "
+       "known: "},
+      {"plan_with_a_team_planner", "plan {in} --planner cbs --out {dir}/new", kValid, "", 2,
+       "{in}: --planner cbs: 'cbs' is a team (multi-robot) planner, not a single-agent planner: "
+       "team planners are for `cosim mapf` and for `cosim run` on a scenario of ground robots or "
+       "of a quadrotor team"},
+      {"saco_start_and_goal_at_different_heights", "plan {in} --out {dir}/new",
+       kWorld + "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1.2], goal: [18, 18, 3.2]}]\n" +
+           "planner: {name: saco, resolution: 0.5}\n",
+       "", 1,
+       "start and goal must be at the same height, in one layer of the 0.5 m grid (start in z 1-1.5 "
+       "m, goal in z 3-3.5 m)"},
       // Quadrotors over ground robots: the `aerial` section.
       {"aerial_without_ground_robots", plan, kValid + "aerial: {planner: {name: astar}}\n", "", 2,
        "key aerial: is for the quadrotors of a scenario with ground robots too"},
@@ -307,7 +325,19 @@ std::vector<BadInput> badInputs() {
       {"set_value_wrong_type", "plan {in} --set sim.timestep=abc --out {out}", kValid, "", 2,
        "{in}: --set sim.timestep=abc, key sim.timestep: must be a number, got 'abc'"},
       {"set_unknown_key", "plan {in} --set wrld.x=1 --out {out}", kValid, "", 2,
-       "{in}: --set wrld.x=1, key wrld: unknown key 'wrld'"},
+       "{in}: --set wrld.x=1, key wrld: unknown key 'wrld' (did you mean 'world'? allowed: "},
+      // --set on list elements: an index past the end, or into something that is not a list.
+      {"set_list_index_out_of_range", "plan {in} --set 'vehicles[3].goal=[5,5,1]' --out {dir}/new",
+       kValid, "", 2,
+       "command line: --set vehicles[3].goal=[5,5,1]: index 3 is out of range: vehicles has 1 "
+       "element (indices 0 to 0)"},
+      {"set_index_into_a_mapping", "plan {in} --set 'planner[0].name=rrt' --out {dir}/new", kValid,
+       "", 2, "--set planner[0].name=rrt: planner is not a list, so it has no element planner[0]"},
+      {"set_malformed_index", "plan {in} --set 'vehicles[x].goal=[5,5,1]' --out {dir}/new", kValid,
+       "", 2, "'vehicles[x]': a list element is written name[N], N a whole number from 0"},
+      {"set_list_element_bad_value", "plan {in} --set 'vehicles[0].goal=[5,5]' --out {dir}/new",
+       kValid, "", 2,
+       "{in}: --set vehicles[0].goal=[5,5], key vehicles[0].goal: must be a list of 3 numbers"},
       // NUL and other control bytes quoted from the input are escaped, not echoed raw (a NUL
       // cut the message short).
       {"planner_name_with_nul", plan, withPlanner("planner: {name: \"te\\0st\\x1b\"}\n"), "", 2,
@@ -575,6 +605,8 @@ TEST_P(BadInputTest, ExitsWithOneLineNamingTheProblemAndLeavesNoResult) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     for (const char* f : {"metrics.json", "plan.json", "bench.csv", "mapf.json", "path.csv"})
       EXPECT_FALSE(fs::exists(out / f)) << f;
+    // A case writing to {dir}/new (a folder that does not exist yet) must not create it.
+    EXPECT_FALSE(fs::exists(dir / "new")) << "bad input created its output folder";
   } else if (fs::exists(out / "metrics.json")) {
     // A failed task may write its result, but it must say it failed.
     const std::string metrics = slurp(out / "metrics.json");

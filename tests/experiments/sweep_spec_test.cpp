@@ -114,7 +114,8 @@ TEST_F(SweepSpecTest, MalformedYamlAndUnknownSweepKeysAreLocated) {
   EXPECT_EQ(errorOf("scenarios: [../scenarios/a.yaml\nvary: {}\n").substr(0, 6), "line 2");
   EXPECT_EQ(
       errorOf("scenarios: [../scenarios/a.yaml]\nvary_: {sim.seed: [1]}\n"),
-      "line 2, key vary_ | unknown key 'vary_' (allowed: name, scenarios, generators, vary, set, "
+      "line 2, key vary_ | unknown key 'vary_' (did you mean 'vary'? allowed: name, scenarios, "
+      "generators, vary, set, "
       "output, limits)");
   EXPECT_EQ(errorOf("scenarios: [../scenarios/a.yaml]\nvary:\n  sim.seed: []\n"),
             "line 3, key vary.sim.seed | needs at least one value");
@@ -243,7 +244,8 @@ TEST_F(SweepSpecTest, TeamAndNavigatorPlannersOfGroundScenariosValidate) {
             "line 2, key vary.planner.window | scenario " + team + " with planner.window=4: " +
                 team +
                 ": --set planner.window=4, key planner.window: unknown parameter 'window' for "
-                "planner 'cbs'");
+                "planner 'cbs' (allowed: bypass, connectivity, max_expansions, max_nodes, "
+                "resolution, time_limit)");
 }
 
 TEST(SweepShard, ShardsPartitionTheJobsRoundRobin) {

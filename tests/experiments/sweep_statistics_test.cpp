@@ -1,4 +1,4 @@
-// Summary statistics of a sweep: the numbers (mean, sd, median, Student-t 95 % interval) and the
+// Summary statistics of a sweep: the numbers (mean, sd, median, bootstrap 95 % interval) and the
 // grouping (seeds pooled, ok jobs only for metrics, ok_rate over all).
 #include <gtest/gtest.h>
 
@@ -10,15 +10,30 @@
 namespace cosim {
 namespace {
 
-TEST(SweepStatistics, DescribesASampleWithAStudentTInterval) {
+TEST(SweepStatistics, DescribesASampleWithABootstrapInterval) {
   const Descriptive d = describeSample({2, 4, 4, 4, 5, 5, 7, 9});
   EXPECT_EQ(d.n, 8u);
   EXPECT_DOUBLE_EQ(d.mean, 5.0);
   EXPECT_NEAR(d.sd, std::sqrt(32.0 / 7.0), 1e-12);  // sample sd: squares sum to 32, n - 1 = 7
   EXPECT_DOUBLE_EQ(d.median, 4.5);
-  // t(0.975, 7) = 2.36462
-  EXPECT_NEAR(d.ci95_high - d.mean, 2.36462 * std::sqrt(32.0 / 7.0) / std::sqrt(8.0), 1e-9);
-  EXPECT_NEAR(d.mean - d.ci95_low, d.ci95_high - d.mean, 1e-12);
+  // The bootstrap means are multiples of 1/8, skewed right by the 9; 200 000 resamples (in
+  // Python) put their 2.5 % and 97.5 % points at 3.75 and 6.5. Student's t gave 5 -+ 1.79.
+  EXPECT_NEAR(d.ci95_low, 3.75, 0.2);
+  EXPECT_NEAR(d.ci95_high, 6.5, 0.2);
+  EXPECT_EQ(describeSample({2, 4, 4, 4, 5, 5, 7, 9}).ci95_low, d.ci95_low);  // fixed seed
+}
+
+TEST(SweepStatistics, IntervalsStayInsideTheSampleRange) {
+  // Two positive lengths: Student's t interval was [-1.7, 23.7] m; the bootstrap's means are
+  // 10, 11 and 12 (probabilities 1/4, 1/2, 1/4), so its 2.5 % and 97.5 % points are the values.
+  const Descriptive lengths = describeSample({10, 12});
+  EXPECT_DOUBLE_EQ(lengths.ci95_low, 10.0);
+  EXPECT_DOUBLE_EQ(lengths.ci95_high, 12.0);
+  // A success rate of 2 in 3 stays within [0, 1].
+  const Descriptive rate = describeSample({1, 1, 0});
+  EXPECT_GE(rate.ci95_low, 0.0);
+  EXPECT_LE(rate.ci95_high, 1.0);
+  EXPECT_LT(rate.ci95_low, rate.mean);
 }
 
 TEST(SweepStatistics, OneValueHasNoSpreadAndNoInterval) {
@@ -27,13 +42,6 @@ TEST(SweepStatistics, OneValueHasNoSpreadAndNoInterval) {
   EXPECT_DOUBLE_EQ(d.median, 3.5);
   EXPECT_TRUE(std::isnan(d.sd));
   EXPECT_TRUE(std::isnan(d.ci95_low));
-}
-
-TEST(SweepStatistics, StudentQuantilesMatchTables) {
-  EXPECT_NEAR(studentT975(1), 12.7062, 1e-4);
-  EXPECT_NEAR(studentT975(9), 2.26216, 1e-5);
-  EXPECT_NEAR(studentT975(40), 2.02108, 2e-4);  // beyond the table: Cornish-Fisher
-  EXPECT_NEAR(studentT975(120), 1.97993, 2e-4);
 }
 
 TEST(SweepStatistics, GroupsPoolSeedsAndMetricsUseOkJobsOnly) {
@@ -61,9 +69,25 @@ TEST(SweepStatistics, GroupsPoolSeedsAndMetricsUseOkJobsOnly) {
   const std::string csv = sweepSummaryCsv(s);
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "scenario,planner.name,metric,jobs,n,mean,sd,median,ci95_low,ci95_high");
-  EXPECT_NE(csv.find("w.yaml,astar,planned_length_m,3,2,11,1.41421,11,-1.7062,23.7062"),
+  EXPECT_NE(csv.find("w.yaml,astar,planned_length_m,3,2,11,1.41421,11,10,12"),
             std::string::npos)
       << csv;
+}
+
+TEST(SweepStatistics, AMetricNoOkJobHasGetsNoRow) {
+  SweepTable t;
+  t.header = {"job", "scenario", "planner.name", "status", "planned_length_m"};
+  t.first_metric_column = 4;
+  t.rows = {{"0", "w.yaml", "astar", "ok", "10"},
+            {"1", "w.yaml", "rrt", "failed", "0"},
+            {"2", "w.yaml", "rrt", "timeout", ""}};
+  const SweepSummary s = summarizeSweep(t);
+  // astar: ok_rate and its length; rrt: ok_rate 0 only (was a planned_length_m row with n = 0).
+  ASSERT_EQ(s.rows.size(), 3u);
+  EXPECT_EQ(s.rows[2].group, (std::vector<std::string>{"w.yaml", "rrt"}));
+  EXPECT_EQ(s.rows[2].metric, "ok_rate");
+  EXPECT_DOUBLE_EQ(s.rows[2].stats.mean, 0.0);
+  for (const auto& r : s.rows) EXPECT_GT(r.stats.n, 0u) << r.metric;
 }
 
 TEST(SweepStatistics, SeedKeysAreThoseEndingInSeed) {

@@ -389,7 +389,11 @@ TEST(Ants002Planners, ThreeDGridPlansOnStartLayerThenClimbs) {
   g.setBlocked(14, 2, 2, true);  // block the climb
   const GridPlanResult blocked = solve(*p, g, {2, 2, 1}, {14, 2, 3});
   EXPECT_FALSE(blocked.success);
-  EXPECT_NE(blocked.message.find("start's layer"), std::string::npos) << blocked.message;
+  // In metres (1 m cells from z = 0: layer 1 is centred at 1.5 m), not in grid layers.
+  EXPECT_NE(blocked.message.find("plans at the start's height (z 1.5 m) and climbs to the goal's; "
+                                 "the goal's column is blocked at z 2.5 m"),
+            std::string::npos)
+      << blocked.message;
 }
 
 TEST(Ants002Planners, BadParametersAreInputErrors) {

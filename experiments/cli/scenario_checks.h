@@ -1,0 +1,27 @@
+#pragma once
+// What `cosim run` and `cosim plan` check before they create their output folder or print a
+// progress line: the scenario loads, and every planner it names exists and takes the parameters
+// given. A bad input then leaves nothing behind, not even an empty folder, and a planner error
+// names the line of `planner.name` in the scenario file (or the --set assignment that gave it).
+#include <string>
+#include <vector>
+
+#include "sim/scenario.h"
+
+namespace cosim::cli {
+
+enum class PlannerUse {
+  Run,          // as `cosim run` builds them (team planners and navigators for ground robots)
+  FirstVehicle  // as `cosim plan` does: one single-agent plan for the first vehicle
+};
+
+// loadScenario, then the planners of `use` built once and thrown away. Throws InputError.
+Scenario loadCheckedScenario(const std::string& path, const std::vector<std::string>& overrides,
+                             PlannerUse use);
+
+// "line 7, key planner.name" for the dotted `key` of a scenario file, or the --set assignment
+// that gave it ("--set planner.name=cbs, key planner.name"), or "key KEY" if neither.
+std::string scenarioKeyPlace(const std::string& path, const std::vector<std::string>& overrides,
+                             const std::string& key);
+
+}  // namespace cosim::cli
