@@ -88,8 +88,8 @@ void writePlanBenchChart(const std::vector<PlannerBenchSamples>& planners, const
   body << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid ytics lc rgb '#dddddd'\n"
        << "set tics out nomirror\nset xtics (" << xtics.str() << ") rotate by -35 font ',9'\n"
        << "set xrange [0.4:" << n + 0.6 << "]\nset style fill solid 0.35 border\n"
-       << "set boxwidth 0.55\nset style boxplot outliers pointtype 7 pointsize 0.5\n"
-       << "set multiplot layout 1,3 title " << gnuplotString(title) << "\n"
+       << "set boxwidth 0.55\nset style boxplot outliers pointtype 7\n"
+       << "set multiplot layout 3,1 title " << gnuplotString(title) << "\n"
        << "set title 'planning time, every run'\nset logscale y\n"
        << boxPanel(times, "time.dat", "time (ms)", "no runs") << "unset logscale y\n"
        << "set title 'path length, solved runs'\n"
@@ -97,8 +97,8 @@ void writePlanBenchChart(const std::vector<PlannerBenchSamples>& planners, const
        << "set title 'success rate'\nset ylabel 'solved (%)'\nset yrange [0:105]\n"
        << "plot 'success.dat' using 1:2 with boxes lc rgb '#4477aa' notitle\n"
        << "unset multiplot\n";
-  const int width = std::max(1200, 3 * 90 * static_cast<int>(n) + 300);
-  runGnuplot(plotBoth("plan_bench", width, 520, body.str()), work);
+  const int width = std::max(900, 80 * static_cast<int>(n) + 250);
+  runGnuplot(plotBoth("plan_bench", width, 1250, body.str()), work);
   const std::string base = out_base.filename().string();
   std::filesystem::rename(work / "plan_bench.png", dir / (base + ".png"));
   std::filesystem::rename(work / "plan_bench.svg", dir / (base + ".svg"));

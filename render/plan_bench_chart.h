@@ -1,5 +1,5 @@
 #pragma once
-// The figure of `cosim plan-bench`: three panels side by side, one column per planner in each:
+// The figure of `cosim plan-bench`: three panels one above the other, a column per planner in each:
 // planning time of every run (box plot, log scale), path length of the solved runs (box plot)
 // and success rate (bars, 0 to 100 %). Boxes span the quartiles with the median line and
 // whiskers to the furthest value within 1.5 interquartile ranges (Tukey); outliers as points.

@@ -120,15 +120,16 @@ void writePlanBenchFiles(const std::filesystem::path& dir, const PlanBenchProble
                          const CollisionWorld& world) {
   const std::vector<PlannerSummary> summaries = summarizePlanBench(runs);
   const std::string md = planBenchSummaryMarkdown(problem, summaries);
+  // The figure first: gnuplot is what most likely fails, and then nothing else is written.
+  writePlanBenchChart(chartSamples(summaries),
+                      problem.scenario + ": " + std::to_string(problem.runs) + " runs, " +
+                          fixed(problem.time_limit_s, 2) + " s each",
+                      dir / "plan_bench");
   writeFileAtomically(dir / "runs.csv", planBenchRunsCsv(runs));
   writeFileAtomically(dir / "summary.csv", planBenchSummaryCsv(summaries));
   writeFileAtomically(dir / "plan-bench.log",
                       omplBenchmarkLog(logExperiment(problem, runs, started, total_s, world),
                                        omplbench::omplStatusNames()));
-  writePlanBenchChart(chartSamples(summaries),
-                      problem.scenario + ": " + std::to_string(problem.runs) + " runs, " +
-                          fixed(problem.time_limit_s, 2) + " s each",
-                      dir / "plan_bench");
   writeFileAtomically(dir / "summary.md", md);
   std::cout << md << "\nwritten: " << dir.string()
             << "/runs.csv, summary.csv, summary.md, plan-bench.log, plan_bench.png, "

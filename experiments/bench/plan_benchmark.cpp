@@ -79,9 +79,9 @@ PlanBenchRun runOurs(const std::string& name, Scenario& s, const VehicleSpec& ve
   r.solved = plan.success && !plan.path.empty();
   r.time_ms = plan.time_ms;
   r.message = plan.message;
-  r.status = r.solved                                               ? omplbench::omplStatusExact()
-             : plan.message.find("time limit") != std::string::npos ? omplbench::omplStatusTimeout()
-                                                                    : omplbench::omplStatusAbort();
+  // OMPL's planners report every failure to find a path as TIMEOUT ("the planner failed to
+  // find a solution"); ours are reported the same way, their reason in `message`.
+  r.status = r.solved ? omplbench::omplStatusExact() : omplbench::omplStatusTimeout();
   const auto nodes = plan.counters.find("nodes");
   r.graph_states = nodes == plan.counters.end() ? -1.0 : nodes->second;
   if (r.solved) {
@@ -183,6 +183,7 @@ int runPlanBenchmark(const PlanBenchSetup& setup) {
   for (const std::string& name : setup.planners) {
     if (omplbench::isOmplPlanner(name)) continue;
     ParamSet p = ourParams(s, setup.time_limit_s);
+    p.getDouble("time_limit", setup.time_limit_s);  // planVehicle's, not the planner's
     std::vector<std::string> ignored;
     makePlanner(name, p, "--planners " + name, &ignored);  // throws for bad parameters
   }

@@ -113,9 +113,6 @@ int omplStatusExact() {
 int omplStatusTimeout() {
   return ob::PlannerStatus::TIMEOUT;
 }
-int omplStatusAbort() {
-  return ob::PlannerStatus::ABORT;
-}
 int omplStatusApproximate() {
   return ob::PlannerStatus::APPROXIMATE_SOLUTION;
 }

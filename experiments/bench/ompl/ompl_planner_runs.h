@@ -26,7 +26,6 @@ std::string omplVersion();
 // The status values plan-bench reports for our planners, in OMPL's numbering.
 int omplStatusExact();
 int omplStatusTimeout();
-int omplStatusAbort();
 int omplStatusApproximate();
 
 struct OmplPlanRequest {
