@@ -1,11 +1,7 @@
 #include "render/plan_bench_chart.h"
 
-#include <unistd.h>
-
 #include <algorithm>
-#include <fstream>
 #include <sstream>
-#include <stdexcept>
 
 #include "render/gnuplot.h"
 #include "render/overlay_palette.h"
@@ -50,19 +46,7 @@ std::string boxPanel(const std::vector<std::vector<double>>& values, const std::
 
 void writePlanBenchChart(const std::vector<PlannerBenchSamples>& planners, const std::string& title,
                          const std::filesystem::path& out_base) {
-  const std::filesystem::path dir =
-      out_base.has_parent_path() ? out_base.parent_path() : std::filesystem::path(".");
-  // A scratch folder beside the outputs; the finished files are renamed out of it.
-  const std::filesystem::path work = dir / (".plan-bench.part" + std::to_string(getpid()));
-  std::filesystem::remove_all(work);
-  std::filesystem::create_directories(work);
-  struct Cleanup {
-    std::filesystem::path p;
-    ~Cleanup() {
-      std::error_code ec;
-      std::filesystem::remove_all(p, ec);
-    }
-  } cleanup{work};
+  const GnuplotScratch scratch(out_base, "plan-bench");
 
   std::vector<std::vector<double>> times, lengths;
   std::ostringstream success, xtics;
@@ -75,13 +59,9 @@ void writePlanBenchChart(const std::vector<PlannerBenchSamples>& planners, const
     success << i + 1 << ' ' << (p.runs ? 100.0 * p.solved / p.runs : 0.0) << '\n';
     xtics << (i ? ", " : "") << gnuplotString(p.name) << ' ' << i + 1;
   }
-  for (const auto& [name, text] : {std::pair<std::string, std::string>{"time.dat", blocks(times)},
-                                   {"length.dat", blocks(lengths)},
-                                   {"success.dat", success.str()}}) {
-    std::ofstream out(work / name);
-    out << text;
-    if (!out) throw std::runtime_error("cannot write " + (work / name).string());
-  }
+  scratch.write("time.dat", blocks(times));
+  scratch.write("length.dat", blocks(lengths));
+  scratch.write("success.dat", success.str());
 
   const std::size_t n = planners.size();
   std::ostringstream body;
@@ -98,10 +78,8 @@ void writePlanBenchChart(const std::vector<PlannerBenchSamples>& planners, const
        << "plot 'success.dat' using 1:2 with boxes lc rgb '#4477aa' notitle\n"
        << "unset multiplot\n";
   const int width = std::max(900, 80 * static_cast<int>(n) + 250);
-  runGnuplot(plotBoth("plan_bench", width, 1250, body.str()), work);
-  const std::string base = out_base.filename().string();
-  std::filesystem::rename(work / "plan_bench.png", dir / (base + ".png"));
-  std::filesystem::rename(work / "plan_bench.svg", dir / (base + ".svg"));
+  runGnuplot(plotBoth("plan_bench", width, 1250, body.str()), scratch.dir());
+  scratch.publish("plan_bench");
 }
 
 }  // namespace cosim

@@ -11,27 +11,8 @@ Eigen::Vector3d toPoint(const ob::State* state, unsigned dimension, double plane
   return {v->values[0], v->values[1], dimension == 2 ? plane_z : v->values[2]};
 }
 
-ExactValidityChecker::ExactValidityChecker(const ob::SpaceInformationPtr& si,
-                                           const CollisionWorld& world, double plane_z)
-    : ob::StateValidityChecker(si),
-      world_(world),
-      dimension_(si->getStateDimension()),
-      plane_z_(plane_z) {}
-
-bool ExactValidityChecker::isValid(const ob::State* s) const {
-  return world_.pointFree(toPoint(s, dimension_, plane_z_));
-}
-
-ExactMotionValidator::ExactMotionValidator(const ob::SpaceInformationPtr& si,
-                                           const CollisionWorld& world, double plane_z)
-    : ob::MotionValidator(si),
-      world_(world),
-      dimension_(si->getStateDimension()),
-      plane_z_(plane_z) {}
-
 bool ExactMotionValidator::checkMotion(const ob::State* a, const ob::State* b) const {
-  const bool ok =
-      world_.segmentFree(toPoint(a, dimension_, plane_z_), toPoint(b, dimension_, plane_z_));
+  const bool ok = view_.segmentFree(a, b);
   ok ? ++valid_ : ++invalid_;
   return ok;
 }

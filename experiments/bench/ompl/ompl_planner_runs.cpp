@@ -33,28 +33,20 @@ bool isAnytime(const std::string& name) {
   return name == "ompl_rrt_star" || name == "ompl_informed_rrt_star";
 }
 
+// A tree planner of the RRT family with its maximum edge length.
+template <class TreePlanner>
+ob::PlannerPtr treePlanner(const ob::SpaceInformationPtr& si, double range) {
+  auto p = std::make_shared<TreePlanner>(si);
+  p->setRange(range);
+  return p;
+}
+
 ob::PlannerPtr makeOmplPlanner(const std::string& name, const ob::SpaceInformationPtr& si,
                                double range) {
-  if (name == "ompl_rrt") {
-    auto p = std::make_shared<og::RRT>(si);
-    p->setRange(range);
-    return p;
-  }
-  if (name == "ompl_rrt_connect") {
-    auto p = std::make_shared<og::RRTConnect>(si);
-    p->setRange(range);
-    return p;
-  }
-  if (name == "ompl_rrt_star") {
-    auto p = std::make_shared<og::RRTstar>(si);
-    p->setRange(range);
-    return p;
-  }
-  if (name == "ompl_informed_rrt_star") {
-    auto p = std::make_shared<og::InformedRRTstar>(si);
-    p->setRange(range);
-    return p;
-  }
+  if (name == "ompl_rrt") return treePlanner<og::RRT>(si, range);
+  if (name == "ompl_rrt_connect") return treePlanner<og::RRTConnect>(si, range);
+  if (name == "ompl_rrt_star") return treePlanner<og::RRTstar>(si, range);
+  if (name == "ompl_informed_rrt_star") return treePlanner<og::InformedRRTstar>(si, range);
   return std::make_shared<og::PRM>(si);  // connects its k = 10 nearest, as our prm
 }
 
