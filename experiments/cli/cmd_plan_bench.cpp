@@ -26,7 +26,7 @@ void addPlanBenchCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--planners", setup->planners, "planner names, comma-separated")
       ->required()
       ->delimiter(',');
-  cmd->add_option("--runs", setup->runs, "runs per planner (seeds 1..N)")
+  cmd->add_option("--runs", setup->runs, "runs per planner, seeds 1..N (default 10)")
       ->check(wholeNumberIn(1, 100000));
   cmd->add_option("--time", setup->time_limit_s, "time limit per run, seconds (default 1)")
       ->check(numberIn(1e-6, 3600));
