@@ -11,6 +11,31 @@
 
 namespace cosim {
 
+GnuplotScratch::GnuplotScratch(const std::filesystem::path& out_base, const std::string& tag)
+    : out_dir_(out_base.has_parent_path() ? out_base.parent_path() : std::filesystem::path(".")),
+      out_base_name_(out_base.filename()),
+      work_(out_dir_ / ("." + tag + ".part" + std::to_string(getpid()))) {
+  std::filesystem::remove_all(work_);
+  std::filesystem::create_directories(work_);
+}
+
+GnuplotScratch::~GnuplotScratch() {
+  std::error_code ec;
+  std::filesystem::remove_all(work_, ec);
+}
+
+void GnuplotScratch::write(const std::string& name, const std::string& text) const {
+  std::ofstream out(work_ / name);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + (work_ / name).string());
+}
+
+void GnuplotScratch::publish(const std::string& name) const {
+  const std::string base = out_base_name_.string();
+  std::filesystem::rename(work_ / (name + ".png"), out_dir_ / (base + ".png"));
+  std::filesystem::rename(work_ / (name + ".svg"), out_dir_ / (base + ".svg"));
+}
+
 std::string gnuplotString(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += (c == '\'') ? std::string("''") : std::string(1, c);

@@ -10,6 +10,26 @@ namespace cosim {
 // relative names live there). Throws std::runtime_error with gnuplot's messages on failure.
 void runGnuplot(const std::string& script, const std::filesystem::path& work_dir);
 
+// A scratch folder for one figure, beside its outputs (`out_base`'s folder): gnuplot runs in it,
+// and publish() renames the finished PNG and SVG out of it, so each output appears complete or
+// not at all. The folder and whatever is left in it go when this object does.
+class GnuplotScratch {
+ public:
+  GnuplotScratch(const std::filesystem::path& out_base, const std::string& tag);
+  ~GnuplotScratch();
+  GnuplotScratch(const GnuplotScratch&) = delete;
+  GnuplotScratch& operator=(const GnuplotScratch&) = delete;
+
+  const std::filesystem::path& dir() const { return work_; }
+  // Writes a data file into the folder; throws std::runtime_error if it cannot.
+  void write(const std::string& name, const std::string& text) const;
+  // Renames `name`.png and `name`.svg from the folder to out_base.png and out_base.svg.
+  void publish(const std::string& name) const;
+
+ private:
+  std::filesystem::path out_dir_, out_base_name_, work_;
+};
+
 // A string literal for a gnuplot script (single-quoted; gnuplot doubles inner quotes).
 std::string gnuplotString(const std::string& s);
 

@@ -1,10 +1,6 @@
 #include "render/success_rate_chart.h"
 
-#include <unistd.h>
-
-#include <fstream>
 #include <sstream>
-#include <stdexcept>
 
 #include "render/gnuplot.h"
 #include "render/overlay_palette.h"
@@ -13,30 +9,14 @@ namespace cosim {
 
 void writeSuccessRateChart(const std::vector<SuccessRateSeries>& series, const std::string& title,
                            const std::filesystem::path& out_base) {
-  const std::filesystem::path dir =
-      out_base.has_parent_path() ? out_base.parent_path() : std::filesystem::path(".");
-  // A scratch folder beside the outputs; the finished files are renamed out of it.
-  const std::filesystem::path work = dir / (".success.part" + std::to_string(getpid()));
-  std::filesystem::remove_all(work);
-  std::filesystem::create_directories(work);
-  struct Cleanup {
-    std::filesystem::path p;
-    ~Cleanup() {
-      std::error_code ec;
-      std::filesystem::remove_all(p, ec);
-    }
-  } cleanup{work};
+  const GnuplotScratch scratch(out_base, "success");
 
   std::ostringstream data, body;
   for (const auto& s : series) {
     for (const auto& [agents, rate] : s.points) data << agents << ' ' << rate << '\n';
     data << "\n\n";  // next gnuplot index
   }
-  {
-    std::ofstream out(work / "success.dat");
-    out << data.str();
-    if (!out) throw std::runtime_error("cannot write " + (work / "success.dat").string());
-  }
+  scratch.write("success.dat", data.str());
   body << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid lc rgb '#dddddd'\n"
        << "set tics out nomirror\nset key bottom left box lc rgb '#bbbbbb' font ',10'\n"
        << "set title " << gnuplotString(title) << "\nset xlabel 'agents'\n"
@@ -47,10 +27,8 @@ void writeSuccessRateChart(const std::vector<SuccessRateSeries>& series, const s
          << " ps 0.9 lc rgb '" << hexColour(agentColour(g + 4)) << "' title "
          << gnuplotString(series[g].name);
   body << "\n";
-  runGnuplot(plotBoth("success", 900, 500, body.str()), work);
-  const std::string base = out_base.filename().string();
-  std::filesystem::rename(work / "success.png", dir / (base + ".png"));
-  std::filesystem::rename(work / "success.svg", dir / (base + ".svg"));
+  runGnuplot(plotBoth("success", 900, 500, body.str()), scratch.dir());
+  scratch.publish("success");
 }
 
 }  // namespace cosim

@@ -6,11 +6,9 @@
 //   - RRT* and Informed RRT*: path length after a fixed time, and success rate.
 // Targets: our time to first solution <= OMPL's, our cost at fixed time <= OMPL's, every world.
 // Usage: cosim_bench_ompl [--quick] [--seeds N] [--time SECONDS]
-#include <ompl/base/MotionValidator.h>
 #include <ompl/base/ProblemDefinition.h>
 #include <ompl/base/ScopedState.h>
 #include <ompl/base/SpaceInformation.h>
-#include <ompl/base/StateValidityChecker.h>
 #include <ompl/base/objectives/PathLengthOptimizationObjective.h>
 #include <ompl/base/spaces/RealVectorStateSpace.h>
 #include <ompl/geometric/PathGeometric.h>
@@ -30,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include "experiments/bench/ompl/exact_motion_checks.h"
 #include "planning/planner_registry.h"
 #include "planning/sampling/collision_world.h"
 
@@ -141,47 +140,6 @@ Outcome runOurs(const BenchWorld& b, const std::string& planner,
 
 // ---- OMPL ----------------------------------------------------------------------------------
 
-Eigen::Vector3d toVector(const ob::State* s) {
-  const auto* v = s->as<ob::RealVectorStateSpace::StateType>();
-  return {v->values[0], v->values[1], v->values[2]};
-}
-
-class ExactValidityChecker : public ob::StateValidityChecker {
- public:
-  ExactValidityChecker(const ob::SpaceInformationPtr& si, const CollisionWorld& cw)
-      : ob::StateValidityChecker(si), cw_(cw) {}
-  bool isValid(const ob::State* s) const override { return cw_.pointFree(toVector(s)); }
-
- private:
-  const CollisionWorld& cw_;
-};
-
-// Straight motions checked with our exact segment test (no discretisation).
-class ExactMotionValidator : public ob::MotionValidator {
- public:
-  ExactMotionValidator(const ob::SpaceInformationPtr& si, const CollisionWorld& cw)
-      : ob::MotionValidator(si), cw_(cw) {}
-  bool checkMotion(const ob::State* a, const ob::State* b) const override {
-    const bool ok = cw_.segmentFree(toVector(a), toVector(b));
-    ok ? ++valid_ : ++invalid_;
-    return ok;
-  }
-  // Only the endpoint answer is exact here; the last valid point is reported as the start
-  // (conservative). None of the four planners benchmarked calls this variant.
-  bool checkMotion(const ob::State* a, const ob::State* b,
-                   std::pair<ob::State*, double>& last_valid) const override {
-    const bool ok = checkMotion(a, b);
-    if (!ok) {
-      if (last_valid.first) si_->copyState(last_valid.first, a);
-      last_valid.second = 0.0;
-    }
-    return ok;
-  }
-
- private:
-  const CollisionWorld& cw_;
-};
-
 Outcome runOmpl(const BenchWorld& b, const CollisionWorld& cw, const std::string& planner,
                 double time_limit) {
   auto space = std::make_shared<ob::RealVectorStateSpace>(3);
@@ -192,8 +150,8 @@ Outcome runOmpl(const BenchWorld& b, const CollisionWorld& cw, const std::string
   }
   space->setBounds(bounds);
   auto si = std::make_shared<ob::SpaceInformation>(space);
-  si->setStateValidityChecker(std::make_shared<ExactValidityChecker>(si, cw));
-  si->setMotionValidator(std::make_shared<ExactMotionValidator>(si, cw));
+  si->setStateValidityChecker(std::make_shared<cosim::omplbench::ExactValidityChecker>(si, cw));
+  si->setMotionValidator(std::make_shared<cosim::omplbench::ExactMotionValidator>(si, cw));
   si->setup();
   ob::ScopedState<> start(space), goal(space);
   for (int i = 0; i < 3; ++i) start[i] = b.start[i], goal[i] = b.goal[i];
