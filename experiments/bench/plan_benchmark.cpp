@@ -10,6 +10,7 @@
 #include "experiments/cli/output_files.h"
 #include "experiments/cli/scenario_planning.h"
 #include "planning/input_error.h"
+#include "planning/name_suggestion.h"
 #include "planning/planner_registry.h"
 #include "planning/stop_request.h"
 #include "sim/world_model.h"
@@ -18,22 +19,6 @@ namespace cosim {
 
 namespace {
 
-// Edit distance (Levenshtein 1966): insertions, deletions and substitutions, one each.
-std::size_t editDistance(const std::string& a, const std::string& b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t above = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1] ? 1 : 0)});
-      diagonal = above;
-    }
-  }
-  return row[b.size()];
-}
-
 void checkPlannerNames(const std::vector<std::string>& planners) {
   if (planners.empty()) throw InputError("command line", "--planners", "no planner named");
   const std::vector<std::string> known = planBenchPlannerNames();
@@ -41,12 +26,10 @@ void checkPlannerNames(const std::vector<std::string>& planners) {
     if (std::count(planners.begin(), planners.end(), name) > 1)
       throw InputError("command line", "--planners", "'" + name + "' is named twice");
     if (std::find(known.begin(), known.end(), name) != known.end()) continue;
-    const auto closest = std::min_element(known.begin(), known.end(), [&](auto& a, auto& b) {
-      return editDistance(name, a) < editDistance(name, b);
-    });
+    const std::string hint = didYouMean(name, known);
     throw InputError("command line", "--planners " + name,
-                     "unknown planner '" + name + "'; did you mean '" + *closest +
-                         "'? (`cosim plan --list` lists ours; OMPL's are ompl_rrt, "
+                     "unknown planner '" + name + "'" + (hint.empty() ? "" : "; " + hint) +
+                         " (`cosim plan --list` lists ours; OMPL's are ompl_rrt, "
                          "ompl_rrt_connect, ompl_rrt_star, ompl_informed_rrt_star, ompl_prm)");
   }
 }
