@@ -49,6 +49,7 @@ OccupancyGrid OccupancyGrid::fromWorld(const World& world, double cell_size, dou
   // the cell is from its centre.
   const double half_diagonal = 0.5 * cell_size * std::sqrt(planar ? 2.0 : 3.0);
   const bool any_point = blocking == Blocking::AnyPoint;
+  const bool closed = any_point || blocking == Blocking::Exact;  // distance == reach blocks
   const double reach = inflation + (any_point ? half_diagonal : 0.0);
   for (const Obstacle& o : world.obstacles) {
     Eigen::Vector3d lo, hi;
@@ -59,9 +60,19 @@ OccupancyGrid OccupancyGrid::fromWorld(const World& world, double cell_size, dou
         for (int x = std::max(0, a.x); x <= std::min(nx - 1, b.x); ++x) {
           const Eigen::Vector3d c = grid.cellCenter({x, y, z});
           const double d = o.signedDistance(c);
-          if (any_point ? d <= reach : d < reach) grid.setBlocked(x, y, z, true);
+          if (closed ? d <= reach : d < reach) grid.setBlocked(x, y, z, true);
         }
   }
+  // The last cell along an axis may stick out of the bounds (the extent is rarely a multiple of
+  // the cell size); with exact occupancy its centre must lie inside them.
+  if (blocking == Blocking::Exact)
+    for (int z = 0; z < nz; ++z)
+      for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x) {
+          Eigen::Vector3d c = grid.cellCenter({x, y, z});
+          if (planar) c.z() = std::clamp(c.z(), world.bounds_min.z(), world.bounds_max.z());
+          if (!world.insideBounds(c)) grid.setBlocked(x, y, z, true);
+        }
   // The floor (the bottom of the bounds) is physical: cells whose centre is closer than
   // `inflation` to it are blocked, so paths keep the vehicle off the ground. The other faces of
   // the bounds only delimit the flight area (the grid already ends there).
