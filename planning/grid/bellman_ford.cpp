@@ -36,7 +36,7 @@ GridPlanResult BellmanFord::solveGrid(const GridQuery& query) {
     const Cell c = space.cellOf(u);
     const std::uint32_t free = space.neighbourMask(u, c);
     for (const auto& m : space.moves()) {
-      if (!space.moveAllowed(free, m, c)) continue;
+      if (!space.moveAllowed(free, m, u, c)) continue;
       const std::uint32_t v = static_cast<std::uint32_t>(u + m.offset);
       const FixedCost g = gu + m.fixed_cost;
       if (nodes_.seen(v) && nodes_.g(v) <= g) continue;

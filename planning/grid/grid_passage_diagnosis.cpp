@@ -44,6 +44,15 @@ std::vector<double> centreClearances(const World& world, const OccupancyGrid& g,
   return clearance;
 }
 
+// The least clearance at the quarter points of the segment [a, b] (enough to find an obstacle
+// the segment crosses between two cell centres; a diagnosis, not a collision test).
+double innerClearance(const World& world, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  double least = std::numeric_limits<double>::infinity();
+  for (const double t : {0.25, 0.5, 0.75})
+    least = std::min(least, world.distanceToObstacles(a + t * (b - a)));
+  return least;
+}
+
 }  // namespace
 
 WidestPassage widestPassage(const World& world, const OccupancyGrid& layout, const Cell& start,
@@ -56,6 +65,7 @@ WidestPassage widestPassage(const World& world, const OccupancyGrid& layout, con
   best[s] = std::min(clearance[s], clearance[t]);
   open.emplace(best[s], s);
   const int zr = layout.is3D() ? 1 : 0;
+  const double r = layout.cellSize();
   while (!open.empty()) {
     const auto [w, u] = open.top();
     open.pop();
@@ -67,7 +77,14 @@ WidestPassage widestPassage(const World& world, const OccupancyGrid& layout, con
         for (int dx = -1; dx <= 1; ++dx) {
           if (!layout.inside(c.x + dx, c.y + dy, c.z + dz)) continue;
           const std::size_t v = layout.index(c.x + dx, c.y + dy, c.z + dz);
-          const double through = std::min(w, clearance[v]);
+          double through = std::min(w, clearance[v]);
+          if (through <= best[v]) continue;
+          // Two balls of the centres' clearances that do not cover the edge leave room for an
+          // obstacle between the centres (a thin wall): then the edge's inner points count too.
+          const double length = r * std::sqrt(static_cast<double>(dx * dx + dy * dy + dz * dz));
+          if (clearance[u] + clearance[v] < length)
+            through = std::min(through, innerClearance(world, layout.cellCenter(c),
+                                                       layout.cellCenter(layout.cellAt(v))));
           if (through <= best[v]) continue;
           best[v] = through;
           open.emplace(through, v);
@@ -113,18 +130,19 @@ std::string explainBlockedEnd(const World& world, const OccupancyGrid& grid, con
   const Cell cell = grid.cellOf(p);
   Eigen::Vector3d centre = grid.cellCenter(cell);
   if (planar) centre.z() = p.z();
-  const std::string name = std::string(which) + format(" (%g, %g, %g)", p.x(), p.y(), p.z());
+  const std::string point = format("(%g, %g, %g)", p.x(), p.y(), p.z());
   if (!grid.inside(cell) || !world.insideBounds(centre))
-    return name + format(" is outside the world bounds at resolution %g m", grid.cellSize());
+    return std::string(which) + " " + point +
+           format(" is outside the world bounds at resolution %g m", grid.cellSize());
   double d = world.distanceToObstacles(centre);
   if (!planar) d = std::min(d, centre.z() - world.bounds_min.z());
   double own = world.distanceToObstacles(p);
   if (!planar) own = std::min(own, p.z() - world.bounds_min.z());
-  return name +
-         format(": its cell (centre %g m from the nearest obstacle or the floor) is blocked at "
-                "resolution %g m, obstacles inflated by %g m (vehicle radius + margin); the "
-                "point itself is %g m away",
-                d, grid.cellSize(), inflation, own) +
+  return std::string(which) +
+         format(" cell is blocked at resolution %g m, obstacles inflated by %g m (vehicle radius "
+                "+ margin): its centre is %g m from the nearest obstacle or the floor; the point ",
+                grid.cellSize(), inflation, d) +
+         point + format(" itself is %g m away", own) +
          (own > inflation ? " (a finer resolution may free it)" : " (move it or lower the margin)");
 }
 

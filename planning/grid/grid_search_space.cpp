@@ -47,12 +47,17 @@ GridSearchSpace::GridSearchSpace(const OccupancyGrid& grid, const GridMoves& mov
            s.dz,
            s.cost,
            fixed[order],
-           bitOf(s.dx, s.dy, s.dz)};
-    if (!moves.corner_cutting)
-      for (int mz = 0; mz <= std::abs(s.dz); ++mz)
-        for (int my = 0; my <= std::abs(s.dy); ++my)
-          for (int mx = 0; mx <= std::abs(s.dx); ++mx)
-            if (mx + my + mz > 0) m.need |= bitOf(mx * s.dx, my * s.dy, mz * s.dz);
+           bitOf(s.dx, s.dy, s.dz),
+           {},
+           0};
+    for (int mz = 0; mz <= std::abs(s.dz); ++mz)
+      for (int my = 0; my <= std::abs(s.dy); ++my)
+        for (int mx = 0; mx <= std::abs(s.dx); ++mx) {
+          if (mx + my + mz == 0) continue;
+          m.box[m.box_cells++] = mz * s.dz * plane + static_cast<std::int64_t>(my * s.dy) * nx_ +
+                                 mx * s.dx;
+          if (!moves.corner_cutting) m.need |= bitOf(mx * s.dx, my * s.dy, mz * s.dz);
+        }
     moves_.push_back(m);
   }
 }

@@ -16,23 +16,22 @@ namespace cosim {
 
 class GridSegmentChecker {
  public:
-  // `grid` is the centre-judged grid of `world` (same cell size, origin and layers); plane_z
-  // and planar as for OccupancyGrid::fromWorld. Keeps a reference to `grid`.
+  // `grid` is the centre-judged grid of `world` (the near cells get its cell size, origin and
+  // layers); plane_z and planar as for OccupancyGrid::fromWorld.
   GridSegmentChecker(const World& world, const OccupancyGrid& grid, double inflation, bool planar,
                      double plane_z);
+  // The search walks the near cells itself (GridSearchSpace::moveAllowed, lineOfSight) and asks
+  // for the exact test only when a segment touches one.
 
   // 1 where some point of the cell may lie within the inflation of an obstacle.
   const std::uint8_t* nearData() const { return near_.data(); }
-  // The segment between the centres of two cells stays farther than the inflation from every
-  // obstacle (and inside the bounds). Cells must be inside the grid.
-  bool centresClear(const Cell& a, const Cell& b) const;
-  // The same for two points given exactly (e.g. the start and its cell's centre).
+  // The segment [a, b] stays farther than the inflation from every obstacle (and inside the
+  // bounds): the exact test, for segments that touch a near cell.
   bool pointsClear(const Eigen::Vector3d& a, const Eigen::Vector3d& b) const;
   // Exact segment tests made so far (the far-cells shortcut does not count).
   double exactChecks() const { return exact_checks_; }
 
  private:
-  const OccupancyGrid* grid_;
   OccupancyGrid near_;
   CollisionWorld world_;
   mutable double exact_checks_ = 0;

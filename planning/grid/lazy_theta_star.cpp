@@ -28,7 +28,7 @@ GridPlanResult LazyThetaStar::solveGrid(const GridQuery& query) {
         std::uint32_t best_parent = u;
         const std::uint32_t free = space.neighbourMask(u, c);
         for (const auto& m : space.moves()) {
-          if (!space.moveAllowed(free, m, c)) continue;
+          if (!space.moveAllowed(free, m, u, c)) continue;
           const std::uint32_t n = static_cast<std::uint32_t>(u + m.offset);
           if (nodes.seen(n) && nodes.closed(n) && nodes.g(n) + m.cost < best) {
             best = nodes.g(n) + m.cost;
