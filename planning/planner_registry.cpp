@@ -46,9 +46,10 @@ void PlannerRegistry::addGridPlanner(const std::string& name, const std::string&
     if (planner->checksSegments()) allowed.insert(allowed.begin(), "exact");
     const std::string blocking = params.getString("cell_blocking", allowed.front(), allowed);
     return std::make_unique<GridWorldPlanner>(std::move(planner), resolution,
-                                              blocking == "exact"    ? OccupancyGrid::Blocking::Exact
-                                              : blocking == "centre" ? OccupancyGrid::Blocking::Centre
-                                                                     : OccupancyGrid::Blocking::AnyPoint);
+                                              blocking == "exact" ? OccupancyGrid::Blocking::Exact
+                                              : blocking == "centre"
+                                                  ? OccupancyGrid::Blocking::Centre
+                                                  : OccupancyGrid::Blocking::AnyPoint);
   };
   add(std::move(e));
 }

@@ -114,14 +114,16 @@ std::string explainNoGridPath(const World& world, const OccupancyGrid& grid, con
            "(walled off, or every gap is narrower than a cell)";
   if (p.clearance <= inflation)
     return "no path " + where +
-           format(": the widest passage found (measured at cell centres) keeps only %.3g m from "
-                  "obstacles (a gap of about %.3g m), no more than the inflation; lower the "
-                  "margin or use a smaller vehicle",
-                  p.clearance, 2.0 * p.clearance);
+           format(
+               ": the widest passage found (measured at cell centres) keeps only %.3g m from "
+               "obstacles (a gap of about %.3g m), no more than the inflation; lower the "
+               "margin or use a smaller vehicle",
+               p.clearance, 2.0 * p.clearance);
   return "no path " + where + ": a passage keeping " + (p.capped ? "at least " : "") +
-         format("%.3g m from obstacles exists, more than the inflation, so the grid is too coarse "
-                "or too conservative for it; try a finer resolution (e.g. %g m)",
-                p.clearance, 0.5 * r) +
+         format(
+             "%.3g m from obstacles exists, more than the inflation, so the grid is too coarse "
+             "or too conservative for it; try a finer resolution (e.g. %g m)",
+             p.clearance, 0.5 * r) +
          (std::string(blocking_name) == "cell" ? " or cell_blocking exact" : "");
 }
 
@@ -139,9 +141,10 @@ std::string explainBlockedEnd(const World& world, const OccupancyGrid& grid, con
   double own = world.distanceToObstacles(p);
   if (!planar) own = std::min(own, p.z() - world.bounds_min.z());
   return std::string(which) +
-         format(" cell is blocked at resolution %g m, obstacles inflated by %g m (vehicle radius "
-                "+ margin): its centre is %g m from the nearest obstacle or the floor; the point ",
-                grid.cellSize(), inflation, d) +
+         format(
+             " cell is blocked at resolution %g m, obstacles inflated by %g m (vehicle radius "
+             "+ margin): its centre is %g m from the nearest obstacle or the floor; the point ",
+             grid.cellSize(), inflation, d) +
          point + format(" itself is %g m away", own) +
          (own > inflation ? " (a finer resolution may free it)" : " (move it or lower the margin)");
 }

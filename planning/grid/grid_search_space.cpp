@@ -27,7 +27,10 @@ GridSearchSpace::GridSearchSpace(const OccupancyGrid& grid, const GridMoves& mov
                                  const GridSegmentChecker* segments)
     : grid_(&grid),
       segments_(segments),
-      cells_(grid.data()), nx_(grid.nx()), ny_(grid.ny()), nz_(grid.nz()) {
+      cells_(grid.data()),
+      nx_(grid.nx()),
+      ny_(grid.ny()),
+      nz_(grid.nz()) {
   // Every neighbour a move can need gets one bit; a move needs the cells of the unit box it
   // spans (other than its origin) when corner cutting is off, else only its target.
   const std::int64_t plane = static_cast<std::int64_t>(nx_) * ny_;
@@ -54,8 +57,8 @@ GridSearchSpace::GridSearchSpace(const OccupancyGrid& grid, const GridMoves& mov
       for (int my = 0; my <= std::abs(s.dy); ++my)
         for (int mx = 0; mx <= std::abs(s.dx); ++mx) {
           if (mx + my + mz == 0) continue;
-          m.box[m.box_cells++] = mz * s.dz * plane + static_cast<std::int64_t>(my * s.dy) * nx_ +
-                                 mx * s.dx;
+          m.box[m.box_cells++] =
+              mz * s.dz * plane + static_cast<std::int64_t>(my * s.dy) * nx_ + mx * s.dx;
           if (!moves.corner_cutting) m.need |= bitOf(mx * s.dx, my * s.dy, mz * s.dz);
         }
     moves_.push_back(m);
@@ -79,8 +82,8 @@ bool GridSearchSpace::lineOfSight(std::uint32_t a, std::uint32_t b) const {
     touches_near |= near[i] != 0;
     return cells_[i] != 0;
   });
-  return sees && (!touches_near || segments_->pointsClear(grid_->cellCenter(ca),
-                                                          grid_->cellCenter(cb)));
+  return sees &&
+         (!touches_near || segments_->pointsClear(grid_->cellCenter(ca), grid_->cellCenter(cb)));
 }
 
 }  // namespace cosim

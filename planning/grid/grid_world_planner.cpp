@@ -27,8 +27,8 @@ const char* blockingName(OccupancyGrid::Blocking b) {
 PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
   const Deadline clock(problem.time_limit_s);
   const double plane_z = problem.start.z();
-  const OccupancyGrid grid = OccupancyGrid::fromWorld(*problem.world, resolution_, problem.inflation,
-                                                      problem.planar, plane_z, blocking_);
+  const OccupancyGrid grid = OccupancyGrid::fromWorld(
+      *problem.world, resolution_, problem.inflation, problem.planar, plane_z, blocking_);
   std::unique_ptr<GridSegmentChecker> segments;
   if (blocking_ == OccupancyGrid::Blocking::Exact)
     segments = std::make_unique<GridSegmentChecker>(*problem.world, grid, problem.inflation,
@@ -67,8 +67,10 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
   for (const auto& [which, p, centre] : {std::tuple("start", problem.start, start_centre),
                                          std::tuple("goal", problem.goal, goal_centre)})
     if (!joined(p, centre)) {
-      result.message = std::string(which) + " cannot reach the centre of its cell in a straight "
-                       "line at resolution " + std::to_string(resolution_) +
+      result.message = std::string(which) +
+                       " cannot reach the centre of its cell in a straight "
+                       "line at resolution " +
+                       std::to_string(resolution_) +
                        " m (an inflated obstacle is in between); try a finer resolution";
       return finish();
     }
@@ -77,9 +79,9 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
   for (const auto& [k, v] : g.counters) result.counters[k] = v;
   result.success = g.success;
   if (!g.success)
-    result.message = explainNoGridPath(*problem.world, grid, query.start, query.goal,
-                                       problem.inflation, problem.planar, g.message,
-                                       blockingName(blocking_));
+    result.message =
+        explainNoGridPath(*problem.world, grid, query.start, query.goal, problem.inflation,
+                          problem.planar, g.message, blockingName(blocking_));
   if (g.success) {
     // Every segment between centres was checked by the planner (an any-angle segment from the
     // exact point itself could clip a blocked cell).

@@ -12,8 +12,9 @@ OccupancyGrid::OccupancyGrid(int nx, int ny, int nz, double cell_size,
                              const Eigen::Vector3d& origin)
     : nx_(nx), ny_(ny), nz_(nz), cell_size_(cell_size), origin_(origin) {
   if (nx <= 0 || ny <= 0 || nz <= 0)
-    throw InputError("", "grid", "dimensions must be positive, got " + std::to_string(nx) + "x" +
-                                     std::to_string(ny) + "x" + std::to_string(nz));
+    throw InputError("", "grid",
+                     "dimensions must be positive, got " + std::to_string(nx) + "x" +
+                         std::to_string(ny) + "x" + std::to_string(nz));
   if (!(cell_size > 0.0) || !std::isfinite(cell_size))
     throw InputError("", "grid", "cell size must be positive");
   const std::int64_t n = std::int64_t(nx) * ny * nz;
@@ -40,7 +41,8 @@ OccupancyGrid OccupancyGrid::fromWorld(const World& world, double cell_size, dou
   const Eigen::Vector3d extent = world.bounds_max - world.bounds_min;
   const int nx = std::max(1, static_cast<int>(std::ceil(extent.x() / cell_size - 1e-9)));
   const int ny = std::max(1, static_cast<int>(std::ceil(extent.y() / cell_size - 1e-9)));
-  const int nz = planar ? 1 : std::max(1, static_cast<int>(std::ceil(extent.z() / cell_size - 1e-9)));
+  const int nz =
+      planar ? 1 : std::max(1, static_cast<int>(std::ceil(extent.z() / cell_size - 1e-9)));
   Eigen::Vector3d origin = world.bounds_min;
   if (planar) origin.z() = plane_z - 0.5 * cell_size;  // the layer's centres sit at plane_z
   OccupancyGrid grid(nx, ny, nz, cell_size, origin);

@@ -38,8 +38,9 @@ struct SamplingOptions {
 constexpr int kNodeMemoryBound = 10000000;
 // How many nodes a planner's arrays reserve at first (they grow beyond it when needed).
 inline std::size_t initialCapacity(const SamplingOptions& o) {
-  return o.max_nodes > 0 ? std::min<std::size_t>(static_cast<std::size_t>(o.max_nodes) + 2, 1u << 18)
-                         : std::size_t(1) << 14;
+  return o.max_nodes > 0
+             ? std::min<std::size_t>(static_cast<std::size_t>(o.max_nodes) + 2, 1u << 18)
+             : std::size_t(1) << 14;
 }
 
 class SamplingContext {

@@ -116,8 +116,7 @@ TEST(GridExactOccupancy, GapNarrowerThanTheOldBlockingIsFoundAtTheSameResolution
   const PlanResult cell = plan("astar", prob, {{"cell_blocking", "cell"}});
   ASSERT_FALSE(cell.success);
   // The widest passage measured at cell centres: sqrt(0.2^2 + 0.45^2) = 0.492 m at the gap.
-  EXPECT_NE(cell.message.find("0.492 m from obstacles exists"), std::string::npos)
-      << cell.message;
+  EXPECT_NE(cell.message.find("0.492 m from obstacles exists"), std::string::npos) << cell.message;
   EXPECT_NE(cell.message.find("finer resolution"), std::string::npos) << cell.message;
 }
 
@@ -128,8 +127,7 @@ TEST(GridExactOccupancy, NoPathSaysWhy) {
   ASSERT_FALSE(narrow.success);
   EXPECT_NE(narrow.message.find("inflated by 0.5 m"), std::string::npos) << narrow.message;
   EXPECT_NE(narrow.message.find("resolution 0.5 m"), std::string::npos) << narrow.message;
-  EXPECT_NE(narrow.message.find("keeps only 0.492 m from obstacles"),
-            std::string::npos)
+  EXPECT_NE(narrow.message.find("keeps only 0.492 m from obstacles"), std::string::npos)
       << narrow.message;
 
   const World closed = splitRoom(6.0, 6.0);

@@ -7,7 +7,9 @@
 namespace cosim {
 
 // The window's centre.
-inline Eigen::Vector3d narrowWindowCentre() { return {15, 10, 5}; }
+inline Eigen::Vector3d narrowWindowCentre() {
+  return {15, 10, 5};
+}
 
 inline World narrowWindowWorld(double window = 1.2) {
   World w;
@@ -21,10 +23,10 @@ inline World narrowWindowWorld(double window = 1.2) {
     o.size = {thick, y1 - y0, z1 - z0};
     w.obstacles.push_back(o);
   };
-  wall(0, 20, 0, c.z() - h);                   // below the window
-  wall(0, 20, c.z() + h, 10);                  // above
-  wall(0, c.y() - h, c.z() - h, c.z() + h);    // left
-  wall(c.y() + h, 20, c.z() - h, c.z() + h);   // right
+  wall(0, 20, 0, c.z() - h);                  // below the window
+  wall(0, 20, c.z() + h, 10);                 // above
+  wall(0, c.y() - h, c.z() - h, c.z() + h);   // left
+  wall(c.y() + h, 20, c.z() - h, c.z() + h);  // right
   return w;
 }
 

@@ -64,8 +64,8 @@ TEST(RrtStarThesis, CapsItsTreeAsRrtStarFnAndIsRrtStarWithTheThesissParentRule) 
   // choose_parent nearest_parent makes rrt_star the thesis's RRT*: the very same path (in the
   // thesis's mode 1, rrt_star_thesis's default; rrt_star is anytime by default).
   const PlanResult a = plan("rrt_star_thesis", map, 4, {{"goal_bias", "0"}});
-  const PlanResult b = plan("rrt_star", map, 4,
-                            {{"goal_bias", "0"}, {"choose_parent", "nearest_parent"}, {"mode", "1"}});
+  const PlanResult b = plan(
+      "rrt_star", map, 4, {{"goal_bias", "0"}, {"choose_parent", "nearest_parent"}, {"mode", "1"}});
   ASSERT_TRUE(a.success && b.success);
   EXPECT_EQ(a.path.waypoints, b.path.waypoints);
 }

@@ -212,7 +212,8 @@ TEST(SamplingPlanners, EnclosedGoalEndsWithTimeLimitNotAHang) {
   for (const auto& name : kPlanners) {
     const PlanResult r = make(name)->solve(prob);
     EXPECT_FALSE(r.success) << name;
-    EXPECT_EQ(r.message.rfind("time limit (0.1 s) reached after ", 0), 0u) << name << ": " << r.message;
+    EXPECT_EQ(r.message.rfind("time limit (0.1 s) reached after ", 0), 0u)
+        << name << ": " << r.message;
     EXPECT_LT(r.time_ms, 2000.0) << name;  // generous: the limit is 100 ms
   }
   // With a small node budget the failure is the budget, not the clock.
