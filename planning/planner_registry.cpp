@@ -38,12 +38,20 @@ void PlannerRegistry::addGridPlanner(const std::string& name, const std::string&
   e.make_grid = make_grid;
   e.make = [make_grid](ParamSet& params) -> std::unique_ptr<Planner> {
     const double resolution = params.getDouble("resolution", 0.5, 0.01, 100.0);
-    // "cell" (default): a cell is blocked if any point of it is near an obstacle; "centre":
-    // only if its centre is (seed 003's grid, for reproducing its point-mass plans).
-    const auto blocking = params.getString("cell_blocking", "cell", {"cell", "centre"}) == "centre"
-                              ? OccupancyGrid::Blocking::Centre
-                              : OccupancyGrid::Blocking::AnyPoint;
-    return std::make_unique<GridWorldPlanner>(make_grid(params), resolution, blocking);
+    auto planner = make_grid(params);
+    // "exact" (default where the planner checks edges against the obstacles): a cell is blocked
+    // iff the vehicle cannot stand at its centre; "cell": if any point of it is near an obstacle
+    // (conservative, closes gaps narrower than a cell; the default of the other grid planners);
+    // "centre": only if its centre is strictly inside an inflated obstacle, edges unchecked
+    // (seed 003's grid, for reproducing its point-mass plans).
+    std::vector<std::string> allowed = {"cell", "centre"};
+    if (planner->checksSegments()) allowed.insert(allowed.begin(), "exact");
+    const std::string blocking = params.getString("cell_blocking", allowed.front(), allowed);
+    return std::make_unique<GridWorldPlanner>(std::move(planner), resolution,
+                                              blocking == "exact" ? OccupancyGrid::Blocking::Exact
+                                              : blocking == "centre"
+                                                  ? OccupancyGrid::Blocking::Centre
+                                                  : OccupancyGrid::Blocking::AnyPoint);
   };
   add(std::move(e));
 }

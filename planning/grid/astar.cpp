@@ -8,7 +8,7 @@ GridPlanResult AStar::solveGrid(const GridQuery& query) {
   const Deadline clock(query.time_limit_s);
   if (GridPlanResult rejected; gridQueryRejected(query, rejected)) return rejected;
   const GridMoves moves = resolveGridMoves(options_.moves, query.grid->is3D(), params_file_);
-  const GridSearchSpace space(*query.grid, moves);
+  const GridSearchSpace space(*query.grid, moves, query.segments);
   const bool axis_only = moves.connectivity == 4 || moves.connectivity == 6;
   const double w = options_.heuristic_weight;
   auto weighted = [w](FixedCost h) {

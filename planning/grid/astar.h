@@ -23,6 +23,7 @@ class AStar : public GridPlanner {
 
   std::string name() const override { return "astar"; }
   GridPlanResult solveGrid(const GridQuery& query) override;
+  bool checksSegments() const override { return true; }
 
  private:
   Options options_;

@@ -18,6 +18,7 @@ class BasicThetaStar : public GridPlanner {
 
   std::string name() const override { return "theta_star"; }
   GridPlanResult solveGrid(const GridQuery& query) override;
+  bool checksSegments() const override { return true; }
 
  private:
   GridMoves moves_;

@@ -8,8 +8,8 @@ GridPlanResult BellmanFord::solveGrid(const GridQuery& query) {
   using State = GridNodeTable<FixedCost>::State;
   const Deadline clock(query.time_limit_s);
   if (GridPlanResult rejected; gridQueryRejected(query, rejected)) return rejected;
-  const GridSearchSpace space(*query.grid,
-                              resolveGridMoves(moves_, query.grid->is3D(), params_file_));
+  const GridSearchSpace space(
+      *query.grid, resolveGridMoves(moves_, query.grid->is3D(), params_file_), query.segments);
   const std::uint32_t start = space.index(query.start), goal = space.index(query.goal);
   // State::Open marks a cell waiting in the queue, State::Closed a labelled cell not in it.
   nodes_.begin(space.size());
@@ -33,9 +33,10 @@ GridPlanResult BellmanFord::solveGrid(const GridQuery& query) {
       break;
     }
     const FixedCost gu = nodes_.g(u);
-    const std::uint32_t free = space.neighbourMask(u, space.cellOf(u));
+    const Cell c = space.cellOf(u);
+    const std::uint32_t free = space.neighbourMask(u, c);
     for (const auto& m : space.moves()) {
-      if ((free & m.need) != m.need) continue;
+      if (!space.moveAllowed(free, m, u, c)) continue;
       const std::uint32_t v = static_cast<std::uint32_t>(u + m.offset);
       const FixedCost g = gu + m.fixed_cost;
       if (nodes_.seen(v) && nodes_.g(v) <= g) continue;

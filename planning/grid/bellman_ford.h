@@ -22,6 +22,7 @@ class BellmanFord : public GridPlanner {
 
   std::string name() const override { return "bellman_ford"; }
   GridPlanResult solveGrid(const GridQuery& query) override;
+  bool checksSegments() const override { return true; }
 
  private:
   GridMoves moves_;

@@ -7,8 +7,8 @@ namespace cosim {
 GridPlanResult Dijkstra::solveGrid(const GridQuery& query) {
   const Deadline clock(query.time_limit_s);
   if (GridPlanResult rejected; gridQueryRejected(query, rejected)) return rejected;
-  const GridSearchSpace space(*query.grid,
-                              resolveGridMoves(moves_, query.grid->is3D(), params_file_));
+  const GridSearchSpace space(
+      *query.grid, resolveGridMoves(moves_, query.grid->is3D(), params_file_), query.segments);
   GridSearchCounters counters;
   const std::uint32_t start = space.index(query.start), goal = space.index(query.goal);
   const GridSearchEnd end = bestFirstSearch(

@@ -16,6 +16,7 @@ class Dijkstra : public GridPlanner {
 
   std::string name() const override { return "dijkstra"; }
   GridPlanResult solveGrid(const GridQuery& query) override;
+  bool checksSegments() const override { return true; }
 
  private:
   GridMoves moves_;

@@ -63,7 +63,7 @@ GridPlanResult anyAngleSearch(const GridQuery& query, const GridSearchSpace& spa
     }
     const std::uint32_t free = space.neighbourMask(u, c);
     for (const auto& m : space.moves()) {
-      if ((free & m.need) != m.need) continue;
+      if (!space.moveAllowed(free, m, u, c)) continue;
       const std::uint32_t v = static_cast<std::uint32_t>(u + m.offset);
       if (nodes.seen(v) && nodes.closed(v)) continue;
       const Cell vc{c.x + m.dx, c.y + m.dy, c.z + m.dz};

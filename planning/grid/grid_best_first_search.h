@@ -69,7 +69,7 @@ GridSearchEnd bestFirstSearch(const GridSearchSpace& space, BestFirstWorkspace& 
     const Cell c = space.cellOf(u);
     const std::uint32_t free = space.neighbourMask(u, c);
     for (const auto& m : moves) {
-      if ((free & m.need) != m.need) continue;
+      if (!space.moveAllowed(free, m, u, c)) continue;
       const std::uint32_t v = static_cast<std::uint32_t>(u + m.offset);
       const FixedCost g = gu + m.fixed_cost;
       if (nodes.seen(v) && (nodes.closed(v) || nodes.g(v) <= g)) continue;

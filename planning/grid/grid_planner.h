@@ -33,8 +33,13 @@ std::vector<GridStep> gridSteps(const GridMoves& moves, bool three_d);
 bool gridStepAllowed(const OccupancyGrid& grid, const Cell& c, const GridStep& step,
                      bool corner_cutting);
 
+class GridSegmentChecker;
+
 struct GridQuery {
   const OccupancyGrid* grid = nullptr;
+  // When set (grids judged at cell centres), moves and lines of sight must also clear the
+  // inflated obstacles; only planners whose checksSegments() is true honour it.
+  const GridSegmentChecker* segments = nullptr;
   Cell start, goal;
   double time_limit_s = 10.0;
   std::uint64_t seed = 1;
@@ -54,6 +59,9 @@ class GridPlanner {
   virtual ~GridPlanner() = default;
   virtual std::string name() const = 0;
   virtual GridPlanResult solveGrid(const GridQuery& query) = 0;
+  // True if solveGrid honours GridQuery::segments (then worlds may be voxelised with
+  // OccupancyGrid::Blocking::Exact); the others get the conservative AnyPoint grid.
+  virtual bool checksSegments() const { return false; }
 };
 
 // Euclidean length of a cell sequence, in cells.

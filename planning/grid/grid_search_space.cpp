@@ -23,8 +23,14 @@ GridMoves resolveGridMoves(const GridMoves& moves, bool three_d, const std::stri
   return r;
 }
 
-GridSearchSpace::GridSearchSpace(const OccupancyGrid& grid, const GridMoves& moves)
-    : grid_(&grid), cells_(grid.data()), nx_(grid.nx()), ny_(grid.ny()), nz_(grid.nz()) {
+GridSearchSpace::GridSearchSpace(const OccupancyGrid& grid, const GridMoves& moves,
+                                 const GridSegmentChecker* segments)
+    : grid_(&grid),
+      segments_(segments),
+      cells_(grid.data()),
+      nx_(grid.nx()),
+      ny_(grid.ny()),
+      nz_(grid.nz()) {
   // Every neighbour a move can need gets one bit; a move needs the cells of the unit box it
   // spans (other than its origin) when corner cutting is off, else only its target.
   const std::int64_t plane = static_cast<std::int64_t>(nx_) * ny_;
@@ -44,12 +50,17 @@ GridSearchSpace::GridSearchSpace(const OccupancyGrid& grid, const GridMoves& mov
            s.dz,
            s.cost,
            fixed[order],
-           bitOf(s.dx, s.dy, s.dz)};
-    if (!moves.corner_cutting)
-      for (int mz = 0; mz <= std::abs(s.dz); ++mz)
-        for (int my = 0; my <= std::abs(s.dy); ++my)
-          for (int mx = 0; mx <= std::abs(s.dx); ++mx)
-            if (mx + my + mz > 0) m.need |= bitOf(mx * s.dx, my * s.dy, mz * s.dz);
+           bitOf(s.dx, s.dy, s.dz),
+           {},
+           0};
+    for (int mz = 0; mz <= std::abs(s.dz); ++mz)
+      for (int my = 0; my <= std::abs(s.dy); ++my)
+        for (int mx = 0; mx <= std::abs(s.dx); ++mx) {
+          if (mx + my + mz == 0) continue;
+          m.box[m.box_cells++] =
+              mz * s.dz * plane + static_cast<std::int64_t>(my * s.dy) * nx_ + mx * s.dx;
+          if (!moves.corner_cutting) m.need |= bitOf(mx * s.dx, my * s.dy, mz * s.dz);
+        }
     moves_.push_back(m);
   }
 }
@@ -57,9 +68,22 @@ GridSearchSpace::GridSearchSpace(const OccupancyGrid& grid, const GridMoves& mov
 bool GridSearchSpace::lineOfSight(std::uint32_t a, std::uint32_t b) const {
   // The walk stays in the bounding box of two grid cells, so raw indexing is safe.
   const std::int64_t plane = static_cast<std::int64_t>(nx_) * ny_;
-  return supercoverLineOfSight(cellOf(a), cellOf(b), [this, plane](int x, int y, int z) {
-    return cells_[z * plane + static_cast<std::int64_t>(y) * nx_ + x] != 0;
+  const Cell ca = cellOf(a), cb = cellOf(b);
+  if (segments_ == nullptr)
+    return supercoverLineOfSight(ca, cb, [this, plane](int x, int y, int z) {
+      return cells_[z * plane + static_cast<std::int64_t>(y) * nx_ + x] != 0;
+    });
+  // One walk finds both blocked cells and cells near an obstacle; only a line passing near one
+  // needs the exact test.
+  const std::uint8_t* near = segments_->nearData();
+  bool touches_near = false;
+  const bool sees = supercoverLineOfSight(ca, cb, [&](int x, int y, int z) {
+    const std::int64_t i = z * plane + static_cast<std::int64_t>(y) * nx_ + x;
+    touches_near |= near[i] != 0;
+    return cells_[i] != 0;
   });
+  return sees &&
+         (!touches_near || segments_->pointsClear(grid_->cellCenter(ca), grid_->cellCenter(cb)));
 }
 
 }  // namespace cosim

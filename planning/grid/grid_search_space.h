@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "planning/grid/grid_planner.h"
+#include "planning/grid/grid_segment_checker.h"
 
 namespace cosim {
 
@@ -37,10 +38,17 @@ class GridSearchSpace {
     double cost;           // 1, sqrt 2 or sqrt 3
     FixedCost fixed_cost;  // the same in 2^-32 units
     std::uint32_t need;    // bits of neighbourMask() that must be set (free) for the move
+    // Index deltas of the cells of the unit box the move spans, other than its origin: the
+    // cells its segment touches (for the segment checks' shortcut).
+    std::int64_t box[7];
+    int box_cells;
   };
 
-  // `moves` must already be resolved (resolveGridMoves). Keeps a reference to `grid`.
-  GridSearchSpace(const OccupancyGrid& grid, const GridMoves& moves);
+  // `moves` must already be resolved (resolveGridMoves). Keeps a reference to `grid` and to
+  // `segments`, if given: then every move and line of sight is also checked against the
+  // inflated obstacles (GridSegmentChecker), for grids judged at cell centres.
+  GridSearchSpace(const OccupancyGrid& grid, const GridMoves& moves,
+                  const GridSegmentChecker* segments = nullptr);
 
   const OccupancyGrid& grid() const { return *grid_; }
   std::size_t size() const { return grid_->cellCount(); }
@@ -68,7 +76,21 @@ class GridSearchSpace {
     return mask;
   }
 
-  // Supercover line of sight between two cells' centres (grid_line_of_sight.h).
+  // Whether move m from cell u (cell c, neighbour mask `free`) may be made: the cells it needs
+  // are free and, with segment checks, its segment clears the inflated obstacles.
+  bool moveAllowed(std::uint32_t free, const Move& m, std::uint32_t u, const Cell& c) const {
+    if ((free & m.need) != m.need) return false;
+    if (segments_ == nullptr) return true;
+    // Every cell of the move's box lies between u and its (free, so inside) target.
+    const std::uint8_t* near = segments_->nearData() + u;
+    bool far = near[0] == 0;
+    for (int k = 0; far && k < m.box_cells; ++k) far = near[m.box[k]] == 0;
+    return far || segments_->pointsClear(grid_->cellCenter(c),
+                                         grid_->cellCenter({c.x + m.dx, c.y + m.dy, c.z + m.dz}));
+  }
+
+  // Supercover line of sight between two cells' centres (grid_line_of_sight.h), and with
+  // segment checks clear of the inflated obstacles as well.
   bool lineOfSight(std::uint32_t a, std::uint32_t b) const;
 
  private:
@@ -77,6 +99,7 @@ class GridSearchSpace {
     int dx, dy, dz;
   };
   const OccupancyGrid* grid_;
+  const GridSegmentChecker* segments_;
   const std::uint8_t* cells_;
   int nx_, ny_, nz_;
   std::vector<Probe> probes_;  // neighbours read by neighbourMask()

@@ -1,16 +1,41 @@
 #include "planning/grid/grid_world_planner.h"
 
+#include <memory>
+#include <tuple>
+
 #include "planning/deadline.h"
+#include "planning/grid/grid_passage_diagnosis.h"
+#include "planning/grid/grid_segment_checker.h"
 #include "planning/input_error.h"
 
 namespace cosim {
 
+namespace {
+const char* blockingName(OccupancyGrid::Blocking b) {
+  switch (b) {
+    case OccupancyGrid::Blocking::Exact:
+      return "exact";
+    case OccupancyGrid::Blocking::Centre:
+      return "centre";
+    case OccupancyGrid::Blocking::AnyPoint:
+      break;
+  }
+  return "cell";
+}
+}  // namespace
+
 PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
   const Deadline clock(problem.time_limit_s);
+  const double plane_z = problem.start.z();
   const OccupancyGrid grid = OccupancyGrid::fromWorld(
-      *problem.world, resolution_, problem.inflation, problem.planar, problem.start.z(), blocking_);
+      *problem.world, resolution_, problem.inflation, problem.planar, plane_z, blocking_);
+  std::unique_ptr<GridSegmentChecker> segments;
+  if (blocking_ == OccupancyGrid::Blocking::Exact)
+    segments = std::make_unique<GridSegmentChecker>(*problem.world, grid, problem.inflation,
+                                                    problem.planar, plane_z);
   GridQuery query;
   query.grid = &grid;
+  query.segments = segments.get();
   query.start = grid.cellOf(problem.start);
   query.goal = grid.cellOf(problem.goal);
   query.time_limit_s = problem.time_limit_s;
@@ -18,21 +43,48 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
 
   PlanResult result;
   result.counters["grid_cells"] = static_cast<double>(grid.cellCount());
-  if (grid.blocked(query.start) || grid.blocked(query.goal)) {
-    result.message = std::string(grid.blocked(query.start) ? "start" : "goal") +
-                     " cell is blocked at resolution " + std::to_string(resolution_) +
-                     " m with the vehicle's inflation";
+  auto finish = [&] {
+    if (segments) result.counters["segment_checks"] = segments->exactChecks();
     result.time_ms = clock.elapsedMs();
     return result;
-  }
+  };
+  for (const auto& [which, p, c] : {std::tuple("start", problem.start, query.start),
+                                    std::tuple("goal", problem.goal, query.goal)})
+    if (grid.blocked(c)) {
+      result.message =
+          explainBlockedEnd(*problem.world, grid, which, p, problem.inflation, problem.planar);
+      return finish();
+    }
+  // The exact endpoints are joined to the centres of their own cells; with exact occupancy the
+  // joining segment is checked like every other edge (the point and the centre are both free,
+  // the segment between them need not be).
+  const Eigen::Vector3d start_centre = grid.cellCenter(query.start),
+                        goal_centre = grid.cellCenter(query.goal);
+  auto joined = [&](const Eigen::Vector3d& p, Eigen::Vector3d centre) {
+    if (problem.planar) centre.z() = p.z();
+    return !segments || segments->pointsClear(p, centre);
+  };
+  for (const auto& [which, p, centre] : {std::tuple("start", problem.start, start_centre),
+                                         std::tuple("goal", problem.goal, goal_centre)})
+    if (!joined(p, centre)) {
+      result.message = std::string(which) +
+                       " cannot reach the centre of its cell in a straight "
+                       "line at resolution " +
+                       std::to_string(resolution_) +
+                       " m (an inflated obstacle is in between); try a finer resolution";
+      return finish();
+    }
+
   GridPlanResult g = planner_->solveGrid(query);
   for (const auto& [k, v] : g.counters) result.counters[k] = v;
   result.success = g.success;
-  result.message = g.message;
+  if (!g.success)
+    result.message =
+        explainNoGridPath(*problem.world, grid, query.start, query.goal, problem.inflation,
+                          problem.planar, g.message, blockingName(blocking_));
   if (g.success) {
-    // The exact endpoints are joined to the centres of their own cells: that short segment stays
-    // inside a free cell, while every segment between centres was checked by the planner (an
-    // any-angle segment from the exact point itself could clip a blocked cell).
+    // Every segment between centres was checked by the planner (an any-angle segment from the
+    // exact point itself could clip a blocked cell).
     result.path.waypoints.push_back(problem.start);
     for (const Cell& c : g.cells) {
       const Eigen::Vector3d p = grid.cellCenter(c);
@@ -43,8 +95,7 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
     if (problem.planar)
       for (auto& p : result.path.waypoints) p.z() = problem.start.z();
   }
-  result.time_ms = clock.elapsedMs();
-  return result;
+  return finish();
 }
 
 }  // namespace cosim

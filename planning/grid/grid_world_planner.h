@@ -1,9 +1,12 @@
 #pragma once
 // Adapts a GridPlanner to a world: voxelises the scenario's obstacles (grown by the vehicle's
-// inflation) at `resolution` metres (a cell blocked when any point of it is near an obstacle, or,
-// with Blocking::Centre, seed 003's rule: only when its centre is), plans between the cells of
-// start and goal, and returns a metric path from the exact start through the cell centres to the
-// exact goal.
+// inflation) at `resolution` metres, plans between the cells of start and goal, and returns a
+// metric path from the exact start through the cell centres to the exact goal. With
+// Blocking::Exact (the default of the planners that support it) a cell is free iff the vehicle
+// can stand at its centre and every edge is checked against the inflated obstacles
+// (GridSegmentChecker); Blocking::AnyPoint blocks a cell when any point of it is near an
+// obstacle; Blocking::Centre is seed 003's rule (only when its centre is, edges unchecked).
+// A failure says why (grid_passage_diagnosis.h).
 #include <memory>
 
 #include "planning/grid/grid_planner.h"

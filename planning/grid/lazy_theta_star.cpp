@@ -10,8 +10,8 @@ GridPlanResult LazyThetaStar::solveGrid(const GridQuery& query) {
   using State = GridNodeTable<double>::State;
   const Deadline clock(query.time_limit_s);
   if (GridPlanResult rejected; gridQueryRejected(query, rejected)) return rejected;
-  const GridSearchSpace space(*query.grid,
-                              resolveGridMoves(moves_, query.grid->is3D(), params_file_));
+  const GridSearchSpace space(
+      *query.grid, resolveGridMoves(moves_, query.grid->is3D(), params_file_), query.segments);
   auto& nodes = work_.nodes;
   const Cell gc = query.goal;
   GridSearchCounters counters;
@@ -28,7 +28,7 @@ GridPlanResult LazyThetaStar::solveGrid(const GridQuery& query) {
         std::uint32_t best_parent = u;
         const std::uint32_t free = space.neighbourMask(u, c);
         for (const auto& m : space.moves()) {
-          if ((free & m.need) != m.need) continue;
+          if (!space.moveAllowed(free, m, u, c)) continue;
           const std::uint32_t n = static_cast<std::uint32_t>(u + m.offset);
           if (nodes.seen(n) && nodes.closed(n) && nodes.g(n) + m.cost < best) {
             best = nodes.g(n) + m.cost;

@@ -23,6 +23,7 @@ class LazyThetaStar : public GridPlanner {
 
   std::string name() const override { return "lazy_theta_star"; }
   GridPlanResult solveGrid(const GridQuery& query) override;
+  bool checksSegments() const override { return true; }
 
  private:
   GridMoves moves_;

@@ -12,8 +12,9 @@ OccupancyGrid::OccupancyGrid(int nx, int ny, int nz, double cell_size,
                              const Eigen::Vector3d& origin)
     : nx_(nx), ny_(ny), nz_(nz), cell_size_(cell_size), origin_(origin) {
   if (nx <= 0 || ny <= 0 || nz <= 0)
-    throw InputError("", "grid", "dimensions must be positive, got " + std::to_string(nx) + "x" +
-                                     std::to_string(ny) + "x" + std::to_string(nz));
+    throw InputError("", "grid",
+                     "dimensions must be positive, got " + std::to_string(nx) + "x" +
+                         std::to_string(ny) + "x" + std::to_string(nz));
   if (!(cell_size > 0.0) || !std::isfinite(cell_size))
     throw InputError("", "grid", "cell size must be positive");
   const std::int64_t n = std::int64_t(nx) * ny * nz;
@@ -40,7 +41,8 @@ OccupancyGrid OccupancyGrid::fromWorld(const World& world, double cell_size, dou
   const Eigen::Vector3d extent = world.bounds_max - world.bounds_min;
   const int nx = std::max(1, static_cast<int>(std::ceil(extent.x() / cell_size - 1e-9)));
   const int ny = std::max(1, static_cast<int>(std::ceil(extent.y() / cell_size - 1e-9)));
-  const int nz = planar ? 1 : std::max(1, static_cast<int>(std::ceil(extent.z() / cell_size - 1e-9)));
+  const int nz =
+      planar ? 1 : std::max(1, static_cast<int>(std::ceil(extent.z() / cell_size - 1e-9)));
   Eigen::Vector3d origin = world.bounds_min;
   if (planar) origin.z() = plane_z - 0.5 * cell_size;  // the layer's centres sit at plane_z
   OccupancyGrid grid(nx, ny, nz, cell_size, origin);
@@ -49,6 +51,7 @@ OccupancyGrid OccupancyGrid::fromWorld(const World& world, double cell_size, dou
   // the cell is from its centre.
   const double half_diagonal = 0.5 * cell_size * std::sqrt(planar ? 2.0 : 3.0);
   const bool any_point = blocking == Blocking::AnyPoint;
+  const bool closed = any_point || blocking == Blocking::Exact;  // distance == reach blocks
   const double reach = inflation + (any_point ? half_diagonal : 0.0);
   for (const Obstacle& o : world.obstacles) {
     Eigen::Vector3d lo, hi;
@@ -59,9 +62,19 @@ OccupancyGrid OccupancyGrid::fromWorld(const World& world, double cell_size, dou
         for (int x = std::max(0, a.x); x <= std::min(nx - 1, b.x); ++x) {
           const Eigen::Vector3d c = grid.cellCenter({x, y, z});
           const double d = o.signedDistance(c);
-          if (any_point ? d <= reach : d < reach) grid.setBlocked(x, y, z, true);
+          if (closed ? d <= reach : d < reach) grid.setBlocked(x, y, z, true);
         }
   }
+  // The last cell along an axis may stick out of the bounds (the extent is rarely a multiple of
+  // the cell size); with exact occupancy its centre must lie inside them.
+  if (blocking == Blocking::Exact)
+    for (int z = 0; z < nz; ++z)
+      for (int y = 0; y < ny; ++y)
+        for (int x = 0; x < nx; ++x) {
+          Eigen::Vector3d c = grid.cellCenter({x, y, z});
+          if (planar) c.z() = std::clamp(c.z(), world.bounds_min.z(), world.bounds_max.z());
+          if (!world.insideBounds(c)) grid.setBlocked(x, y, z, true);
+        }
   // The floor (the bottom of the bounds) is physical: cells whose centre is closer than
   // `inflation` to it are blocked, so paths keep the vehicle off the ground. The other faces of
   // the bounds only delimit the flight area (the grid already ends there).

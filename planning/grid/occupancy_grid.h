@@ -76,6 +76,12 @@ class OccupancyGrid {
     // inside it for inflation 0): seed 003's grid, whose vertices are cell centres and an
     // obstacle blocks the vertices it contains. Paths may graze obstacles.
     Centre,
+    // Blocked exactly when the vehicle cannot stand at the cell's centre: the centre is within
+    // `inflation` of an obstacle (distance <= inflation, as CollisionWorld::pointFree) or
+    // outside the world's bounds. Edges between free centres are not implied clear: a search
+    // checks them against the inflated geometry (GridSegmentChecker). With those checks a grid
+    // search is complete at its resolution, where AnyPoint closes gaps narrower than a cell.
+    Exact,
   };
 
   // Voxelises a world: cells are blocked as `blocking` says; cells closer than `inflation` to

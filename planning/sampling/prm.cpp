@@ -67,10 +67,9 @@ std::vector<std::uint32_t> shortestRoute(const Roadmap& map, const NearestNeighb
 
 PlanResult Prm::solve(const PlanningProblem& problem) {
   SamplingContext ctx(problem);
-  if (!ctx.invalid().empty()) return ctx.finish({}, false, ctx.invalid());
+  if (!ctx.invalid().empty()) return ctx.reject(ctx.invalid());
   const SamplingOptions& o = options_.common;
-  const auto budget = static_cast<std::size_t>(std::max(o.max_nodes, 2));
-  NearestNeighborIndex nodes(std::min<std::size_t>(budget, 1u << 18));
+  NearestNeighborIndex nodes(initialCapacity(o));
   Roadmap map;
   std::vector<std::pair<std::uint32_t, double>> neighbours;
   double edges = 0;
@@ -91,7 +90,7 @@ PlanResult Prm::solve(const PlanningProblem& problem) {
   addNode(ctx.goal());
 
   double iterations = 0;
-  while (nodes.size() < budget && !(o.mode == 1 && map.find(0) == map.find(1)) && !ctx.timeUp()) {
+  while (!ctx.shouldStop(o, nodes.size(), map.find(0) == map.find(1))) {
     ++iterations;
     const Eigen::Vector3d p = ctx.sample(0.0);
     if (ctx.pointFree(p)) addNode(p);
@@ -104,7 +103,7 @@ PlanResult Prm::solve(const PlanningProblem& problem) {
   result.counters["iterations"] = iterations;
   result.counters["nodes"] = static_cast<double>(nodes.size());
   result.counters["edges"] = edges;
-  return ctx.finish(std::move(result), o.shortcut, "no path within max_nodes");
+  return ctx.finish(std::move(result), o);
 }
 
 }  // namespace cosim

@@ -8,10 +8,9 @@ namespace cosim {
 
 PlanResult Rrt::solve(const PlanningProblem& problem) {
   SamplingContext ctx(problem);
-  if (!ctx.invalid().empty()) return ctx.finish({}, false, ctx.invalid());
+  if (!ctx.invalid().empty()) return ctx.reject(ctx.invalid());
   const SamplingOptions& o = options_;
-  const auto budget = static_cast<std::size_t>(o.max_nodes);
-  SamplingTree tree(std::min<std::size_t>(budget + 2, 1u << 18), o.linear_scan);
+  SamplingTree tree(initialCapacity(o), o.linear_scan);
   std::uint32_t goal_node = SamplingTree::kNone;
   // A node within goal_tolerance of the goal tries the straight edge to it.
   auto tryGoal = [&](std::uint32_t id) {
@@ -27,8 +26,7 @@ PlanResult Rrt::solve(const PlanningProblem& problem) {
   tryGoal(tree.add(ctx.start(), SamplingTree::kNone, 0.0));
 
   double iterations = 0;
-  while (tree.generated() < budget && !(o.mode == 1 && goal_node != SamplingTree::kNone) &&
-         !ctx.timeUp()) {
+  while (!ctx.shouldStop(o, tree.generated(), goal_node != SamplingTree::kNone)) {
     ++iterations;
     const Eigen::Vector3d target = ctx.sample(goal_node == SamplingTree::kNone ? o.goal_bias : 0.0);
     const std::uint32_t nearest = tree.index().nearest(target);
@@ -43,7 +41,7 @@ PlanResult Rrt::solve(const PlanningProblem& problem) {
   if (goal_node != SamplingTree::kNone) result.path = tree.pathTo(goal_node);
   result.counters["iterations"] = iterations;
   result.counters["nodes"] = static_cast<double>(tree.generated());
-  return ctx.finish(std::move(result), o.shortcut, "no path within max_nodes");
+  return ctx.finish(std::move(result), o);
 }
 
 }  // namespace cosim

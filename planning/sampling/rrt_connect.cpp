@@ -8,11 +8,11 @@ namespace cosim {
 
 PlanResult RrtConnect::solve(const PlanningProblem& problem) {
   SamplingContext ctx(problem);
-  if (!ctx.invalid().empty()) return ctx.finish({}, false, ctx.invalid());
+  if (!ctx.invalid().empty()) return ctx.reject(ctx.invalid());
   const SamplingOptions& o = options_;
-  const auto budget = static_cast<std::size_t>(o.max_nodes);
-  const std::size_t capacity = std::min<std::size_t>(budget / 2 + 2, 1u << 17);
+  const std::size_t capacity = initialCapacity(o) / 2 + 2;
   SamplingTree from_start(capacity), from_goal(capacity);
+  auto generated = [&] { return from_start.generated() + from_goal.generated(); };
   from_start.add(ctx.start(), SamplingTree::kNone, 0.0);
   from_goal.add(ctx.goal(), SamplingTree::kNone, 0.0);
 
@@ -34,15 +34,16 @@ PlanResult RrtConnect::solve(const PlanningProblem& problem) {
   // Trivial case: start and goal see each other within one step.
   if ((ctx.goal() - ctx.start()).norm() <= o.step && ctx.segmentFree(ctx.start(), ctx.goal()))
     meet_a = meet_b = 0;
-  while (meet_a == SamplingTree::kNone && from_start.generated() + from_goal.generated() < budget &&
-         !ctx.timeUp()) {
+  // A first solution ends the search (RRT-Connect is not anytime): only the time limit or a
+  // max_nodes the user set stops it before.
+  while (meet_a == SamplingTree::kNone && !ctx.shouldStop(o, generated(), false)) {
     ++iterations;
     const std::uint32_t x_new = extend(*a, ctx.sample(0.0));
     if (x_new != SamplingTree::kNone) {
       // Connect: step b towards the new node of a until it gets there or is blocked.
       const Eigen::Vector3d target = a->position(x_new);
       std::uint32_t reached = SamplingTree::kNone;
-      while (a->generated() + b->generated() < budget) {
+      while (!ctx.shouldStop(o, generated(), false)) {
         const std::uint32_t y = extend(*b, target);
         if (y == SamplingTree::kNone) break;
         if (b->position(y) == target) {
@@ -74,7 +75,7 @@ PlanResult RrtConnect::solve(const PlanningProblem& problem) {
   }
   result.counters["iterations"] = iterations;
   result.counters["nodes"] = static_cast<double>(from_start.generated() + from_goal.generated());
-  return ctx.finish(std::move(result), o.shortcut, "no path within max_nodes");
+  return ctx.finish(std::move(result), o);
 }
 
 }  // namespace cosim

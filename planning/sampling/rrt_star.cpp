@@ -57,12 +57,10 @@ std::string RrtStar::name() const {
 
 PlanResult RrtStar::solve(const PlanningProblem& problem) {
   SamplingContext ctx(problem);
-  if (!ctx.invalid().empty()) return ctx.finish({}, false, ctx.invalid());
+  if (!ctx.invalid().empty()) return ctx.reject(ctx.invalid());
   const SamplingOptions& o = options_.common;
   const bool fixed_nodes = options_.max_tree_nodes > 0;
-  const auto budget = static_cast<std::size_t>(o.max_nodes);
-  const std::size_t capacity = std::min<std::size_t>(budget + 2, 1u << 18);
-  SamplingTree tree(capacity, o.linear_scan);
+  SamplingTree tree(initialCapacity(o), o.linear_scan);
   FarthestLeafQueue leaves;
   const Eigen::Vector3d& goal = ctx.goal();
   const std::uint32_t root = tree.add(ctx.start(), SamplingTree::kNone, 0.0);
@@ -92,8 +90,7 @@ PlanResult RrtStar::solve(const PlanningProblem& problem) {
   std::vector<std::pair<std::uint32_t, double>> found;
   std::vector<Neighbor> near;
   double iterations = 0, rewires = 0, removed = 0;
-  while (tree.generated() < budget && !(o.mode == 1 && goal_node != SamplingTree::kNone) &&
-         !ctx.timeUp()) {
+  while (!ctx.shouldStop(o, tree.generated(), goal_node != SamplingTree::kNone)) {
     ++iterations;
     if (fixed_nodes && tree.size() > static_cast<std::size_t>(options_.max_tree_nodes))
       removed += leaves.removeOne(tree, root, goal_node, goal) ? 1 : 0;
@@ -199,9 +196,10 @@ PlanResult RrtStar::solve(const PlanningProblem& problem) {
   result.counters["rewires"] = rewires;
   if (goal_node != SamplingTree::kNone) result.counters["first_path_nodes"] = first_path_nodes;
   if (fixed_nodes) result.counters["removed_nodes"] = removed;
-  if (goal_node != SamplingTree::kNone && ctx.timeUp() && tree.generated() < budget)
+  if (goal_node != SamplingTree::kNone && o.mode == 2 &&
+      (o.max_nodes == 0 || tree.generated() < static_cast<std::size_t>(o.max_nodes)))
     result.counters["stopped_by_time_limit"] = 1;
-  return ctx.finish(std::move(result), o.shortcut, "no path within max_nodes");
+  return ctx.finish(std::move(result), o);
 }
 
 }  // namespace cosim

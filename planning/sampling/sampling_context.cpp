@@ -27,7 +27,8 @@ SamplingContext::SamplingContext(const PlanningProblem& problem)
       deadline_(problem.time_limit_s),
       rng_(problem.seed),
       start_(problem.start),
-      goal_(problem.goal) {
+      goal_(problem.goal),
+      time_limit_s_(problem.time_limit_s) {
   if (problem.planar) goal_.z() = start_.z();
   char inflated[64];
   std::snprintf(inflated, sizeof inflated, " (obstacles inflated by %g m)", problem.inflation);
@@ -63,12 +64,27 @@ Eigen::Vector3d SamplingContext::steer(const Eigen::Vector3d& from, const Eigen:
   return from + d * (step / dist);
 }
 
-PlanResult SamplingContext::finish(PlanResult result, bool shortcut,
-                                   const std::string& no_path_message) {
+bool SamplingContext::shouldStop(const SamplingOptions& o, std::size_t generated,
+                                 bool solved) const {
+  const int budget = o.max_nodes > 0 ? o.max_nodes : kNodeMemoryBound;
+  if (generated >= static_cast<std::size_t>(budget) || deadline_.expired()) return true;
+  if (!solved) return false;
+  return o.mode == 1 || deadline_.elapsedMs() >= 1000.0 * o.improve_time_s;
+}
+
+PlanResult SamplingContext::reject(const std::string& why) {
+  PlanResult result;
+  result.message = why;
+  result.counters["collision_checks"] = collision_checks_;
+  result.time_ms = deadline_.elapsedMs();
+  return result;
+}
+
+PlanResult SamplingContext::finish(PlanResult result, const SamplingOptions& o) {
   result.success = !result.path.empty();
   if (result.success) {
     result.message.clear();
-    if (shortcut) {
+    if (o.shortcut) {
       const std::size_t before = result.path.size();
       result.path = shortcutPath(
           result.path,
@@ -77,7 +93,21 @@ PlanResult SamplingContext::finish(PlanResult result, bool shortcut,
           static_cast<double>(before - result.path.size());
     }
   } else {
-    result.message = deadline_.expired() ? "time limit" : no_path_message;
+    // Why: which limit stopped the search, after how much work, for how large a vehicle.
+    const double nodes = result.counters.count("nodes") ? result.counters.at("nodes") : 0.0;
+    char why[192];
+    if (deadline_.expired())
+      std::snprintf(why, sizeof why, "time limit (%g s) reached after %.0f nodes without a path",
+                    time_limit_s_, nodes);
+    else if (o.max_nodes > 0)
+      std::snprintf(why, sizeof why, "no path within max_nodes = %d", o.max_nodes);
+    else
+      std::snprintf(why, sizeof why, "no path within %d nodes (the memory bound)",
+                    kNodeMemoryBound);
+    char inflated[96];
+    std::snprintf(inflated, sizeof inflated, " (obstacles inflated by %g m, step %g m)",
+                  world_.inflation(), o.step);
+    result.message = std::string(why) + inflated;
   }
   result.counters["collision_checks"] = collision_checks_;
   result.time_ms = deadline_.elapsedMs();

@@ -45,10 +45,18 @@ TEST(GridCellBlocking, ThetaStarWithTheCentreRulePlansSeed003DiscretesPath) {
   ASSERT_TRUE(world.success) << world.message;
   EXPECT_NEAR(world.path.length(), discrete.length, 1e-9);
   EXPECT_NEAR(world.path.length(), 78.19, 0.005);  // seed003-discrete's map 3 path
-  // The default rule keeps half a cell diagonal (0.87 m) off every face: a longer path.
+  // The conservative rule keeps half a cell diagonal (0.87 m) off every face: a longer path.
   p = ParamSet("test");
   p.set("resolution", "1.0");
+  p.set("cell_blocking", "cell");
   EXPECT_GT(makePlanner("theta_star", p)->solve(prob).path.length(), world.path.length() + 3.0);
+  // The default (exact) rule for a point mass: free centres as the thesis's, but every segment
+  // checked against the obstacles, so never shorter than the thesis's path.
+  p = ParamSet("test");
+  p.set("resolution", "1.0");
+  const PlanResult exact = makePlanner("theta_star", p)->solve(prob);
+  ASSERT_TRUE(exact.success) << exact.message;
+  EXPECT_GE(exact.path.length(), world.path.length() - 1e-9);
 }
 
 }  // namespace

@@ -54,16 +54,18 @@ TEST(RrtStarThesis, OneCandidateParentLeavesLongerPathsThanKaramanFrazzoliOnMap3
 TEST(RrtStarThesis, CapsItsTreeAsRrtStarFnAndIsRrtStarWithTheThesissParentRule) {
   const Seed003Map map = seed003Maps()[2];  // map 2
   const PlanResult capped =
-      plan("rrt_star_thesis", map, 3, {{"mode", "2"}, {"max_tree_nodes", "400"}, {"step", "2"}});
+      plan("rrt_star_thesis", map, 3,
+           {{"mode", "2"}, {"max_nodes", "2000"}, {"max_tree_nodes", "400"}, {"step", "2"}});
   ASSERT_TRUE(capped.success);
   EXPECT_EQ(capped.counters.at("nodes"), 2000);
   EXPECT_LE(capped.counters.at("tree_nodes"), 401);
   EXPECT_GE(capped.counters.at("removed_nodes"), 1500);
   EXPECT_THROW(plan("rrt_star", map, 1, {{"choose_parent", "nearest"}}), InputError);
-  // choose_parent nearest_parent makes rrt_star the thesis's RRT*: the very same path.
+  // choose_parent nearest_parent makes rrt_star the thesis's RRT*: the very same path (in the
+  // thesis's mode 1, rrt_star_thesis's default; rrt_star is anytime by default).
   const PlanResult a = plan("rrt_star_thesis", map, 4, {{"goal_bias", "0"}});
-  const PlanResult b =
-      plan("rrt_star", map, 4, {{"goal_bias", "0"}, {"choose_parent", "nearest_parent"}});
+  const PlanResult b = plan(
+      "rrt_star", map, 4, {{"goal_bias", "0"}, {"choose_parent", "nearest_parent"}, {"mode", "1"}});
   ASSERT_TRUE(a.success && b.success);
   EXPECT_EQ(a.path.waypoints, b.path.waypoints);
 }
