@@ -52,7 +52,8 @@ RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, cons
     scale_of_.push_back(k);
     for (double e : errors_.back()) max_error[k] = std::max(max_error[k], e);
   }
-  for (std::size_t k = 0; k < scales_.size(); ++k) scales_[k].top = errorScaleMax(max_error[k]);
+  for (std::size_t k = 0; k < scales_.size(); ++k)
+    scales_[k].top = errorScaleMax(max_error[k], errorScaleFloor(scenario.sim.goal_tolerance));
   for (std::size_t i = 0; i < scenario.world.obstacles.size(); ++i)
     obstacle_geoms_.push_back(mj_name2id(m, mjOBJ_GEOM, ("obstacle" + std::to_string(i)).c_str()));
 }
@@ -153,6 +154,25 @@ void RunRenderer::addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
   ++scene_.ngeom;
 }
 
+void RunRenderer::addHeadingArrow(const LogSample& s, double radius) {
+  if (scene_.ngeom >= scene_.maxgeom) return;
+  // The body's forward (x) axis, level: where a quadrotor's nose or a robot's front points.
+  Eigen::Vector3d forward = s.att.toRotationMatrix().col(0);
+  forward.z() = 0.0;
+  if (forward.norm() < 1e-6) return;
+  forward.normalize();
+  const Eigen::Vector3d from = s.pos + 0.6 * radius * forward;
+  const Eigen::Vector3d to = s.pos + 2.2 * radius * forward;
+  mjvGeom* g = scene_.geoms + scene_.ngeom;
+  const float rgba[4] = {kHeadingColour.x(), kHeadingColour.y(), kHeadingColour.z(), 1.0f};
+  mjv_initGeom(g, mjGEOM_ARROW, nullptr, nullptr, nullptr, rgba);
+  mjv_makeConnector(g, mjGEOM_ARROW, 0.12 * radius, from.x(), from.y(), from.z(), to.x(), to.y(),
+                    to.z());
+  g->emission = 0.6f;
+  g->category = mjCAT_DECOR;
+  ++scene_.ngeom;
+}
+
 void RunRenderer::addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector3f& rgb,
                             float alpha) {
   if (scene_.ngeom >= scene_.maxgeom) return;
@@ -214,8 +234,10 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
   for (std::size_t a = 0; a < log_.vehicles.size(); ++a) {
     const VehicleLog& v = log_.vehicles[a];
     const Eigen::Vector3f planned = plannedColour(a);
+    // The planned path as a wide see-through band: the flown trail, drawn inside it, stays
+    // visible, and where they part the band shows the plan on its own.
     for (std::size_t i = 1; i < v.planned_path.size(); ++i)
-      addSegment(v.planned_path[i - 1], v.planned_path[i], planned, 0.75 * line_radius_);
+      addSegment(v.planned_path[i - 1], v.planned_path[i], planned, 2.2 * line_radius_, 0.45f);
     // Start and goal; the goal stands on a thin pole to the floor so its height reads in
     // perspective views.
     const Eigen::Vector3d start = !v.planned_path.empty() ? v.planned_path.front()
@@ -240,18 +262,19 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
         if ((v.samples[i].ref_pos - v.samples[from].ref_pos).norm() < dash) continue;
         if (draw)
           addSegment(v.samples[from].ref_pos, v.samples[i].ref_pos, kReferenceColour,
-                     0.35 * line_radius_);
+                     0.6 * line_radius_);
         draw = !draw;
         from = i;
       }
     }
     addTrail(a, t);
-    // Where the vehicle is, for views where it is a few pixels small (and to tell agents apart).
-    if (camera != CameraKind::Chase || several) {
-      const LogSample& s = v.samples[sampleIndexAt(v, t)];
-      addSphere(s.pos, std::max(1.6 * v.radius, 5.0 * line_radius_),
-                several ? planned : Eigen::Vector3f(1, 1, 1), 0.35f);
-    }
+    // Where the vehicle is, for views where it is a few pixels small (and to tell agents apart),
+    // and where it heads.
+    const LogSample& s = v.samples[sampleIndexAt(v, t)];
+    const double marker = std::max(1.6 * v.radius, 5.0 * line_radius_);
+    if (camera != CameraKind::Chase || several)
+      addSphere(s.pos, marker, several ? planned : Eigen::Vector3f(1, 1, 1), 0.35f);
+    addHeadingArrow(s, camera == CameraKind::Chase ? v.radius : marker);
   }
 }
 

@@ -41,6 +41,10 @@ class RunRenderer {
   bool project(const Eigen::Vector3d& p, Eigen::Vector2d& pixel) const;
 
   double endTime() const { return end_time_; }
+  // What this renderer draws from, for renderers of the same run on other threads.
+  const WorldModel& world() const { return world_; }
+  const Scenario& scenario() const { return scenario_; }
+  const RunLog& log() const { return log_; }
   // m, the top of the colour scale vehicle's trail is coloured on. Vehicles whose errors are
   // measured against the same kind of reference (log_lookup.h) share a scale; a mixed run has
   // one for the robots and one for the quadrotors, each with its own bar and title.
@@ -61,6 +65,8 @@ class RunRenderer {
   void addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3f& rgb,
                   double radius, float alpha = 1.0f);
   void addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector3f& rgb, float alpha);
+  // An arrow from the vehicle along its level forward axis, sized by `radius` (m).
+  void addHeadingArrow(const LogSample& s, double radius);
   void annotate(double t);
   // room: the most entries the frame has room for.
   std::vector<LegendEntry> legendEntries(std::size_t room) const;
