@@ -54,9 +54,6 @@ CameraPose CameraRig::chaseAt(double t) const {
   if (toward.norm() > 1e-9) toward.normalize();
   const Eigen::Vector3d d = moved + 0.3 * toward;
   p.azimuth = d.head<2>().norm() > 1e-9 ? std::atan2(d.y(), d.x()) / kDeg : 0.0;
-  // Steep enough that the top of the frame meets the floor inside a world of a few tens of
-  // metres rather than the sky beyond it, and sees over the obstacles next to the vehicle.
-  p.elevation = -38.0;
   p.distance = std::max(1.5, 20.0 * std::max(v.radius, 0.05));
   // Aim a little ahead, where the vehicle will be (the log knows): the path ahead and what
   // stands next to it are in view, the vehicle below the centre. The offset is capped so the
@@ -65,7 +62,26 @@ CameraPose CameraRig::chaseAt(double t) const {
   const double cap = 0.3 * p.distance;
   if (ahead.norm() > cap) ahead *= cap / ahead.norm();
   p.lookat = pos + ahead;
+  // Looking down over the obstacles next to the vehicle; steeper near the world's edge, until
+  // the top of the frame meets the floor inside the world rather than the sky beyond it.
+  for (p.elevation = -38.0; p.elevation > -64.0; p.elevation -= 2.0)
+    if (topOfFrameInsideWorld(p)) break;
   return p;
+}
+
+bool CameraRig::topOfFrameInsideWorld(const CameraPose& p) const {
+  const double a = p.azimuth * kDeg, top = (p.elevation + 0.5 * kModelFovy) * kDeg;
+  if (top >= 0.0) return false;  // the top edge looks at the horizon or above
+  const Eigen::Vector3d eye = p.eye();
+  const double drop = eye.z() - scenario_.world.bounds_min.z();
+  const Eigen::Vector3d ray(std::cos(top) * std::cos(a), std::cos(top) * std::sin(a),
+                            std::sin(top));
+  const Eigen::Vector3d hit = eye + ray * (drop / -ray.z());
+  // A margin of a tenth of the world's size: the edge itself may show.
+  const Eigen::Vector3d lo = scenario_.world.bounds_min, hi = scenario_.world.bounds_max;
+  const double margin = 0.1 * (hi - lo).head<2>().norm();
+  return hit.x() > lo.x() - margin && hit.x() < hi.x() + margin && hit.y() > lo.y() - margin &&
+         hit.y() < hi.y() + margin;
 }
 
 bool CameraRig::eyeIsClear(const CameraPose& p) const {

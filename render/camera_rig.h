@@ -48,6 +48,8 @@ class CameraRig {
   CameraPose chaseAt(double t) const;
   CameraPose chase(double t) const;
   bool eyeIsClear(const CameraPose& p) const;
+  // Whether the floor seen at the top edge of the frame (model lens) is within the world.
+  bool topOfFrameInsideWorld(const CameraPose& p) const;
   // The largest eye distance up to p.distance from which the view is clear (eyeIsClear).
   double clearDistance(CameraPose p) const;
   CameraPose overview() const;
