@@ -215,7 +215,9 @@ Eigen::Vector3f RunRenderer::plannedColour(std::size_t vehicle) const {
 }
 
 void RunRenderer::addTrail(std::size_t vehicle, double t) {
-  if (trail_line_radius_ != line_radius_) {
+  // Re-decimated only when the line width changes by a quarter: the chase camera's distance
+  // (and with it the width) changes a little from frame to frame near obstacles.
+  if (!(std::abs(trail_line_radius_ / line_radius_ - 1.0) < 0.25)) {
     // Vertices within a fraction of the line width of the logged positions look smooth; a
     // segment budget bounds the frame cost on long, winding flights.
     trail_vertices_.clear();
