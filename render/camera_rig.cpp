@@ -56,16 +56,17 @@ CameraPose CameraRig::chaseAt(double t) const {
   p.azimuth = d.head<2>().norm() > 1e-9 ? std::atan2(d.y(), d.x()) / kDeg : 0.0;
   p.distance = std::max(1.5, 20.0 * std::max(v.radius, 0.05));
   // Aim a little ahead, where the vehicle will be (the log knows): the path ahead and what
-  // stands next to it are in view, the vehicle below the centre. The offset is capped so the
-  // vehicle stays well inside the frame.
-  Eigen::Vector3d ahead = v.samples[sampleIndexAt(v, t + kChaseLookAheadSeconds)].pos - pos;
-  const double cap = 0.3 * p.distance;
-  if (ahead.norm() > cap) ahead *= cap / ahead.norm();
-  p.lookat = pos + ahead;
-  // Looking down over the obstacles next to the vehicle; steeper near the world's edge, until
-  // the top of the frame meets the floor inside the world rather than the sky beyond it.
-  for (p.elevation = -38.0; p.elevation > -64.0; p.elevation -= 2.0)
+  // stands next to it are in view, the vehicle below the centre. Looking down over the
+  // obstacles next to the vehicle; steeper near the world's edge, until the top of the frame
+  // meets the floor inside the world rather than the sky beyond it. The look-ahead shrinks as
+  // the camera tilts down (by cos(elevation)), so the vehicle stays as far below the centre.
+  const Eigen::Vector3d ahead = v.samples[sampleIndexAt(v, t + kChaseLookAheadSeconds)].pos - pos;
+  for (p.elevation = -38.0; p.elevation >= -64.0; p.elevation -= 2.0) {
+    const double cap = 0.3 * p.distance * std::cos(p.elevation * kDeg) / std::cos(38.0 * kDeg);
+    p.lookat = pos + (ahead.norm() > cap ? Eigen::Vector3d(ahead * (cap / ahead.norm())) : ahead);
     if (topOfFrameInsideWorld(p)) break;
+  }
+  p.elevation = std::max(p.elevation, -64.0);
   return p;
 }
 

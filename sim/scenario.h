@@ -68,7 +68,7 @@ struct RenderSettings {
   std::string camera = "chase";      // the main video, video.mp4
   std::vector<std::string> cameras;  // more videos, one per camera: video_<camera>.mp4
   int width = 1280, height = 720, fps = 30;
-  double speedup = 1.0;           // render.speed: simulated seconds per second of video
+  double speedup = 1.0;           // simulated seconds per second of video
   bool has_fixed_camera = false;  // render.fixed_camera: {pos: [x,y,z], lookat: [x,y,z]}
   Eigen::Vector3d fixed_pos = Eigen::Vector3d::Zero();
   Eigen::Vector3d fixed_lookat = Eigen::Vector3d::Zero();

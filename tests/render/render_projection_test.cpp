@@ -145,12 +145,13 @@ TEST(RenderProjection, ChaseCameraKeepsTheVehicleAndThePathAheadInView) {
   for (double t : {0.5, 2.0, 3.0}) {
     renderer.render(t, "chase", rgb, false);
     const Eigen::Vector3d here = v.samples[static_cast<std::size_t>(t * 100)].pos;
-    const Eigen::Vector3d ahead = v.samples[static_cast<std::size_t>((t + 2.0) * 100)].pos;
+    const Eigen::Vector3d ahead = v.samples[static_cast<std::size_t>((t + 1.5) * 100)].pos;
     Eigen::Vector2d px, ahead_px;
     ASSERT_TRUE(renderer.project(here, px));
     ASSERT_TRUE(renderer.project(ahead, ahead_px));
     // The camera aims ahead of the vehicle: the vehicle sits centred across, below the middle
-    // but well inside the frame, and where it will be in 2 s is in the frame above it.
+    // but well inside the frame, and where it will be in 1.5 s is in the frame above it (near
+    // this small world's edge the camera tilts down, which shortens the view ahead).
     EXPECT_NEAR(px.x(), 160.0, 8.0) << "t = " << t;
     EXPECT_GT(px.y(), 100.0) << "t = " << t;
     EXPECT_LT(px.y(), 150.0) << "t = " << t;
