@@ -109,7 +109,7 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
     double time_limit = 60.0;
     bool execute = false, video = false;
     std::string robot = "omni_base";
-    double cell = 0.0, max_time = 300.0, video_speed = 0.0;
+    double cell = 0.0, max_time = 300.0, video_speed = 4.0;
     std::uint64_t seed = 1;
     std::vector<std::string> sets, blocks;
   };
@@ -154,7 +154,8 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
       ->check(numberIn(1.0, 86400.0));
   cmd->add_flag("--video", a->video, "--execute: also render DIR/execution/video.mp4");
   cmd->add_option("--video-speed", a->video_speed,
-                  "--execute --video: time-lapse, simulated seconds per second of video")
+                  "--execute --video: time-lapse, simulated seconds per second of video "
+                  "(default 4: robots at half a metre per second)")
       ->check(numberIn(0.01, 1000.0));
   cmd->callback([a, &ctx] {
     const std::vector<int> counts = parseAgentCounts(a->agents);
