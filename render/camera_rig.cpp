@@ -41,11 +41,10 @@ CameraRig::CameraRig(const Scenario& scenario, const RunLog& log, double aspect)
   overview_ = overview();
 }
 
-CameraPose CameraRig::chase(double t) const {
+CameraPose CameraRig::chaseAt(double t) const {
   CameraPose p;
   const VehicleLog& v = log_.vehicles.front();
-  const std::size_t i = sampleIndexAt(v, t);
-  const Eigen::Vector3d pos = v.samples[i].pos;
+  const Eigen::Vector3d pos = v.samples[sampleIndexAt(v, t)].pos;
   // Heading from the displacement over the last 1.5 s (an average velocity: no jitter from
   // attitude wobble), blended with a constant lean toward the goal so the heading is defined
   // while hovering and never jumps.
@@ -54,11 +53,77 @@ CameraPose CameraRig::chase(double t) const {
   toward.z() = 0.0;
   if (toward.norm() > 1e-9) toward.normalize();
   const Eigen::Vector3d d = moved + 0.3 * toward;
-  p.lookat = pos;
   p.azimuth = d.head<2>().norm() > 1e-9 ? std::atan2(d.y(), d.x()) / kDeg : 0.0;
-  // High enough to see over the obstacles next to the vehicle and the path ahead on the floor.
-  p.elevation = -30.0;
   p.distance = std::max(1.5, 20.0 * std::max(v.radius, 0.05));
+  // Aim a little ahead, where the vehicle will be (the log knows): the path ahead and what
+  // stands next to it are in view, the vehicle below the centre. Looking down over the
+  // obstacles next to the vehicle; steeper near the world's edge, until the top of the frame
+  // meets the floor inside the world rather than the sky beyond it. The look-ahead shrinks as
+  // the camera tilts down (by cos(elevation)), so the vehicle stays as far below the centre.
+  const Eigen::Vector3d ahead = v.samples[sampleIndexAt(v, t + kChaseLookAheadSeconds)].pos - pos;
+  for (p.elevation = -38.0; p.elevation >= -64.0; p.elevation -= 2.0) {
+    const double cap = 0.3 * p.distance * std::cos(p.elevation * kDeg) / std::cos(38.0 * kDeg);
+    p.lookat = pos + (ahead.norm() > cap ? Eigen::Vector3d(ahead * (cap / ahead.norm())) : ahead);
+    if (topOfFrameInsideWorld(p)) break;
+  }
+  p.elevation = std::max(p.elevation, -64.0);
+  return p;
+}
+
+bool CameraRig::topOfFrameInsideWorld(const CameraPose& p) const {
+  const double a = p.azimuth * kDeg, top = (p.elevation + 0.5 * kModelFovy) * kDeg;
+  if (top >= 0.0) return false;  // the top edge looks at the horizon or above
+  const Eigen::Vector3d eye = p.eye();
+  const double drop = eye.z() - scenario_.world.bounds_min.z();
+  const Eigen::Vector3d ray(std::cos(top) * std::cos(a), std::cos(top) * std::sin(a),
+                            std::sin(top));
+  const Eigen::Vector3d hit = eye + ray * (drop / -ray.z());
+  // A margin of a tenth of the world's size: the edge itself may show.
+  const Eigen::Vector3d lo = scenario_.world.bounds_min, hi = scenario_.world.bounds_max;
+  const double margin = 0.1 * (hi - lo).head<2>().norm();
+  return hit.x() > lo.x() - margin && hit.x() < hi.x() + margin && hit.y() > lo.y() - margin &&
+         hit.y() < hi.y() + margin;
+}
+
+bool CameraRig::eyeIsClear(const CameraPose& p) const {
+  // The eye stands clear of every obstacle, and so does the first half of its sight line: an
+  // obstacle right in front of the lens would fill the frame (farther ones turn see-through
+  // when they hide the vehicle, run_renderer.cpp).
+  const Eigen::Vector3d eye = p.eye();
+  const double clearance = 0.05 * p.distance;
+  constexpr int kSamples = 8;
+  for (const Obstacle& o : scenario_.world.obstacles)
+    for (int k = 0; k < kSamples; ++k) {
+      const Eigen::Vector3d q = eye + (p.lookat - eye) * (0.5 * k / kSamples);
+      if (o.signedDistance(q) < clearance) return false;
+    }
+  return true;
+}
+
+double CameraRig::clearDistance(CameraPose p) const {
+  // Walk in from the wanted distance until the eye is clear; the closest allowed is a fifth.
+  const double wanted = p.distance;
+  constexpr int kSteps = 32;
+  for (int k = 0; k <= kSteps; ++k) {
+    p.distance = wanted * (1.0 - 0.8 * k / kSteps);
+    if (eyeIsClear(p)) return p.distance;
+  }
+  return p.distance;
+}
+
+CameraPose CameraRig::chase(double t) const {
+  CameraPose p = chaseAt(t);
+  // The distance is the closest of the clear distances around t, so the camera moves in ahead
+  // of an obstacle and out again after it instead of jumping; still a function of t alone.
+  double distance = p.distance;
+  for (double dt : {-1.0, -0.5, 0.0, 0.5, 1.0})
+    distance = std::min(distance, clearDistance(chaseAt(t + dt)));
+  const double wanted = p.distance;
+  p.distance = distance;
+  if (!eyeIsClear(p)) {
+    p.distance = wanted;
+    p.distance = clearDistance(p);
+  }
   return p;
 }
 

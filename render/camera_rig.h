@@ -42,7 +42,16 @@ class CameraRig {
   static constexpr double kOverviewMargin = 0.06;
 
  private:
+  // Seconds ahead the chase camera aims at (where the vehicle will be then).
+  static constexpr double kChaseLookAheadSeconds = 2.0;
+  // The chase camera's pose at t before obstacles are considered.
+  CameraPose chaseAt(double t) const;
   CameraPose chase(double t) const;
+  bool eyeIsClear(const CameraPose& p) const;
+  // Whether the floor seen at the top edge of the frame (model lens) is within the world.
+  bool topOfFrameInsideWorld(const CameraPose& p) const;
+  // The largest eye distance up to p.distance from which the view is clear (eyeIsClear).
+  double clearDistance(CameraPose p) const;
   CameraPose overview() const;
 
   const Scenario& scenario_;

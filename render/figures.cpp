@@ -92,14 +92,27 @@ void writePathData(const std::vector<Eigen::Vector3d>& path, const std::filesyst
 }
 
 // Obstacles as gnuplot objects seen along an axis: `horizontal`/`vertical` are the world axes
-// (0 x, 1 y, 2 z) on the figure's x and y.
-std::string obstacleObjects(const World& world, int horizontal, int vertical) {
+// (0 x, 1 y, 2 z) on the figure's x and y. shown: which obstacles to draw (all if empty). From
+// above, an obstacle's shade says its height (taller is darker), so a path over a low block
+// does not look like a collision.
+std::string obstacleObjects(const World& world, int horizontal, int vertical,
+                            const std::vector<bool>& shown = {}) {
   std::ostringstream s;
   int id = 1;
-  const std::string style = " fc rgb '" + std::string(kObstacleFill) +
-                            "' fillstyle transparent solid 0.55 border lc rgb '" + kObstacleEdge +
-                            "' lw 0.8 back\n";
-  for (const Obstacle& o : world.obstacles) {
+  const double world_height = std::max(1e-9, world.bounds_max.z() - world.bounds_min.z());
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
+    if (!shown.empty() && !shown[i]) continue;
+    const Obstacle& o = world.obstacles[i];
+    const double top = o.pos.z() + 0.5 * (o.type == ObstacleType::Box        ? o.size.z()
+                                          : o.type == ObstacleType::Cylinder ? o.height
+                                                                             : 2.0 * o.radius);
+    const double opacity =
+        vertical == 2
+            ? 0.55
+            : 0.2 + 0.65 * std::clamp((top - world.bounds_min.z()) / world_height, 0.0, 1.0);
+    const std::string style = " fc rgb '" + std::string(kObstacleFill) +
+                              "' fillstyle transparent solid " + num(opacity) + " border lc rgb '" +
+                              kObstacleEdge + "' lw 0.8 back\n";
     const double c = std::cos(o.yaw_deg * M_PI / 180.0), sn = std::sin(o.yaw_deg * M_PI / 180.0);
     if (o.type == ObstacleType::Sphere || (o.type == ObstacleType::Cylinder && vertical != 2)) {
       // A circle from above (spheres, and cylinders standing on z).
@@ -133,6 +146,31 @@ std::string obstacleObjects(const World& world, int horizontal, int vertical) {
     }
   }
   return s.str();
+}
+
+// The side view shows only the obstacles whose footprint comes within this distance (m) of a
+// vehicle's flown or planned path: projected onto one plane, every obstacle of the world would
+// seem to stand in the path's way.
+constexpr double kSideViewDepth = 1.0;
+
+std::vector<bool> obstaclesNearPaths(const World& world, const RunLog& log) {
+  std::vector<bool> near(world.obstacles.size(), false);
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
+    const Obstacle& o = world.obstacles[i];
+    // A point's horizontal distance to the footprint: the point taken to the obstacle's centre
+    // height.
+    const auto close = [&](Eigen::Vector3d p) {
+      p.z() = o.pos.z();
+      return o.signedDistance(p) < kSideViewDepth;
+    };
+    for (const VehicleLog& v : log.vehicles) {
+      for (const auto& p : v.planned_path) near[i] = near[i] || close(p);
+      const std::size_t step = std::max<std::size_t>(1, v.samples.size() / kMaxPlotRows);
+      for (std::size_t k = 0; k < v.samples.size() && !near[i]; k += step)
+        near[i] = close(v.samples[k].pos);
+    }
+  }
+  return near;
 }
 
 // "v0.dat" (vehicle series), "p0.dat" (planned path), "g0.dat" (goal), built piece by piece:
@@ -236,7 +274,7 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
     error_marks << "set label " << gnuplotString("RMSE") << " at graph 0.005, first "
                 << num(m.rmse_m) << " left offset 0,0.6 tc rgb '" << colour << "' font ',9'\n";
   }
-  const double scale = errorScaleMax(max_error);
+  const double scale = errorScaleMax(max_error, errorScaleFloor(scenario.sim.goal_tolerance));
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
   const std::string planner =
       scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
@@ -263,7 +301,10 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
 
   std::ostringstream top;
   top << common.str() << errorPalette(scale, colour_label) << obstacleObjects(world, 0, 1)
-      << "set title " << gnuplotString("Top view: planned vs flown path (" + planner + ")") << "\n"
+      << "set title "
+      << gnuplotString("Top view: planned vs flown path (" + planner +
+                       "; darker obstacles are taller)")
+      << "\n"
       << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
       << "set xrange [" << num(lo.x()) << ":" << num(hi.x()) << "]\nset yrange [" << num(lo.y())
       << ":" << num(hi.y()) << "]\nset key outside below horizontal center\n"
@@ -276,9 +317,10 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
     along = std::abs(d.y()) > std::abs(d.x()) ? 1 : 0;
   }
   std::ostringstream side;
-  side << common.str() << errorPalette(scale, colour_label) << obstacleObjects(world, along, 2)
-       << "set title "
-       << gnuplotString("Side view (looking along " + axisName(1 - along) + "; height exaggerated)")
+  side << common.str() << errorPalette(scale, colour_label)
+       << obstacleObjects(world, along, 2, obstaclesNearPaths(world, log)) << "set title "
+       << gnuplotString("Side view (looking along " + axisName(1 - along) + "; obstacles within " +
+                        num(kSideViewDepth) + " m of the paths only; height exaggerated)")
        << "\n"
        << "set xlabel '" << axisName(along) << " [m]'\nset ylabel 'z [m]'\nset size ratio 0.42\n"
        << "set xrange [" << num(lo[along]) << ":" << num(hi[along]) << "]\nset yrange ["

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "render/json_flatten.h"
+#include "render/metric_groups.h"
 #include "sim/temporary_name.h"
 
 namespace cosim {
@@ -45,14 +46,20 @@ std::string attr(const std::string& s) {
 }
 
 const char* kStyle = R"(
-body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 24px auto; max-width: 1320px; color: #1c1c22; }
-h1 { font-size: 1.5em; margin-bottom: 4px; } h2 { font-size: 1.15em; margin-top: 28px; border-bottom: 1px solid #ddd; }
+body { font-family: "DejaVu Sans", Helvetica, Arial, sans-serif; margin: 20px auto; max-width: 1400px; padding: 0 16px; color: #1c1c22; }
+h1 { font-size: 1.45em; margin-bottom: 4px; } h2 { font-size: 1.1em; margin: 24px 0 8px; border-bottom: 1px solid #ddd; }
+h3 { font-size: 0.95em; margin: 0 0 4px; color: #333; }
 p.sub { color: #555; margin-top: 0; }
-video, img { max-width: 100%; border: 1px solid #ccc; background: #fff; }
-figure { display: inline-block; margin: 8px 12px 8px 0; vertical-align: top; max-width: 100%; }
-figcaption { font-size: 0.9em; color: #444; }
-table { border-collapse: collapse; font-size: 0.92em; }
-td, th { border: 1px solid #ddd; padding: 3px 10px; text-align: left; }
+video, img { width: 100%; border: 1px solid #ccc; background: #fff; }
+.cards { display: flex; flex-wrap: wrap; gap: 10px; margin: 12px 0; }
+.card { border: 1px solid #d8dbe0; border-radius: 6px; padding: 6px 14px; background: #f6f7f9; min-width: 120px; }
+.card .k { font-size: 0.8em; color: #555; } .card .v { font-size: 1.25em; font-family: "DejaVu Sans Mono", monospace; }
+.grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(420px, 1fr)); gap: 14px; align-items: start; }
+.tables { display: grid; grid-template-columns: repeat(auto-fill, minmax(320px, 1fr)); gap: 14px; align-items: start; }
+figure { margin: 0; }
+figcaption { font-size: 0.85em; color: #444; }
+table { border-collapse: collapse; font-size: 0.88em; width: 100%; }
+td, th { border: 1px solid #ddd; padding: 2px 8px; text-align: left; }
 td.v { font-family: "DejaVu Sans Mono", monospace; text-align: right; }
 tr:nth-child(even) { background: #f6f7f9; }
 )";
@@ -86,6 +93,43 @@ const char* kLoadCheck = R"(
 })();
 )";
 
+// The videos (the first full width, the others in the grid) and the pictures, as a grid.
+void writeMedia(std::ostringstream& h, const HtmlReport& r) {
+  for (std::size_t i = 0; i < r.videos.size(); ++i) {
+    if (i == 0) h << "<h2>Video</h2>\n";
+    if (i == 1) h << "<div class=\"grid\">\n";
+    const std::string& v = r.videos[i];
+    h << "<figure><video src=\"" << attr(v) << "\" controls muted preload=\"auto\"></video>"
+      << "<figcaption><a href=\"" << attr(v) << "\">" << htmlEscape(v)
+      << "</a></figcaption></figure>\n";
+  }
+  if (r.videos.size() > 1) h << "</div>\n";
+  if (r.figures.empty() && r.images.empty()) return;
+  h << "<h2>Figures</h2>\n<div class=\"grid\">\n";
+  for (const auto& i : r.images)
+    h << "<figure><img src=\"" << attr(i) << "\" alt=\"" << attr(i) << "\"><figcaption><a href=\""
+      << attr(i) << "\">" << htmlEscape(i) << "</a></figcaption></figure>\n";
+  for (const auto& f : r.figures)
+    h << "<figure><img src=\"" << attr(f) << ".png\" alt=\"" << attr(f) << "\">"
+      << "<figcaption>" << htmlEscape(f) << " (<a href=\"" << attr(f)
+      << ".png\">PNG</a>, <a href=\"" << attr(f) << ".svg\">SVG</a>)</figcaption></figure>\n";
+  h << "</div>\n";
+}
+
+void writeVehicleTable(std::ostringstream& h, const VehicleMetricTable& t) {
+  if (t.vehicles.empty()) return;
+  h << "<h3 style=\"margin-top:14px\">Per vehicle</h3>\n<div style=\"overflow-x:auto\"><table>\n"
+    << "<tr><th>metric</th>";
+  for (const auto& v : t.vehicles) h << "<th>" << htmlEscape(v) << "</th>";
+  h << "</tr>\n";
+  for (std::size_t m = 0; m < t.metrics.size(); ++m) {
+    h << "<tr><td>" << htmlEscape(t.metrics[m]) << "</td>";
+    for (const auto& cell : t.cells[m]) h << "<td class=\"v\">" << htmlEscape(cell) << "</td>";
+    h << "</tr>\n";
+  }
+  h << "</table></div>\n";
+}
+
 }  // namespace
 
 void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& r) {
@@ -94,31 +138,27 @@ void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& r) {
     << htmlEscape(r.title) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<h1>"
     << htmlEscape(r.title) << "</h1>\n";
   if (!r.subtitle.empty()) h << "<p class=\"sub\">" << htmlEscape(r.subtitle) << "</p>\n";
-  if (!r.videos.empty()) {
-    h << "<h2>Video</h2>\n";
-    for (const auto& v : r.videos)
-      h << "<figure><video src=\"" << attr(v)
-        << "\" controls muted preload=\"auto\" width=\"960\"></video>"
-        << "<figcaption><a href=\"" << attr(v) << "\">" << htmlEscape(v)
-        << "</a></figcaption></figure>\n";
+  const GroupedMetrics metrics =
+      r.metrics_json.empty() ? GroupedMetrics{} : groupMetrics(flattenJson(r.metrics_json));
+  if (!metrics.headline.empty()) {
+    h << "<div class=\"cards\">\n";
+    for (const auto& [k, v] : metrics.headline)
+      h << "<div class=\"card\"><div class=\"k\">" << htmlEscape(k) << "</div><div class=\"v\">"
+        << htmlEscape(v) << "</div></div>\n";
+    h << "</div>\n";
   }
-  if (!r.figures.empty() || !r.images.empty()) {
-    h << "<h2>Figures</h2>\n";
-    for (const auto& f : r.figures)
-      h << "<figure><img src=\"" << attr(f) << ".png\" alt=\"" << attr(f) << "\" width=\"640\">"
-        << "<figcaption>" << htmlEscape(f) << " (<a href=\"" << attr(f)
-        << ".png\">PNG</a>, <a href=\"" << attr(f) << ".svg\">SVG</a>)</figcaption></figure>\n";
-    for (const auto& i : r.images)
-      h << "<figure><img src=\"" << attr(i) << "\" alt=\"" << attr(i)
-        << "\" width=\"640\"><figcaption><a href=\"" << attr(i) << "\">" << htmlEscape(i)
-        << "</a></figcaption></figure>\n";
-  }
-  if (!r.metrics_json.empty()) {
-    h << "<h2>Metrics</h2>\n<table>\n<tr><th>metric</th><th>value</th></tr>\n";
-    for (const auto& [k, v] : flattenJson(r.metrics_json))
-      h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"v\">" << htmlEscape(v)
-        << "</td></tr>\n";
-    h << "</table>\n";
+  writeMedia(h, r);
+  if (!metrics.groups.empty() || !metrics.vehicles.vehicles.empty()) {
+    h << "<h2>Metrics</h2>\n<div class=\"tables\">\n";
+    for (const MetricGroup& g : metrics.groups) {
+      h << "<div><h3>" << htmlEscape(g.title) << "</h3><table>\n";
+      for (const auto& [k, v] : g.rows)
+        h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"v\">" << htmlEscape(v)
+          << "</td></tr>\n";
+      h << "</table></div>\n";
+    }
+    h << "</div>\n";
+    writeVehicleTable(h, metrics.vehicles);
   }
   h << "<script>" << kLoadCheck << "</script>\n</body>\n</html>\n";
 

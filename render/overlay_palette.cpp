@@ -42,7 +42,12 @@ std::string hexColour(const Eigen::Vector3f& rgb) {
   return buf;
 }
 
-double errorScaleMax(double max_error) {
+double errorScaleFloor(double goal_tolerance) {
+  return 0.25 * goal_tolerance;
+}
+
+double errorScaleMax(double max_error, double floor) {
+  if (std::isfinite(floor)) max_error = std::max(max_error, floor);
   if (!(max_error > 1e-6)) return 0.1;
   const double decade = std::pow(10.0, std::floor(std::log10(max_error)));
   for (double m : {1.0, 2.0, 5.0, 10.0})

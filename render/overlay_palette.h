@@ -12,6 +12,9 @@ inline const Eigen::Vector3f kPlannedPathColour{1.0f, 0.3f, 0.05f};
 inline const Eigen::Vector3f kReferenceColour{0.12f, 0.12f, 0.14f};
 inline const Eigen::Vector3f kStartColour{0.1f, 0.75f, 0.2f};
 inline const Eigen::Vector3f kGoalColour{0.9f, 0.1f, 0.1f};
+// The arrow showing where a vehicle heads (magenta: apart from the paths, the error scale and
+// the grey world).
+inline const Eigen::Vector3f kHeadingColour{0.85f, 0.1f, 0.75f};
 
 // One colour per agent, distinguishable for colour-blind viewers (Okabe & Ito, "Color
 // Universal Design", 2008), starting with the single-vehicle orange. With one agent, the
@@ -26,8 +29,13 @@ Eigen::Vector3f errorColour(double fraction);
 // "#rrggbb" for gnuplot and HTML.
 std::string hexColour(const Eigen::Vector3f& rgb);
 
-// The colour scale's upper end: the largest error rounded up to 1, 2 or 5 x 10^k, so the
-// scale's labels are round numbers.
-double errorScaleMax(double max_error);
+// The colour scale's upper end: the largest error, but at least `floor`, rounded up to 1, 2 or
+// 5 x 10^k, so the scale's labels are round numbers.
+double errorScaleMax(double max_error, double floor = 0.0);
+
+// The floor of a run's error colour scale: a quarter of the goal tolerance (0.05 m at the
+// default 0.2 m). Errors that small do not decide whether a run reaches its goal; a scale
+// autoscaled below it (0.0005 m in calm air) paints sensor noise as if it were signal.
+double errorScaleFloor(double goal_tolerance);
 
 }  // namespace cosim

@@ -8,6 +8,7 @@
 #include "render/figures.h"
 #include "render/html_report.h"
 #include "render/log_lookup.h"
+#include "render/ordered_frame_workers.h"
 #include "render/progress_bar.h"
 
 namespace cosim {
@@ -36,18 +37,33 @@ int videoFrameCount(double duration, const RenderSettings& settings) {
 
 int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
                    const std::filesystem::path& out, VideoFormat format, bool progress,
-                   const std::atomic<bool>* interrupt) {
+                   const std::atomic<bool>* interrupt, int workers) {
   const int frames = videoFrameCount(renderer.endTime(), settings);
   VideoEncoder video(out, renderer.width(), renderer.height(), settings.fps, format);
   ProgressBar bar("rendering " + out.filename().string(), frames, progress);
   const CameraKind kind = cameraKind(camera);
-  std::vector<std::uint8_t> rgb;
-  for (int k = 0; k < frames; ++k) {
-    if (interrupted(interrupt)) return 0;  // ~VideoEncoder kills ffmpeg, deletes the partial file
-    renderer.render(k * settings.speedup / settings.fps, kind, rgb);
-    video.addFrame(rgb);
-    bar.update(k + 1);
+  const double seconds_per_frame = settings.speedup / settings.fps;
+  if (workers == 0) workers = defaultRenderWorkers();
+  int done = 0;
+  if (workers == 1) {
+    std::vector<std::uint8_t> rgb;
+    for (; done < frames && !interrupted(interrupt); ++done) {
+      renderer.render(done * seconds_per_frame, kind, rgb);
+      video.addFrame(rgb);
+      bar.update(done + 1);
+    }
+  } else {
+    const FrameSequence sequence{kind, frames, seconds_per_frame, renderer.width(),
+                                 renderer.height()};
+    done = renderFramesInOrder(
+        renderer.world(), renderer.scenario(), renderer.log(), sequence, workers,
+        [&](std::vector<std::uint8_t>& rgb) {
+          video.addFrame(rgb);
+          bar.update(video.frames());
+        },
+        interrupt);
   }
+  if (done < frames) return 0;  // interrupted: ~VideoEncoder kills ffmpeg, deletes the file
   video.finish();
   return frames;
 }

@@ -24,12 +24,14 @@ constexpr int kMaxVideoFrames = 1000000;
 int videoFrameCount(double duration, const RenderSettings& settings);
 
 // Renders the whole flight from one camera into `out` (an .mp4 or a PNG folder). Returns the
-// number of frames. progress: a progress bar on stderr (only if it is a terminal).
-// interrupt: polled before every frame; once it is set, ffmpeg is killed, nothing is written
-// (the partial output is deleted) and the result is 0 frames.
+// number of frames. progress: a progress bar with the time left on stderr. interrupt: polled
+// between frames; once it is set, ffmpeg is killed, nothing is written (the partial output is
+// deleted) and the result is 0 frames. workers: threads rendering frames at once, each with a
+// renderer of its own like `renderer` (render/ordered_frame_workers.h); 0: all cores; 1:
+// `renderer` alone, on this thread.
 int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
                    const std::filesystem::path& out, VideoFormat format, bool progress,
-                   const std::atomic<bool>* interrupt = nullptr);
+                   const std::atomic<bool>* interrupt = nullptr, int workers = 0);
 
 // The cameras of a run's videos, in order, without repeats: render.camera, then render.cameras.
 std::vector<std::string> videoCameras(const RenderSettings& settings);

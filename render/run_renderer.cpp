@@ -15,6 +15,14 @@ namespace {
 // few hundred. The trail and the reference are decimated to stay within these budgets.
 constexpr int kTrailSegmentBudget = 250;
 constexpr int kReferenceDashBudget = 60;
+// With many vehicles (a 20-robot team) every vehicle's trail shares this many segments; 250
+// each made 5000 capsules a frame (about 0.4 s in software).
+constexpr int kTeamTrailSegmentBudget = 1500;
+
+int trailBudget(std::size_t vehicles) {
+  return std::max(
+      40, std::min(kTrailSegmentBudget, kTeamTrailSegmentBudget / std::max<int>(1, vehicles)));
+}
 // Lines are about this fraction of the visible height thick at the camera's focus
 // (about 4 px in a 720-line frame).
 constexpr double kLineWidthFraction = 0.0055;
@@ -30,11 +38,16 @@ RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, cons
   const mjModel* m = world.model();
   ctx_ = std::make_unique<OffscreenContext>(m, width, height);
   data_ = mj_makeData(m);
+  std::size_t planned_segments = 0;
+  for (const VehicleLog& v : log.vehicles) {
+    planned_paths_.push_back(polylineCorners(v.planned_path));
+    planned_segments += planned_paths_.back().size();
+  }
   mjv_defaultScene(&scene_);
   mjv_makeScene(m, &scene_,
-                m->ngeom + 64 +
+                m->ngeom + 64 + static_cast<int>(planned_segments) +
                     static_cast<int>(log.vehicles.size()) *
-                        (kTrailSegmentBudget + kReferenceDashBudget + 64));
+                        (trailBudget(log.vehicles.size()) + kReferenceDashBudget + 16));
   mjv_defaultCamera(&camera_);
   mjv_defaultOption(&option_);
   // Each vehicle's error as its metrics measure it; one colour scale per kind of reference, so
@@ -52,7 +65,8 @@ RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, cons
     scale_of_.push_back(k);
     for (double e : errors_.back()) max_error[k] = std::max(max_error[k], e);
   }
-  for (std::size_t k = 0; k < scales_.size(); ++k) scales_[k].top = errorScaleMax(max_error[k]);
+  for (std::size_t k = 0; k < scales_.size(); ++k)
+    scales_[k].top = errorScaleMax(max_error[k], errorScaleFloor(scenario.sim.goal_tolerance));
   for (std::size_t i = 0; i < scenario.world.obstacles.size(); ++i)
     obstacle_geoms_.push_back(mj_name2id(m, mjOBJ_GEOM, ("obstacle" + std::to_string(i)).c_str()));
 }
@@ -101,6 +115,7 @@ void RunRenderer::applyCamera(const CameraPose& pose) {
   camera_.azimuth = pose.azimuth;
   camera_.elevation = pose.elevation;
   camera_.distance = pose.distance;
+  eye_ = pose.eye();
   const double visible_height = 2.0 * pose.distance * std::tan(0.5 * pose.fovy_deg * M_PI / 180.0);
   line_radius_ = 0.5 * kLineWidthFraction * visible_height;
 }
@@ -153,6 +168,31 @@ void RunRenderer::addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
   ++scene_.ngeom;
 }
 
+Eigen::Vector3d RunRenderer::towardEye(const Eigen::Vector3d& p, double widths) const {
+  // Along the sight line the point stays on the same pixel; only its depth changes.
+  const Eigen::Vector3d to_eye = eye_ - p;
+  const double d = to_eye.norm(), shift = widths * line_radius_;
+  return d > 2.0 * shift ? Eigen::Vector3d(p + to_eye * (shift / d)) : p;
+}
+
+void RunRenderer::addHeadingArrow(const LogSample& s, double radius, double width) {
+  if (scene_.ngeom >= scene_.maxgeom) return;
+  // The body's forward (x) axis, level: where a quadrotor's nose or a robot's front points.
+  Eigen::Vector3d forward = s.att.toRotationMatrix().col(0);
+  forward.z() = 0.0;
+  if (forward.norm() < 1e-6) return;
+  forward.normalize();
+  const Eigen::Vector3d from = s.pos + 0.6 * radius * forward;
+  const Eigen::Vector3d to = s.pos + 2.2 * radius * forward;
+  mjvGeom* g = scene_.geoms + scene_.ngeom;
+  const float rgba[4] = {kHeadingColour.x(), kHeadingColour.y(), kHeadingColour.z(), 1.0f};
+  mjv_initGeom(g, mjGEOM_ARROW, nullptr, nullptr, nullptr, rgba);
+  mjv_makeConnector(g, mjGEOM_ARROW, width, from.x(), from.y(), from.z(), to.x(), to.y(), to.z());
+  g->emission = 0.6f;
+  g->category = mjCAT_DECOR;
+  ++scene_.ngeom;
+}
+
 void RunRenderer::addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector3f& rgb,
                             float alpha) {
   if (scene_.ngeom >= scene_.maxgeom) return;
@@ -175,7 +215,9 @@ Eigen::Vector3f RunRenderer::plannedColour(std::size_t vehicle) const {
 }
 
 void RunRenderer::addTrail(std::size_t vehicle, double t) {
-  if (trail_line_radius_ != line_radius_) {
+  // Re-decimated only when the line width changes by a quarter: the chase camera's distance
+  // (and with it the width) changes a little from frame to frame near obstacles.
+  if (!(std::abs(trail_line_radius_ / line_radius_ - 1.0) < 0.25)) {
     // Vertices within a fraction of the line width of the logged positions look smooth; a
     // segment budget bounds the frame cost on long, winding flights.
     trail_vertices_.clear();
@@ -185,7 +227,7 @@ void RunRenderer::addTrail(std::size_t vehicle, double t) {
       o.max_segment = std::max(40.0 * line_radius_, 0.5);
       o.max_error_step = 0.06 * errorScale(a);
       std::vector<std::size_t> kept = decimateTrail(log_.vehicles[a].samples, errors_[a], o);
-      while (kept.size() > static_cast<std::size_t>(kTrailSegmentBudget)) {
+      while (kept.size() > static_cast<std::size_t>(trailBudget(log_.vehicles.size()))) {
         o.tolerance *= 2.0;
         o.max_segment *= 2.0;
         o.max_error_step *= 2.0;
@@ -203,7 +245,7 @@ void RunRenderer::addTrail(std::size_t vehicle, double t) {
   std::size_t from = 0;
   for (std::size_t k = 1; k < kept.size() && from < last; ++k) {
     const std::size_t i = std::min(kept[k], last);  // the trail ends at the vehicle
-    addSegment(v.samples[from].pos, v.samples[i].pos,
+    addSegment(towardEye(v.samples[from].pos, 2.5), towardEye(v.samples[i].pos, 2.5),
                errorColour(0.5 * (err[from] + err[i]) / scale), line_radius_);
     from = i;
   }
@@ -214,8 +256,11 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
   for (std::size_t a = 0; a < log_.vehicles.size(); ++a) {
     const VehicleLog& v = log_.vehicles[a];
     const Eigen::Vector3f planned = plannedColour(a);
-    for (std::size_t i = 1; i < v.planned_path.size(); ++i)
-      addSegment(v.planned_path[i - 1], v.planned_path[i], planned, 0.75 * line_radius_);
+    // The planned path as a wide band; the flown trail and the reference are drawn in front of
+    // it (towardEye), so all three show where they coincide.
+    const std::vector<Eigen::Vector3d>& plan = planned_paths_[a];
+    for (std::size_t i = 1; i < plan.size(); ++i)
+      addSegment(plan[i - 1], plan[i], planned, 2.0 * line_radius_);
     // Start and goal; the goal stands on a thin pole to the floor so its height reads in
     // perspective views.
     const Eigen::Vector3d start = !v.planned_path.empty() ? v.planned_path.front()
@@ -239,19 +284,24 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
       for (std::size_t i = 1; i < v.samples.size(); ++i) {
         if ((v.samples[i].ref_pos - v.samples[from].ref_pos).norm() < dash) continue;
         if (draw)
-          addSegment(v.samples[from].ref_pos, v.samples[i].ref_pos, kReferenceColour,
-                     0.35 * line_radius_);
+          addSegment(towardEye(v.samples[from].ref_pos, 5.0), towardEye(v.samples[i].ref_pos, 5.0),
+                     kReferenceColour, 0.6 * line_radius_);
         draw = !draw;
         from = i;
       }
     }
     addTrail(a, t);
-    // Where the vehicle is, for views where it is a few pixels small (and to tell agents apart).
-    if (camera != CameraKind::Chase || several) {
-      const LogSample& s = v.samples[sampleIndexAt(v, t)];
-      addSphere(s.pos, std::max(1.6 * v.radius, 5.0 * line_radius_),
-                several ? planned : Eigen::Vector3f(1, 1, 1), 0.35f);
-    }
+    // Where the vehicle is, for views where it is a few pixels small (and to tell agents apart),
+    // and where it heads.
+    const LogSample& s = v.samples[sampleIndexAt(v, t)];
+    const double marker = std::max(1.6 * v.radius, 5.0 * line_radius_);
+    if (camera != CameraKind::Chase || several)
+      addSphere(s.pos, marker, several ? planned : Eigen::Vector3f(1, 1, 1), 0.35f);
+    // Close up (chase) a slim arrow beside the airframe; from afar a bold one past the marker.
+    if (camera == CameraKind::Chase)
+      addHeadingArrow(s, 1.2 * v.radius, 0.08 * v.radius);
+    else
+      addHeadingArrow(s, marker, 0.25 * marker);
   }
 }
 
@@ -380,6 +430,10 @@ void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>&
           scene_.lights[i].ambient[k] *= 0.75f;
         }
   }
+  // Shadows only where they show the obstacles' shapes (the fixed views from above). In the
+  // moving chase view the 1024-texel shadow map draws thin lines' shadows as jagged dots, and
+  // the shadow pass costs a second pass over every triangle.
+  scene_.flags[mjRND_SHADOW] = camera == CameraKind::Top || camera == CameraKind::Overview;
   fadeObstacles(pose, camera, t);
   addOverlays(t, camera);
   mjr_render(ctx_->viewport(), &scene_, ctx_->context());

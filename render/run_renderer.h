@@ -41,6 +41,10 @@ class RunRenderer {
   bool project(const Eigen::Vector3d& p, Eigen::Vector2d& pixel) const;
 
   double endTime() const { return end_time_; }
+  // What this renderer draws from, for renderers of the same run on other threads.
+  const WorldModel& world() const { return world_; }
+  const Scenario& scenario() const { return scenario_; }
+  const RunLog& log() const { return log_; }
   // m, the top of the colour scale vehicle's trail is coloured on. Vehicles whose errors are
   // measured against the same kind of reference (log_lookup.h) share a scale; a mixed run has
   // one for the robots and one for the quadrotors, each with its own bar and title.
@@ -61,6 +65,13 @@ class RunRenderer {
   void addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3f& rgb,
                   double radius, float alpha = 1.0f);
   void addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector3f& rgb, float alpha);
+  // p moved toward the camera by `widths` line radii: drawn in front of the lines behind it
+  // (the flown trail in front of the planned band, the reference in front of both) at the
+  // same place on screen.
+  Eigen::Vector3d towardEye(const Eigen::Vector3d& p, double widths) const;
+  // An arrow from the vehicle along its level forward axis, from 0.6 to 2.2 `radius` (m) from
+  // its centre, `width` (m) thick.
+  void addHeadingArrow(const LogSample& s, double radius, double width);
   void annotate(double t);
   // room: the most entries the frame has room for.
   std::vector<LegendEntry> legendEntries(std::size_t room) const;
@@ -81,6 +92,8 @@ class RunRenderer {
   std::vector<ErrorScale> scales_;           // one per kind of reference, in order of vehicles
   std::vector<std::size_t> scale_of_;        // per vehicle, into scales_
   std::vector<int> obstacle_geoms_;          // geom id of each scenario obstacle (-1 if absent)
+  std::vector<std::vector<Eigen::Vector3d>> planned_paths_;  // per vehicle, corners only
+  Eigen::Vector3d eye_ = Eigen::Vector3d::Zero();            // the camera of the current frame
   // Kept trail vertices per vehicle, for the line width they were decimated for (recomputed
   // when the camera changes it).
   std::vector<std::vector<std::size_t>> trail_vertices_;

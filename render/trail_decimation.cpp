@@ -48,4 +48,19 @@ std::vector<std::size_t> decimateTrail(const std::vector<LogSample>& samples,
   return kept;
 }
 
+std::vector<Eigen::Vector3d> polylineCorners(const std::vector<Eigen::Vector3d>& points) {
+  constexpr double kSame = 1e-9;  // m
+  std::vector<Eigen::Vector3d> corners;
+  for (const Eigen::Vector3d& p : points) {
+    if (!corners.empty() && (p - corners.back()).norm() < kSame) continue;
+    // The last corner lies on the line from the one before it to p: it is no corner.
+    if (corners.size() >= 2 &&
+        segmentDistance(corners.back(), corners[corners.size() - 2], p) < kSame &&
+        (corners.back() - corners[corners.size() - 2]).dot(p - corners.back()) > 0)
+      corners.pop_back();
+    corners.push_back(p);
+  }
+  return corners;
+}
+
 }  // namespace cosim

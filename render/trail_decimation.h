@@ -23,4 +23,8 @@ std::vector<std::size_t> decimateTrail(const std::vector<LogSample>& samples,
                                        const std::vector<double>& values,
                                        const TrailDecimation& options);
 
+// The corners of a polyline: runs of points along one straight line (a grid path's cells) become
+// one segment, repeated points go. First and last points stay.
+std::vector<Eigen::Vector3d> polylineCorners(const std::vector<Eigen::Vector3d>& points);
+
 }  // namespace cosim

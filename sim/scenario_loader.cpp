@@ -530,7 +530,7 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
   if (root["render"]) {
     const YAML::Node n = root["render"];
     r.checkKeys(n, "render",
-                {"camera", "cameras", "width", "height", "fps", "speedup", "fixed_camera",
+                {"camera", "cameras", "width", "height", "fps", "speed", "speedup", "fixed_camera",
                  "obstacle_alpha", "png_frames"});
     const auto cameraName = [&](const YAML::Node& c, const std::string& key) {
       const std::string name = r.text(c, key);
@@ -562,7 +562,11 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
     if (wants_fixed && !s.render.has_fixed_camera)
       r.fail(n, "render",
              "camera 'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]}");
-    if (n["speedup"]) s.render.speedup = r.number(n["speedup"], "render.speedup", 0.01, 1000.0);
+    // render.speed: the time-lapse factor; speedup is its older name (speed wins, so
+    // --video-speed and --set render.speed=X apply to files that still say speedup).
+    for (const char* key : {"speedup", "speed"})
+      if (n[key])
+        s.render.speedup = r.number(n[key], std::string("render.") + key, 0.01, 1000.0);
     if (n["obstacle_alpha"])
       s.render.obstacle_alpha = r.number(n["obstacle_alpha"], "render.obstacle_alpha", 0.05, 1.0);
     if (n["png_frames"]) s.render.png_frames = r.boolean(n["png_frames"], "render.png_frames");

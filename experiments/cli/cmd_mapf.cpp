@@ -109,7 +109,7 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
     double time_limit = 60.0;
     bool execute = false, video = false;
     std::string robot = "omni_base";
-    double cell = 0.0, max_time = 300.0;
+    double cell = 0.0, max_time = 300.0, video_speed = 4.0;
     std::uint64_t seed = 1;
     std::vector<std::string> sets, blocks;
   };
@@ -153,6 +153,10 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
                   "--execute: simulated seconds before giving up (default 300)")
       ->check(numberIn(1.0, 86400.0));
   cmd->add_flag("--video", a->video, "--execute: also render DIR/execution/video.mp4");
+  cmd->add_option("--video-speed", a->video_speed,
+                  "--execute --video: time-lapse, simulated seconds per second of video "
+                  "(default 4: robots at half a metre per second)")
+      ->check(numberIn(0.01, 1000.0));
   cmd->callback([a, &ctx] {
     const std::vector<int> counts = parseAgentCounts(a->agents);
     const std::vector<std::string> planners = splitPlannerList(a->planner);
@@ -217,6 +221,7 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
       setup.robot = urdf ? std::filesystem::absolute(a->robot).string() : a->robot;
       setup.cell = a->cell > 0 ? a->cell : (inst.connectivity == 8 ? 0.7 : 0.5);
       setup.max_time_s = a->max_time;
+      setup.video_speed = a->video_speed;
       execution = parseScenario(mapfExecutionScenarioYaml(setup), "--execute");
       double radius = 0.0;
       const WorldModel robots = WorldModel::build(execution);

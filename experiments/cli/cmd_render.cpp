@@ -72,8 +72,9 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
                 "write PNG frames (00001.png, ...) into a folder instead of a video");
   cmd->add_option("--at", a->at, "with --out FILE.png: the frame at this simulated time (s)")
       ->check(numberIn(0.0, 1e9));
-  cmd->add_option("--speedup", a->speedup,
-                  "simulated seconds per video second (default: the scenario's)")
+  cmd->add_option("--video-speed,--speedup", a->speedup,
+                  "time-lapse: simulated seconds per video second (default: the scenario's "
+                  "render.speed)")
       ->check(numberIn(0.01, 1000.0));
   cmd->add_option("--fps", a->fps, "frames per second (default: the scenario's)")
       ->check(wholeNumberIn(1, 240));

@@ -29,6 +29,7 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     std::string scenario, out;
     bool no_video = false, no_images = false, quiet = false;
     long seed = -1;
+    double video_speed = 0.0;
     std::vector<std::string> sets;
   };
   auto a = std::make_shared<Args>();
@@ -42,6 +43,10 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
       ->check(wholeNumberIn(0L, 2147483647L));
   cmd->add_option("--set", a->sets, "override a scenario key, e.g. --set planner.name=astar")
       ->allow_extra_args(false);
+  cmd->add_option("--video-speed", a->video_speed,
+                  "time-lapse: simulated seconds per second of video (same as --set "
+                  "render.speed=X)")
+      ->check(numberIn(0.01, 1000.0));
   cmd->add_flag("--quiet", a->quiet, "no progress lines");
   cmd->callback([a, &ctx] {
     // Interruptible from here on, loading included; and the folder loses an earlier run's
@@ -55,6 +60,7 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     const std::string path = a->scenario.empty() ? defaultScenarioPath() : a->scenario;
     std::vector<std::string> overrides = a->sets;
     if (a->seed >= 0) overrides.push_back("sim.seed=" + std::to_string(a->seed));
+    if (a->video_speed > 0) overrides.push_back("render.speed=" + std::to_string(a->video_speed));
     Scenario scenario = loadCheckedScenario(path, overrides, PlannerUse::Run);
     request.out_dir = prepareOutputDir(a->out, "run");
     request.video = !a->no_video;

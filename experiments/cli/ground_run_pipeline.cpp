@@ -20,6 +20,7 @@
 #include "planning/navigation/d_star_lite.h"
 #include "planning/navigation/robot_navigation_ant.h"
 #include "planning/planner_registry.h"
+#include "render/progress_bar.h"
 #include "render/run_outputs.h"
 #include "sim/flight_metrics.h"
 #include "sim/ground_simulation.h"
@@ -558,6 +559,16 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
         return driver->obstacle(i, t);
       };
     }
+    // Progress in simulated seconds against the plan's makespan (the run ends about then).
+    double planned_end = 0.0;
+    for (const auto& path : plan.paths) planned_end = std::max(planned_end, path.endTime());
+    ProgressBar drive_progress("driving (simulated s)", static_cast<int>(std::ceil(planned_end)),
+                               request.progress);
+    options.before_control = [&drive_progress, navigate = options.before_control](
+                                 double t, const std::vector<PlanarState>& states) {
+      drive_progress.update(static_cast<int>(t));
+      return navigate ? navigate(t, states) : true;
+    };
     if (request.progress)
       std::cerr << "cosim: driving " << pilots.size() << " ground robot(s)"
                 << (quadrotor_ids.empty()

@@ -65,6 +65,7 @@ std::string mapfExecutionScenarioYaml(const MapfExecutionSetup& m) {
   sim["seed"] = m.seed;
   root["sim"] = sim;
   root["render"]["camera"] = "top";
+  if (m.video_speed > 0) root["render"]["speed"] = m.video_speed;
 
   YAML::Emitter out;
   out << root;

@@ -25,6 +25,7 @@ struct MapfExecutionSetup {
   std::string robot = "omni_base";  // a bundled ground model or a URDF path
   double cell = 0.5;                // m
   double max_time_s = 300.0;        // simulated seconds before giving up
+  double video_speed = 0.0;         // render.speed (0: the default)
 };
 
 // The scenario YAML of the execution.

@@ -56,6 +56,28 @@ TEST(CameraRig, TopViewIsNearlyOrthographicAndFitsTheWorld) {
   EXPECT_LT((high_point - low_point).norm(), 6.0);
 }
 
+TEST(CameraRig, ChaseCameraMovesInRatherThanStandInsideAnObstacle) {
+  Scenario s = renderTestScenario();
+  // A block hanging over the straight flight (4 to 10 m up; the vehicle passes under it at
+  // 2 m), where the camera behind and above the vehicle wants to be.
+  Obstacle block;
+  block.type = ObstacleType::Box;
+  block.pos = {7.5, 4, 7};
+  block.size = {3, 6, 6};
+  s.world.obstacles = {block};
+  RunLog log = straightFlightLog(10.0);
+  const CameraRig rig(s, log, 16.0 / 9.0);
+  int would_clip = 0;
+  for (double t = 0.0; t <= 10.0; t += 0.25) {
+    const CameraPose p = rig.pose(CameraKind::Chase, t);
+    EXPECT_GT(block.signedDistance(p.eye()), 0.0) << "t = " << t;
+    CameraPose wanted = p;
+    wanted.distance = 20.0 * log.vehicles[0].radius;  // where it stands in open space
+    would_clip += block.signedDistance(wanted.eye()) < 0.0 ? 1 : 0;
+  }
+  EXPECT_GT(would_clip, 0) << "the block never stood where the camera wanted to be";
+}
+
 TEST(CameraRig, UnknownCameraNameIsRejected) {
   EXPECT_THROW(cameraKind("sideways"), std::invalid_argument);
   EXPECT_EQ(cameraKind("orbit"), CameraKind::Orbit);

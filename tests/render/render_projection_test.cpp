@@ -126,7 +126,7 @@ TEST(RenderProjection, VehiclePixelsAreWhereTheVehicleProjects) {
                       static_cast<std::size_t>(std::lround(px.x()))]);
 }
 
-TEST(RenderProjection, ChaseCameraKeepsTheVehicleAtTheFrameCentre) {
+TEST(RenderProjection, ChaseCameraKeepsTheVehicleAndThePathAheadInView) {
   const Scenario s = scene();
   const WorldModel world = WorldModel::build(s);
   RunLog log;
@@ -134,7 +134,7 @@ TEST(RenderProjection, ChaseCameraKeepsTheVehicleAtTheFrameCentre) {
   v.name = "uav1";
   v.radius = 0.35;
   v.goal = s.vehicles[0].goal();
-  for (int k = 0; k <= 300; ++k) {
+  for (int k = 0; k <= 500; ++k) {
     LogSample sample;
     sample.t = k / 100.0;
     sample.pos = Eigen::Vector3d(3, 3, 2) + sample.t * Eigen::Vector3d(3, 1, 0.2);
@@ -144,15 +144,66 @@ TEST(RenderProjection, ChaseCameraKeepsTheVehicleAtTheFrameCentre) {
   std::vector<std::uint8_t> rgb;
   for (double t : {0.5, 2.0, 3.0}) {
     renderer.render(t, "chase", rgb, false);
-    Eigen::Vector2d px;
-    ASSERT_TRUE(renderer.project(v.samples[static_cast<std::size_t>(t * 100)].pos, px));
-    EXPECT_NEAR(px.x(), 160.0, 1.0) << "t = " << t;
-    EXPECT_NEAR(px.y(), 90.0, 1.0) << "t = " << t;
-    // The camera is behind the vehicle: a point 2 m ahead along its motion is farther up the
-    // screen, not behind the camera.
-    ASSERT_TRUE(renderer.project(v.samples[static_cast<std::size_t>(t * 100)].pos +
-                                     2.0 * Eigen::Vector3d(3, 1, 0).normalized(),
-                                 px));
-    EXPECT_LT(px.y(), 90.0);
+    const Eigen::Vector3d here = v.samples[static_cast<std::size_t>(t * 100)].pos;
+    const Eigen::Vector3d ahead = v.samples[static_cast<std::size_t>((t + 1.5) * 100)].pos;
+    Eigen::Vector2d px, ahead_px;
+    ASSERT_TRUE(renderer.project(here, px));
+    ASSERT_TRUE(renderer.project(ahead, ahead_px));
+    // The camera aims ahead of the vehicle: the vehicle sits centred across, below the middle
+    // but well inside the frame, and where it will be in 1.5 s is in the frame above it (near
+    // this small world's edge the camera tilts down, which shortens the view ahead).
+    EXPECT_NEAR(px.x(), 160.0, 8.0) << "t = " << t;
+    EXPECT_GT(px.y(), 100.0) << "t = " << t;
+    EXPECT_LT(px.y(), 150.0) << "t = " << t;
+    EXPECT_LT(ahead_px.y(), px.y() - 10.0) << "t = " << t;
+    EXPECT_GT(ahead_px.y(), 0.0) << "t = " << t;
+    EXPECT_NEAR(ahead_px.x(), 160.0, 40.0) << "t = " << t;
+  }
+}
+
+namespace {
+// Pixels clearly of the heading arrow's magenta.
+bool isHeadingMagenta(const std::uint8_t* p) {
+  return p[0] > 150 && p[2] > 130 && p[1] < 90;
+}
+}  // namespace
+
+TEST(RenderProjection, HeadingArrowPointsWhereTheVehicleFaces) {
+  const Scenario s = scene();
+  const WorldModel world = WorldModel::build(s);
+  const Eigen::Vector3d A(12, 7, 4.5);
+  for (double yaw_deg : {0.0, 180.0}) {
+    RunLog log;
+    VehicleLog& v = log.vehicles.emplace_back();
+    v.name = "uav1";
+    v.radius = 0.35;
+    v.goal = s.vehicles[0].goal();
+    v.planned_path = {{3, 3, 2}, {17, 5, 2}};
+    LogSample sample;
+    sample.pos = A;
+    sample.att =
+        Eigen::Quaterniond(Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
+    v.samples.push_back(sample);
+    RunRenderer renderer(world, s, log, 640, 360);
+    std::vector<std::uint8_t> rgb;
+    renderer.render(0.0, "top", rgb, false);
+    Eigen::Vector2d centre, east;
+    ASSERT_TRUE(renderer.project(A, centre));
+    ASSERT_TRUE(renderer.project(A + Eigen::Vector3d(1, 0, 0), east));
+    // The magenta pixels' mean lies on the side the vehicle faces (+x is screen right here).
+    double sx = 0.0;
+    int n = 0;
+    for (int y = 0; y < 360; ++y)
+      for (int x = 0; x < 640; ++x)
+        if (isHeadingMagenta(rgb.data() + 3 * (static_cast<std::size_t>(y) * 640 + x))) {
+          sx += x + 0.5;
+          ++n;
+        }
+    ASSERT_GT(n, 10) << "no heading arrow at yaw " << yaw_deg;
+    const double side = (sx / n - centre.x()) / (east.x() - centre.x());
+    if (yaw_deg == 0.0)
+      EXPECT_GT(side, 0.5);
+    else
+      EXPECT_LT(side, -0.5);
   }
 }

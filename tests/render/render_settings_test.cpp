@@ -52,3 +52,11 @@ TEST(RenderSettings, BadRenderKeysAreErrorsNamingTheKey) {
   EXPECT_NE(errorOf("{colour: red}").find("colour"), std::string::npos);
   EXPECT_EQ(errorOf("{camera: orbit, cameras: [top]}"), "");
 }
+
+TEST(RenderSettings, SpeedIsTheTimeLapseFactorAndWinsOverItsOlderNameSpeedup) {
+  EXPECT_DOUBLE_EQ(parseScenario(scenarioWithRender("{speed: 4}"), "r.yaml").render.speedup, 4.0);
+  // --video-speed adds render.speed to a file that may still say speedup.
+  EXPECT_DOUBLE_EQ(
+      parseScenario(scenarioWithRender("{speedup: 2, speed: 8}"), "r.yaml").render.speedup, 8.0);
+  EXPECT_NE(errorOf("{speed: 0}").find("render.speed"), std::string::npos);
+}
