@@ -16,7 +16,7 @@
 namespace cosim {
 
 // The defaults of a team's parameters besides the MAPF planner's own.
-constexpr double kTeamMinSeparation = 1.25;   // planner.min_separation, ellipsoidal distance
+constexpr double kTeamMinSeparation = 1.5;    // planner.min_separation, ellipsoidal distance
 constexpr double kTeamMaxSpeed = 2.0;         // trajectory.max_speed, m/s
 constexpr double kTeamMaxAcceleration = 3.0;  // trajectory.max_acceleration, m/s^2
 

@@ -34,7 +34,7 @@ struct TeamPlanningProblem {
   std::vector<TeamAgent> agents;
   // The ellipsoidal distance the plan keeps between any two agents (1: the ellipsoid's surface);
   // above 1 it is the flight's budget for tracking error. The grid's pitch grows with it.
-  double min_separation = 1.25;
+  double min_separation = 1.5;
   double max_speed = 1.0;         // m/s, for the step duration
   double max_acceleration = 2.0;  // m/s^2, for the step duration
   double time_limit_s = 30.0;     // for the MAPF search
