@@ -42,7 +42,8 @@ Cell snappedCell(const TeamGrid& grid, const Eigen::Vector3d& p, const std::stri
                      "shares its cell of the team's grid with another vehicle's (cells are " +
                          std::to_string(grid.pitch().x()) + " m wide, " +
                          std::to_string(grid.pitch().z()) +
-                         " m high: sqrt(2) separations); move them further apart");
+                         " m high: sqrt(2) x planner.min_separation separation ellipsoids); "
+                         "move them further apart");
   return c;
 }
 
@@ -84,7 +85,7 @@ TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& plan
   for (const auto& a : agents) inflation = std::max(inflation, a.inflation);
   const SeparationEllipsoid e = teamEllipsoid(agents);
   const Eigen::Vector3d pitch = std::sqrt(2.0) * problem.min_separation * kPitchRoundOff *
-                               Eigen::Vector3d(e.radius, e.radius, e.height);
+                                Eigen::Vector3d(e.radius, e.radius, e.height);
   const TeamGrid grid = TeamGrid::over(*problem.world, pitch, inflation);
   const MapfInstance instance = snappedInstance(grid, agents);
   plan.counters["grid_cells"] = static_cast<double>(instance.grid.cellCount());
@@ -97,7 +98,12 @@ TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& plan
   query.time_limit_s = problem.time_limit_s;
   query.seed = problem.seed;
   query.stop = problem.stop;
-  const MapfResult r = planner.solve(query);
+  MapfResult r;
+  try {
+    r = planner.solve(query);
+  } catch (const InputError& e) {  // e.g. a planner for 2D grids only
+    throw InputError("", "planner.name", "'" + planner.name() + "': " + e.problem());
+  }
   for (const auto& [k, v] : r.counters) plan.counters[k] = v;
   plan.counters["mapf_ms"] = r.time_ms;
   const MapfValidation check = validateMapfSolution(instance, r.paths);
