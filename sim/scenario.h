@@ -3,11 +3,13 @@
 // MuJoCo model, the planners' worlds, the controller, rendering) is built from this value.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "planning/grid/occupancy_grid.h"
 #include "planning/param_set.h"
+#include "planning/team/separation_ellipsoid.h"
 #include "planning/world/world.h"
 #include "sim/disturbance_settings.h"
 #include "sim/model_error.h"
@@ -83,6 +85,7 @@ struct AerialSections {
   std::string planner_name;  // empty: fly the given waypoints
   ParamSet planner_params;
   double planner_margin = 0.3;
+  std::optional<SeparationEllipsoid> planner_separation;
   std::string trajectory_mode = "waypoints";
   ParamSet trajectory_params;
   std::string controller_name = "cascade";
@@ -103,6 +106,8 @@ struct Scenario {
   std::string planner_name;
   ParamSet planner_params;      // everything under planner: except name and margin
   double planner_margin = 0.3;  // m, safety margin added to the vehicle radius
+  // planner.separation of a quadrotor team; absent: each model's own (its model file).
+  std::optional<SeparationEllipsoid> planner_separation;
 
   std::string trajectory_mode = "waypoints";  // waypoints | minimum_snap
   ParamSet trajectory_params;                 // max_speed, switch_radius, ...

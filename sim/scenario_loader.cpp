@@ -303,6 +303,17 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
   s.vehicles.push_back(std::move(v));
 }
 
+// planner.separation: {radius: R, height: H}, the ellipsoid a quadrotor team keeps apart.
+SeparationEllipsoid readSeparation(const YamlReader& r, const YAML::Node& n,
+                                   const std::string& prefix) {
+  const std::string key = prefix + "planner.separation";
+  r.requireMap(n, key);
+  r.checkKeys(n, key, {"radius", "height"});
+  if (!n["radius"] || !n["height"]) r.fail(n, key, "needs both 'radius' and 'height' (m)");
+  return {r.number(n["radius"], key + ".radius", 0.001, 100.0),
+          r.number(n["height"], key + ".height", 0.001, 100.0)};
+}
+
 // The planner, trajectory and controller sections under `parent` (the document, or `aerial`),
 // into a Scenario or its AerialSections (the same members); `prefix` names their keys.
 template <class Sections>
@@ -314,7 +325,9 @@ void readMotionSections(const YamlReader& r, const YAML::Node& parent, const std
     if (!p["name"]) r.fail(p, prefix + "planner", "missing 'name' (e.g. theta_star)");
     out.planner_name = r.text(p["name"], prefix + "planner.name");
     if (p["margin"]) out.planner_margin = r.number(p["margin"], prefix + "planner.margin", 0.0, 100.0);
-    readParams(r, p, prefix + "planner", {"name", "margin"}, overrides, out.planner_params);
+    if (p["separation"]) out.planner_separation = readSeparation(r, p["separation"], prefix);
+    readParams(r, p, prefix + "planner", {"name", "margin", "separation"}, overrides,
+               out.planner_params);
   }
 
   if (parent["trajectory"]) {

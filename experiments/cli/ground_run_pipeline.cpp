@@ -11,6 +11,7 @@
 #include "control/ground_velocity_tracker.h"
 #include "experiments/cli/output_files.h"
 #include "experiments/cli/quadrotor_pilots.h"
+#include "experiments/cli/quadrotor_team_planning.h"
 #include "experiments/cli/run_files.h"
 #include "experiments/cli/scenario_planning.h"
 #include "planning/input_error.h"
@@ -39,12 +40,6 @@ constexpr double kSettleTime = 0.2;  // s
 
 bool isNavigatorName(const std::string& name) {
   return name == "rna" || name == "wf_rna" || name == "d_star_lite";
-}
-
-bool isMapfPlannerName(const std::string& name) {
-  for (const auto& e : mapfPlanners())
-    if (e.name == name) return true;
-  return false;
 }
 
 Eigen::Vector2d xy(const Eigen::Vector3d& p) {
@@ -402,6 +397,7 @@ Scenario aerialScenario(const Scenario& s) {
   a.planner_name = s.aerial.planner_name;
   a.planner_params = s.aerial.planner_params;
   a.planner_margin = s.aerial.planner_margin;
+  a.planner_separation = s.aerial.planner_separation;
   a.trajectory_mode = s.aerial.trajectory_mode;
   a.trajectory_params = s.aerial.trajectory_params;
   a.controller_name = s.aerial.controller_name;
@@ -432,14 +428,17 @@ void checkRunPlanners(const Scenario& s) {
     p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);  // read by planVehicle
     makePlanner(name, p, key);
   };
-  if (!isGroundRun(s)) return single(s.planner_name, s.planner_params, "key planner.name");
+  if (!isGroundRun(s))
+    return isMapfPlanner(s.planner_name)
+               ? checkQuadrotorTeamPlanner(s)
+               : single(s.planner_name, s.planner_params, "key planner.name");
   const std::string& name = s.planner_name;
   ParamSet p = s.planner_params;
   if (isNavigatorName(name)) {
     p.getDouble("resolution", 0.5, 0.01, 100.0);
     makeNavigator(name, p);
     p.requireAllUsed("planner '" + name + "' (in cosim run: resolution and sight)");
-  } else if (isMapfPlannerName(name)) {
+  } else if (isMapfPlanner(name)) {
     if (!s.grid_map.present()) p.getDouble("resolution", 0.5, 0.01, 100.0);
     p.getInt("connectivity", 4, 4, 8);
     p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);
@@ -501,7 +500,7 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
         std::make_unique<NavigationDriver>(std::move(navigator), std::move(nav), robots.file,
                                            robots.vehicles[0], resolution / speed, plan.paths[0]);
     plan.success = true;
-  } else if (isMapfPlannerName(name)) {
+  } else if (isMapfPlanner(name)) {
     plan = planTeam(robots, world, speed);
   } else {
     plan = planEach(robots, world, speed);

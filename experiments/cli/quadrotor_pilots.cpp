@@ -5,6 +5,8 @@
 #include <iostream>
 
 #include "control/waypoint_reference.h"
+#include "experiments/cli/quadrotor_team_planning.h"
+#include "planning/mapf/mapf_planner_registry.h"
 #include "planning/trajectory/minimum_snap_trajectory.h"
 #include "sim/controller_factory.h"
 #include "sim/model_error.h"
@@ -40,13 +42,10 @@ void progressLine(bool enabled, const std::string& text) {
   if (enabled) std::cerr << "cosim: " << text << std::endl;
 }
 
-}  // namespace
-
-QuadrotorPilots prepareQuadrotorPilots(Scenario& scenario, const WorldModel& world,
-                                       const std::vector<std::size_t>& vehicles,
-                                       const RunRequest& request) {
-  QuadrotorPilots q;
-  // 1. Plan a path for every quadrotor.
+// Step 1 for quadrotors that plan alone: each its own path.
+void planEachQuadrotor(Scenario& scenario, const WorldModel& world,
+                       const std::vector<std::size_t>& vehicles, const RunRequest& request,
+                       QuadrotorPilots& q) {
   for (std::size_t v : vehicles) {
     progressLine(request.progress,
                  "planning " + scenario.vehicles[v].name + " with " +
@@ -61,30 +60,64 @@ QuadrotorPilots prepareQuadrotorPilots(Scenario& scenario, const WorldModel& wor
   }
   for (const auto& p : q.plans)
     if (!p.success) q.failure = "no path found: " + p.message;
+}
+
+// The reference of quadrotor k: seed 003's waypoint switching or a minimum-snap fit of its path
+// (empty on failure, with q.failure set).
+std::unique_ptr<ReferenceSource> singleReference(const Scenario& scenario, const VehicleSpec& spec,
+                                                 const QuadrotorParams& airframe, std::size_t k,
+                                                 QuadrotorPilots& q) {
+  ParamSet traj = scenario.trajectory_params;
+  if (scenario.trajectory_mode == "waypoints") {
+    const double radius = traj.getDouble("switch_radius", 0.2, 0.01, 100.0);
+    traj.requireAllUsed("trajectory mode 'waypoints'");
+    return std::make_unique<WaypointReference>(q.plans[k].path.waypoints,
+                                               spec.yaw_deg * M_PI / 180.0, radius);
+  }
+  MinimumSnapResult fit = fitMinimumSnap(scenario, spec, airframe, q.plans[k], traj);
+  if (!fit.success) {
+    q.failure = "no feasible trajectory: " + fit.message;
+    return nullptr;
+  }
+  q.plans[k].trajectory_counters = fit.counters;
+  return std::make_unique<TrajectoryReference>(std::move(fit.trajectory),
+                                               spec.yaw_deg * M_PI / 180.0);
+}
+
+}  // namespace
+
+QuadrotorPilots prepareQuadrotorPilots(Scenario& scenario, const WorldModel& world,
+                                       const std::vector<std::size_t>& vehicles,
+                                       const RunRequest& request) {
+  QuadrotorPilots q;
+  // 1. Plan a path for every quadrotor: jointly with a team planner, else each alone.
+  std::vector<PiecewisePolynomialTrajectory> team_trajectories;
+  const bool team = isMapfPlanner(scenario.planner_name);
+  if (team) {
+    progressLine(request.progress, "planning " + std::to_string(vehicles.size()) +
+                                       " quadrotors as a team with " + scenario.planner_name);
+    QuadrotorTeamFlight flight = planQuadrotorTeamFlight(scenario, world, vehicles, request);
+    q.plans = std::move(flight.plans);
+    q.failure = flight.failure;
+    team_trajectories = std::move(flight.trajectories);
+    scenario.trajectory_mode = "minimum_snap";  // what the team flies, whatever the file said
+  } else {
+    planEachQuadrotor(scenario, world, vehicles, request, q);
+  }
   if (!q.failure.empty()) return q;
 
   // 2. Reference and controller per quadrotor.
   for (std::size_t k = 0; k < vehicles.size(); ++k) {
     const std::size_t v = vehicles[k];
     const VehicleSpec& spec = scenario.vehicles[v];
-    const QuadrotorParams& airframe =
-        q.airframes.emplace_back(believedAirframe(world.vehicles()[v].params, scenario.model_error));
-    ParamSet traj = scenario.trajectory_params;
-    if (scenario.trajectory_mode == "waypoints") {
-      const double radius = traj.getDouble("switch_radius", 0.2, 0.01, 100.0);
-      traj.requireAllUsed("trajectory mode 'waypoints'");
-      q.references.push_back(std::make_unique<WaypointReference>(
-          q.plans[k].path.waypoints, spec.yaw_deg * M_PI / 180.0, radius));
-    } else {
-      MinimumSnapResult fit = fitMinimumSnap(scenario, spec, airframe, q.plans[k], traj);
-      if (!fit.success) {
-        q.failure = "no feasible trajectory: " + fit.message;
-        q.pilots.clear();
-        return q;
-      }
-      q.plans[k].trajectory_counters = fit.counters;
-      q.references.push_back(std::make_unique<TrajectoryReference>(std::move(fit.trajectory),
-                                                                   spec.yaw_deg * M_PI / 180.0));
+    const QuadrotorParams& airframe = q.airframes.emplace_back(
+        believedAirframe(world.vehicles()[v].params, scenario.model_error));
+    q.references.push_back(team ? std::make_unique<TrajectoryReference>(
+                                      std::move(team_trajectories[k]), spec.yaw_deg * M_PI / 180.0)
+                                : singleReference(scenario, spec, airframe, k, q));
+    if (!q.references.back()) {
+      q.pilots.clear();
+      return q;
     }
     ParamSet gains = scenario.controller_gains;
     q.controllers.push_back(makeFlightController(scenario.controller_name, gains, airframe,

@@ -97,6 +97,12 @@ const std::vector<MapfPlannerEntry>& mapfPlanners() {
   return entries;
 }
 
+bool isMapfPlanner(const std::string& name) {
+  for (const auto& e : mapfPlanners())
+    if (e.name == name) return true;
+  return false;
+}
+
 std::unique_ptr<MapfPlanner> makeMapfPlanner(const std::string& name, ParamSet& params,
                                              const std::string& place) {
   for (const auto& e : mapfPlanners()) {

@@ -24,6 +24,9 @@ struct MapfPlannerEntry {
 
 const std::vector<MapfPlannerEntry>& mapfPlanners();
 
+// Whether `name` is one of mapfPlanners().
+bool isMapfPlanner(const std::string& name);
+
 // Throws InputError for an unknown name (place names where it came from, e.g. "--planner") or
 // unknown/invalid parameters.
 std::unique_ptr<MapfPlanner> makeMapfPlanner(const std::string& name, ParamSet& params,

@@ -73,51 +73,73 @@ TeamTrajectories smoothTeamPaths(const std::vector<TeamMember>& team, const Worl
     out.trajectories.push_back(build(team[i].points, stops[i], o.step_duration));
   }
 
-  std::vector<Eigen::Vector3d> at(n);
+  // Only what a round rebuilt is checked again: a pair neither of whose trajectories changed was
+  // checked whole in the round before (a pair is skipped at an instant only when both members
+  // are being rebuilt), so its closest approach, kept per pair, still holds.
+  std::vector<char> dirty(n, 1);
+  std::vector<std::vector<Eigen::Vector3d>> at(n);
+  std::vector<double> pair_min(n * n, std::numeric_limits<double>::infinity());
+  std::vector<double> clear_min(n, std::numeric_limits<double>::infinity());
   for (out.repair_rounds = 0; out.repair_rounds <= o.max_repair_rounds; ++out.repair_rounds) {
     double end = 0.0;
     for (const auto& t : out.trajectories) end = std::max(end, t.duration());
-    std::vector<char> changed(n, 0);
-    bool stuck = false;
-    out.min_separation = out.min_clearance = std::numeric_limits<double>::infinity();
     const long instants = static_cast<long>(std::ceil(end / o.check_interval));
+    for (std::size_t i = 0; i < n; ++i)
+      if (at[i].size() != static_cast<std::size_t>(instants + 1)) dirty[i] = 1;
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (dirty[i]) {
+        at[i].resize(instants + 1);
+        for (long s = 0; s <= instants; ++s)
+          at[i][s] = out.trajectories[i].sample(std::min(end, s * o.check_interval)).position;
+        clear_min[i] = std::numeric_limits<double>::infinity();
+      }
+      for (std::size_t j = i + 1; j < n; ++j)
+        if (dirty[i] || dirty[j]) {
+          pairs.emplace_back(i, j);
+          pair_min[i * n + j] = std::numeric_limits<double>::infinity();
+        }
+    }
+    std::vector<char> changed(n, 0);
+    const auto stopNear = [&](std::size_t i, double t) {
+      const int added = stopAround(stops[i], t, o.step_duration);
+      out.stops_added += added;
+      return added > 0;
+    };
     for (long s = 0; s <= instants; ++s) {
       const double t = std::min(end, s * o.check_interval);
-      for (std::size_t i = 0; i < n; ++i) at[i] = out.trajectories[i].sample(t).position;
       for (std::size_t i = 0; i < n; ++i) {
-        const double clear = world.distanceToObstacles(at[i]) - team[i].clearance;
-        out.min_clearance = std::min(out.min_clearance, clear);
-        if (clear < 0.0 && !changed[i]) {
-          const int added = stopAround(stops[i], t, o.step_duration);
-          out.stops_added += added;
-          if (added)
-            changed[i] = 1;
-          else
-            stuck = true;
-        }
-        for (std::size_t j = i + 1; j < n; ++j) {
-          const double d = SeparationEllipsoid::between(team[i].separation, team[j].separation)
-                               .distance(at[i], at[j]);
-          out.min_separation = std::min(out.min_separation, d);
-          if (d >= o.min_separation || (changed[i] && changed[j])) continue;
-          const int a = changed[i] ? 0 : stopAround(stops[i], t, o.step_duration);
-          const int b = changed[j] ? 0 : stopAround(stops[j], t, o.step_duration);
-          out.stops_added += a + b;
-          if (a) changed[i] = 1;
-          if (b) changed[j] = 1;
-          if (!a && !b && !changed[i] && !changed[j]) stuck = true;
-        }
+        if (!dirty[i]) continue;
+        const double clear = world.distanceToObstacles(at[i][s]) - team[i].clearance;
+        clear_min[i] = std::min(clear_min[i], clear);
+        if (clear < 0.0 && !changed[i]) changed[i] = stopNear(i, t);
+      }
+      for (const auto& [i, j] : pairs) {
+        const double d = SeparationEllipsoid::between(team[i].separation, team[j].separation)
+                             .distance(at[i][s], at[j][s]);
+        pair_min[i * n + j] = std::min(pair_min[i * n + j], d);
+        if (d >= o.min_separation || (changed[i] && changed[j])) continue;
+        if (!changed[i]) changed[i] = stopNear(i, t);
+        if (!changed[j]) changed[j] = stopNear(j, t);
       }
     }
+    out.min_separation = out.min_clearance = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) {
+      out.min_clearance = std::min(out.min_clearance, clear_min[i]);
+      for (std::size_t j = i + 1; j < n; ++j)
+        out.min_separation = std::min(out.min_separation, pair_min[i * n + j]);
+    }
     if (std::none_of(changed.begin(), changed.end(), [](char c) { return c; })) {
-      out.success = !stuck;
-      if (stuck)
+      // Nothing more to repair: what is still violated, the grid plan itself violates.
+      out.success = out.min_separation >= o.min_separation && out.min_clearance >= 0.0;
+      if (!out.success)
         out.message = "the grid plan itself comes closer than the separation (minimum " +
                       std::to_string(out.min_separation) + ") or the clearance";
       return out;
     }
     for (std::size_t i = 0; i < n; ++i)
       if (changed[i]) out.trajectories[i] = build(team[i].points, stops[i], o.step_duration);
+    dirty = changed;
   }
   out.message = "the separation could not be kept within " + std::to_string(o.max_repair_rounds) +
                 " repair rounds";

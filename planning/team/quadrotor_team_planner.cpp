@@ -1,0 +1,148 @@
+#include "planning/team/quadrotor_team_planner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+#include <tuple>
+
+#include "planning/input_error.h"
+#include "planning/mapf/solution_validator.h"
+#include "planning/team/team_grid.h"
+
+namespace cosim {
+
+namespace {
+
+// The lock-step plan's closest approach (one agent turning off the cell another is entering) is
+// exactly pitch / sqrt(2): a hair more pitch keeps round-off from making that a violation.
+constexpr double kPitchRoundOff = 1.0 + 1e-6;
+
+double msSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+// The ellipsoid every pair keeps: the largest semi-axes of the team.
+SeparationEllipsoid teamEllipsoid(const std::vector<TeamAgent>& agents) {
+  SeparationEllipsoid e{0.0, 0.0};
+  for (const auto& a : agents) e = SeparationEllipsoid::between(e, a.separation);
+  return e;
+}
+
+Cell snappedCell(const TeamGrid& grid, const Eigen::Vector3d& p, const std::string& place,
+                 std::set<std::tuple<int, int, int>>& taken) {
+  const Cell c = grid.cellOf(p);
+  if (grid.occupancy().blocked(c))
+    throw InputError("", place,
+                     "lies in a blocked cell of the team's grid (too close to an obstacle or the "
+                     "bounds for the vehicle's radius plus planner.margin), or outside it");
+  if (!taken.insert({c.x, c.y, c.z}).second)
+    throw InputError("", place,
+                     "shares its cell of the team's grid with another vehicle's (cells are " +
+                         std::to_string(grid.pitch().x()) + " m wide, " +
+                         std::to_string(grid.pitch().z()) +
+                         " m high: sqrt(2) x planner.min_separation separation ellipsoids); "
+                         "move them further apart");
+  return c;
+}
+
+MapfInstance snappedInstance(const TeamGrid& grid, const std::vector<TeamAgent>& agents) {
+  MapfInstance instance;
+  instance.grid = grid.occupancy();
+  instance.connectivity = instance.grid.is3D() ? 6 : 4;
+  std::set<std::tuple<int, int, int>> starts, goals;
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    const std::string key = "vehicles[" + std::to_string(i) + "]";
+    instance.starts.push_back(snappedCell(grid, agents[i].start, key + ".start", starts));
+    instance.goals.push_back(snappedCell(grid, agents[i].goal, key + ".goal", goals));
+  }
+  return instance;
+}
+
+// start, the start cell's centre, the plan's cells (held until the makespan), goal.
+std::vector<Eigen::Vector3d> stepPoints(const TeamGrid& grid, const TeamAgent& agent,
+                                        const MapfPath& path, int makespan) {
+  std::vector<Eigen::Vector3d> p{agent.start};
+  for (int t = 0; t <= makespan; ++t)
+    p.push_back(grid.centre(path[std::min<std::size_t>(t, path.size() - 1)]));
+  p.push_back(agent.goal);
+  return p;
+}
+
+}  // namespace
+
+double teamStepDuration(const Eigen::Vector3d& pitch, double max_speed, double max_acceleration) {
+  const double longest = pitch.maxCoeff();
+  return std::max(35.0 / 16.0 * longest / max_speed, std::sqrt(7.51 * longest / max_acceleration));
+}
+
+TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& planner) {
+  const auto start = std::chrono::steady_clock::now();
+  TeamPlan plan;
+  const auto& agents = problem.agents;
+  double inflation = 0.0;
+  for (const auto& a : agents) inflation = std::max(inflation, a.inflation);
+  const SeparationEllipsoid e = teamEllipsoid(agents);
+  const Eigen::Vector3d pitch = std::sqrt(2.0) * problem.min_separation * kPitchRoundOff *
+                                Eigen::Vector3d(e.radius, e.radius, e.height);
+  const TeamGrid grid = TeamGrid::over(*problem.world, pitch, inflation);
+  const MapfInstance instance = snappedInstance(grid, agents);
+  plan.counters["grid_cells"] = static_cast<double>(instance.grid.cellCount());
+  plan.counters["blocked_cells"] = static_cast<double>(instance.grid.blockedCount());
+  plan.counters["pitch_xy_m"] = pitch.x();
+  plan.counters["pitch_z_m"] = pitch.z();
+
+  MapfQuery query;
+  query.instance = &instance;
+  query.time_limit_s = problem.time_limit_s;
+  query.seed = problem.seed;
+  query.stop = problem.stop;
+  MapfResult r;
+  try {
+    r = planner.solve(query);
+  } catch (const InputError& e) {  // e.g. a planner for 2D grids only
+    throw InputError("", "planner.name", "'" + planner.name() + "': " + e.problem());
+  }
+  for (const auto& [k, v] : r.counters) plan.counters[k] = v;
+  plan.counters["mapf_ms"] = r.time_ms;
+  const MapfValidation check = validateMapfSolution(instance, r.paths);
+  if (!r.success || !check.problems.empty() || !check.conflicts.empty()) {
+    plan.message =
+        "no team plan on the grid: " +
+        (!r.message.empty()        ? r.message
+         : !check.problems.empty() ? check.problems.front()
+                                   : std::to_string(check.conflicts.size()) + " conflicts");
+    plan.time_ms = msSince(start);
+    return plan;
+  }
+  const int steps = makespan(r.paths);
+  plan.counters["sum_of_costs"] = static_cast<double>(sumOfCosts(r.paths));
+  plan.counters["makespan"] = steps;
+
+  const auto smoothing_start = std::chrono::steady_clock::now();
+  std::vector<TeamMember> team;
+  for (std::size_t i = 0; i < agents.size(); ++i) {
+    plan.points.push_back(stepPoints(grid, agents[i], r.paths[i], steps));
+    team.push_back({plan.points.back(), agents[i].separation, agents[i].clearance});
+  }
+  TeamTrajectoryOptions options;
+  options.step_duration = teamStepDuration(pitch, problem.max_speed, problem.max_acceleration);
+  options.min_separation = problem.min_separation;
+  TeamTrajectories smooth = smoothTeamPaths(team, *problem.world, options);
+  plan.counters["step_duration_s"] = options.step_duration;
+  plan.counters["smoothing_ms"] = msSince(smoothing_start);
+  plan.counters["repair_rounds"] = smooth.repair_rounds;
+  plan.counters["stops_added"] = smooth.stops_added;
+  plan.counters["planned_min_separation"] = smooth.min_separation;
+  plan.time_ms = msSince(start);
+  if (!smooth.success) {
+    plan.message = "no team trajectories: " + smooth.message;
+    return plan;
+  }
+  plan.trajectories = std::move(smooth.trajectories);
+  plan.success = true;
+  return plan;
+}
+
+}  // namespace cosim

@@ -1,0 +1,82 @@
+// `cosim run` with a team of quadrotors and a team planner: planned jointly on a 3D grid from
+// their separation ellipsoids, smoothed, flown with downwash; every vehicle arrives, none enters
+// another's ellipsoid. A separation smaller than the model's is what the metrics catch.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "experiments/cli/run_pipeline.h"
+#include "planning/input_error.h"
+#include "tests/experiments/cli_test_support.h"
+#include "tests/experiments/headless_run.h"
+
+namespace cosim {
+namespace {
+
+// Four cf2 swap the corners of a 5 m x 3 m room: each pair of opposite corners fly the same
+// line in opposite directions, so they must pass each other.
+std::string crossingTeam(const std::string& planner) {
+  return "world:\n  bounds: {min: [0, 0, 0], max: [5, 3, 2.5]}\nvehicles:\n"
+         "  - {name: a0, model: cf2, start: [0.8, 1.0, 1], goal: [4.2, 2.0, 1]}\n"
+         "  - {name: a1, model: cf2, start: [0.8, 2.0, 1], goal: [4.2, 1.0, 1]}\n"
+         "  - {name: b0, model: cf2, start: [4.2, 1.0, 1], goal: [0.8, 2.0, 1]}\n"
+         "  - {name: b1, model: cf2, start: [4.2, 2.0, 1], goal: [0.8, 1.0, 1]}\n"
+         "planner: " +
+         planner +
+         "\ncontroller: {name: geometric}\n"
+         "disturbances: {downwash: true}\n"
+         "sim: {timestep: 0.002, control_rate: 250, max_time: 60}\n";
+}
+
+RunSummary runTeam(const std::string& text, const std::string& name, std::string& metrics) {
+  return test::runWithoutPictures(parseScenario(text, "team_test.yaml"), name, metrics);
+}
+
+TEST(QuadrotorTeamRun, FourCrossingCf2ArriveWithoutEnteringEachOthersDownwashEllipsoid) {
+  std::string metrics;
+  const RunSummary r = runTeam(crossingTeam("{name: lacam, margin: 0.1}"), "team-cf2", metrics);
+  ASSERT_EQ(r.status, 0) << r.message;
+  EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal"));
+  EXPECT_EQ(test::jsonNumber(metrics, "collisions"), 0);
+  EXPECT_EQ(test::jsonNumber(metrics, "uav_contacts"), 0);
+  EXPECT_EQ(test::jsonNumber(metrics, "downwash_violations"), 0);
+  const double closest = test::jsonNumber(metrics, "min_uav_separation_m");
+  EXPECT_GE(closest, 1.0);
+  EXPECT_LT(closest, 2.0);  // they did pass each other
+  EXPECT_GT(test::jsonNumber(metrics, "planning_time_ms"), 0.0);
+  EXPECT_NE(metrics.find("\"trajectory_mode\": \"minimum_snap\""), std::string::npos);
+}
+
+TEST(QuadrotorTeamRun, ASeparationSmallerThanTheModelsIsCaughtByTheMetrics) {
+  // Planned for ellipsoids of 0.1 m x 0.25 m, the pairs pass closer than the cf2's 0.24 x 0.6 m.
+  std::string metrics;
+  const RunSummary r =
+      runTeam(crossingTeam("{name: lacam, margin: 0.1, separation: {radius: 0.1, height: 0.25}}"),
+              "team-cf2-small", metrics);
+  EXPECT_LT(test::jsonNumber(metrics, "min_uav_separation_m"), 1.0) << r.message;
+  EXPECT_GT(test::jsonNumber(metrics, "downwash_violations"), 0);
+}
+
+TEST(QuadrotorTeamRun, TwoVehiclesInOneCellOfTheTeamsGridAreBadInputNamingTheVehicle) {
+  std::string text = crossingTeam("{name: lacam, margin: 0.1}");
+  const std::string a1_start = "start: [0.8, 2.0, 1]";
+  text.replace(text.find(a1_start), a1_start.size(), "start: [0.9, 1.1, 1]");  // a0's cell
+  std::string metrics;
+  try {
+    runTeam(text, "team-shared-cell", metrics);
+    ADD_FAILURE() << "accepted two vehicles in one cell";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "team_test.yaml");
+    EXPECT_EQ(e.place(), "vehicles[1].start");
+  }
+  // planner.separation is checked like any key.
+  EXPECT_THROW(parseScenario(crossingTeam("{name: lacam, separation: {radius: 0.1}}"), "t.yaml"),
+               InputError);
+  EXPECT_THROW(
+      parseScenario(crossingTeam("{name: lacam, separation: {radius: 0.1, height: 1, r: 2}}"),
+                    "t.yaml"),
+      InputError);
+}
+
+}  // namespace
+}  // namespace cosim
