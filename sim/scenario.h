@@ -89,6 +89,7 @@ struct AerialSections {
   std::string trajectory_mode = "waypoints";
   ParamSet trajectory_params;
   std::string controller_name = "cascade";
+  bool controller_given = false;  // a controller section was written
   bool controller_drag_compensation = false;
   ParamSet controller_gains;
 };
@@ -113,6 +114,8 @@ struct Scenario {
   ParamSet trajectory_params;                 // max_speed, switch_radius, ...
 
   std::string controller_name = "cascade";  // cascade | geometric | indi | dsl_pid
+  // A controller section was written; without one a quadrotor team flies indi (run_pipeline.cpp).
+  bool controller_given = false;
   // controller.drag_compensation: rotor drag in the flatness feed-forward (geometric, indi).
   bool controller_drag_compensation = false;
   ParamSet controller_gains;

@@ -344,6 +344,7 @@ void readMotionSections(const YamlReader& r, const YAML::Node& parent, const std
   if (parent["controller"]) {
     const YAML::Node c = parent["controller"];
     r.checkKeys(c, prefix + "controller", {"name", "gains", "drag_compensation"});
+    out.controller_given = true;
     if (c["name"]) out.controller_name = r.text(c["name"], prefix + "controller.name");
     const std::string& name = out.controller_name;
     if (name != "cascade" && name != "geometric" && name != "indi" && name != "dsl_pid")

@@ -15,15 +15,15 @@ namespace {
 
 // Four cf2 swap the corners of a 5 m x 3 m room: each pair of opposite corners fly the same
 // line in opposite directions, so they must pass each other.
-std::string crossingTeam(const std::string& planner) {
+std::string crossingTeam(const std::string& planner,
+                         const std::string& controller = "controller: {name: geometric}\n") {
   return "world:\n  bounds: {min: [0, 0, 0], max: [5, 3, 2.5]}\nvehicles:\n"
          "  - {name: a0, model: cf2, start: [0.8, 1.0, 1], goal: [4.2, 2.0, 1]}\n"
          "  - {name: a1, model: cf2, start: [0.8, 2.0, 1], goal: [4.2, 1.0, 1]}\n"
          "  - {name: b0, model: cf2, start: [4.2, 1.0, 1], goal: [0.8, 2.0, 1]}\n"
          "  - {name: b1, model: cf2, start: [4.2, 2.0, 1], goal: [0.8, 1.0, 1]}\n"
          "planner: " +
-         planner +
-         "\ncontroller: {name: geometric}\n"
+         planner + "\n" + controller +
          "disturbances: {downwash: true}\n"
          "sim: {timestep: 0.002, control_rate: 250, max_time: 60}\n";
 }
@@ -55,6 +55,17 @@ TEST(QuadrotorTeamRun, ASeparationSmallerThanTheModelsIsCaughtByTheMetrics) {
               "team-cf2-small", metrics);
   EXPECT_LT(test::jsonNumber(metrics, "min_uav_separation_m"), 1.0) << r.message;
   EXPECT_GT(test::jsonNumber(metrics, "downwash_violations"), 0);
+}
+
+TEST(QuadrotorTeamRun, WithoutAControllerSectionATeamFliesIndiAndAWrittenOneIsKept) {
+  std::string metrics;
+  RunSummary r = runTeam(crossingTeam("{name: lacam, margin: 0.1}", ""), "team-default", metrics);
+  ASSERT_EQ(r.status, 0) << r.message;
+  EXPECT_NE(metrics.find("\"controller\": \"indi\""), std::string::npos);
+  EXPECT_EQ(test::jsonNumber(metrics, "downwash_violations"), 0);
+  r = runTeam(crossingTeam("{name: lacam, margin: 0.1}", "controller: {name: cascade}\n"),
+              "team-cascade", metrics);
+  EXPECT_NE(metrics.find("\"controller\": \"cascade\""), std::string::npos) << r.message;
 }
 
 TEST(QuadrotorTeamRun, TwoVehiclesInOneCellOfTheTeamsGridAreBadInputNamingTheVehicle) {
