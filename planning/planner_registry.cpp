@@ -4,9 +4,9 @@
 
 #include "planning/grid/grid_planners.h"
 #include "planning/grid/grid_world_planner.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/mapf/mapf_planner_registry.h"
-#include "planning/name_suggestion.h"
+#include "core/name_suggestion.h"
 #include "planning/sampling/sampling_planners.h"
 #include "planning/swarm/planners_000.h"
 #include "planning/swarm/planners_002.h"

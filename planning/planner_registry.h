@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "planning/grid/grid_planner.h"
-#include "planning/param_set.h"
+#include "core/param_set.h"
 #include "planning/planner.h"
 
 namespace cosim {

@@ -8,7 +8,7 @@
 #include <map>
 #include <sstream>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "render/csv_table.h"
 #include "render/gnuplot.h"
 #include "render/log_lookup.h"

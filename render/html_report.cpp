@@ -8,7 +8,7 @@
 
 #include "render/json_flatten.h"
 #include "render/metric_groups.h"
-#include "sim/temporary_name.h"
+#include "core/temporary_name.h"
 
 namespace cosim {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "render/figures.h"
 #include "render/html_report.h"
 #include "render/log_lookup.h"

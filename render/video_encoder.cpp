@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "sim/temporary_name.h"
+#include "core/temporary_name.h"
 
 namespace cosim {
 

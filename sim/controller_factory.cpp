@@ -4,7 +4,7 @@
 #include "control/dsl_pid_controller.h"
 #include "control/geometric_controller.h"
 #include "control/indi_controller.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

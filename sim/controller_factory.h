@@ -7,7 +7,7 @@
 
 #include "control/flight_controller.h"
 #include "control/quadrotor_params.h"
-#include "planning/param_set.h"
+#include "core/param_set.h"
 
 namespace cosim {
 

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

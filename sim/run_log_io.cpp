@@ -8,9 +8,9 @@
 #include <map>
 #include <sstream>
 
-#include "planning/input_error.h"
-#include "planning/input_file.h"
-#include "sim/csv_text.h"
+#include "core/input_error.h"
+#include "core/input_file.h"
+#include "core/csv_text.h"
 
 namespace cosim {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "planning/grid/occupancy_grid.h"
-#include "planning/param_set.h"
+#include "core/param_set.h"
 #include "planning/team/separation_ellipsoid.h"
 #include "planning/world/world.h"
 #include "sim/disturbance_settings.h"

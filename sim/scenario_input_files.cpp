@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/scenario.h"
 #include "sim/urdf_vehicle.h"
 #include "sim/world_fragment.h"

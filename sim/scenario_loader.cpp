@@ -4,8 +4,8 @@
 #include <sstream>
 
 #include "planning/grid/movingai.h"
-#include "planning/input_error.h"
-#include "planning/input_file.h"
+#include "core/input_error.h"
+#include "core/input_file.h"
 #include "planning/worlds/grid_map_world.h"
 #include "sim/scenario.h"
 #include "sim/scenario_sensing.h"

@@ -11,8 +11,8 @@
 #include <map>
 #include <sstream>
 
-#include "planning/input_error.h"
-#include "planning/input_file.h"
+#include "core/input_error.h"
+#include "core/input_file.h"
 
 namespace cosim {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "planning/input_error.h"
-#include "planning/input_file.h"
+#include "core/input_error.h"
+#include "core/input_file.h"
 
 namespace cosim {
 

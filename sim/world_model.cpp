@@ -7,8 +7,8 @@
 #include <sstream>
 #include <utility>
 
-#include "planning/input_error.h"
-#include "planning/input_file.h"
+#include "core/input_error.h"
+#include "core/input_file.h"
 #include "sim/ground_vehicle_handles.h"
 #include "sim/moving_obstacle_motion.h"
 #include "sim/mujoco_messages.h"

@@ -6,7 +6,7 @@
 #include <sstream>
 #include <vector>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "planning/input_error.h"
-#include "planning/name_suggestion.h"
+#include "core/input_error.h"
+#include "core/name_suggestion.h"
 #include "sim/yaml_document.h"
 
 namespace cosim {

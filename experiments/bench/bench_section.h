@@ -1,7 +1,7 @@
 #pragma once
 // `cosim bench` is a list of sections; each measures two things in the same run (ours against a
 // peer or the bare engine) and reports figures. A section lives in its own file here and is
-// listed once in experiments/cli/cmd_bench.cpp.
+// listed once in cli/cmd_bench.cpp.
 #include <string>
 #include <vector>
 

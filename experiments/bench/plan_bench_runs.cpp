@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "experiments/reproduce/report_files.h"
-#include "sim/csv_text.h"
+#include "core/csv_text.h"
 
 namespace cosim {
 

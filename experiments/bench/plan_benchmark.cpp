@@ -7,12 +7,12 @@
 
 #include "experiments/bench/ompl/ompl_planner_runs.h"
 #include "experiments/bench/plan_bench_files.h"
-#include "experiments/cli/output_files.h"
-#include "experiments/cli/scenario_planning.h"
-#include "planning/input_error.h"
-#include "planning/name_suggestion.h"
+#include "core/output_files.h"
+#include "run/scenario_planning.h"
+#include "core/input_error.h"
+#include "core/name_suggestion.h"
 #include "planning/planner_registry.h"
-#include "planning/stop_request.h"
+#include "core/stop_request.h"
 #include "sim/world_model.h"
 
 namespace cosim {

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "experiments/cli/run_pipeline.h"
+#include "run/run_pipeline.h"
 #include "sim/aerodynamics.h"
 #include "sim/world_model.h"
 

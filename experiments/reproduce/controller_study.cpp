@@ -13,14 +13,14 @@
 #include <sstream>
 
 #include "control/figure_eight_reference.h"
-#include "experiments/cli/output_files.h"
+#include "core/output_files.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "render/figures.h"
 #include "sim/controller_factory.h"
 #include "sim/flight_metrics.h"
 #include "sim/flight_simulation.h"
-#include "sim/json_writer.h"
+#include "core/json_writer.h"
 #include "sim/model_error.h"
 #include "sim/sensors/sensor_presets.h"
 #include "sim/world_model.h"

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "experiments/cli/output_files.h"
+#include "core/output_files.h"
 
 namespace cosim::reproduce {
 

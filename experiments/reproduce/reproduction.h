@@ -2,12 +2,12 @@
 // `cosim reproduce NAME` runs one of the seed documents' experiments and writes a markdown table
 // that sets the seed's published numbers beside ours (NAME.md), and the same cells as data
 // (NAME.json, CONTRACT.md "Reproductions"). Each reproduction lives in its own file here and is
-// listed once in experiments/cli/cmd_reproduce.cpp; report_files.h writes both files.
+// listed once in cli/cmd_reproduce.cpp; report_files.h writes both files.
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "sim/json_writer.h"
+#include "core/json_writer.h"
 
 namespace cosim::reproduce {
 

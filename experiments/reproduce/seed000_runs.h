@@ -8,7 +8,7 @@
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/seed000_scenes.h"
 #include "planning/grid/grid_planner.h"
-#include "sim/json_writer.h"
+#include "core/json_writer.h"
 
 namespace cosim::reproduce {
 

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/cli/output_files.h"
+#include "core/output_files.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/run_spread.h"

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "experiments/cli/output_files.h"
+#include "core/output_files.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/seed002_maklink_map.h"
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/swarm/acs_maklink.h"
 #include "planning/swarm/maklink_graph.h"
 
@@ -48,7 +48,7 @@ struct GaRun {
 GaRun realCodedGa(const Seed002MaklinkMap& map, const std::vector<int>& lines, std::uint64_t seed,
                   int generations) {
   const MaklinkGraph& g = map.graph;
-  const Deadline clock(60.0);
+  const StopToken clock(60.0);
   const int d = static_cast<int>(lines.size());
   const int population = 50;
   const double pc = 0.6, pm = 0.05;
@@ -139,7 +139,7 @@ Report seed002Maklink(const Options& options) {
       AcsMaklinkParams p;
       p.levels = v == 0 ? 11 : 21;
       const AcsMaklinkResult res =
-          optimiseMaklinkRoute(graph, map.start, map.goal, p, options.seed + r, Deadline(60.0));
+          optimiseMaklinkRoute(graph, map.start, map.goal, p, options.seed + r, StopToken(60.0));
       if (r == 0 && v == 0) first = res;
       if (!res.success) continue;
       Summary& s = acs[v];

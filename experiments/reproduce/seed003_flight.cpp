@@ -13,7 +13,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "experiments/cli/run_pipeline.h"
+#include "run/run_pipeline.h"
 #include "experiments/reproduce/reproduction.h"
 
 namespace cosim::reproduce {

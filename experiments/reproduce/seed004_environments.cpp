@@ -2,7 +2,7 @@
 
 #include <random>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/mapf/maze_generator.h"
 
 namespace cosim {

@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <sstream>
 
-#include "experiments/cli/run_pipeline.h"
+#include "run/run_pipeline.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim::reproduce {
 

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/worlds/generators/city_generator.h"
 #include "planning/worlds/generators/forest_generator.h"
 #include "planning/worlds/generators/maze_world_generator.h"

@@ -4,8 +4,8 @@
 #include <sys/wait.h>
 #include <yaml-cpp/yaml.h>
 
-#include "experiments/cli/output_files.h"
-#include "sim/json_writer.h"
+#include "core/output_files.h"
+#include "core/json_writer.h"
 
 namespace cosim {
 

@@ -6,12 +6,12 @@
 #include <map>
 #include <sstream>
 
-#include "experiments/cli/ground_run_pipeline.h"
-#include "experiments/cli/output_files.h"
+#include "run/ground_run_pipeline.h"
+#include "core/output_files.h"
 #include "experiments/sweep/generated_scenario.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/planner_registry.h"
-#include "planning/stop_request.h"
+#include "core/stop_request.h"
 #include "sim/scenario.h"
 #include "sim/scenario_input_files.h"
 

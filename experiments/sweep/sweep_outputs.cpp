@@ -1,9 +1,9 @@
 #include "experiments/sweep/sweep_outputs.h"
 
-#include "experiments/cli/output_files.h"
+#include "core/output_files.h"
 #include "experiments/sweep/sweep_results_table.h"
 #include "experiments/sweep/sweep_summary.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "render/figures.h"
 
 namespace cosim {

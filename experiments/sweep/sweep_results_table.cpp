@@ -5,10 +5,10 @@
 #include <map>
 #include <set>
 
-#include "experiments/cli/output_files.h"
+#include "core/output_files.h"
 #include "experiments/sweep/job_result.h"
 #include "experiments/sweep/sweep_runner.h"
-#include "sim/json_writer.h"
+#include "core/json_writer.h"
 
 namespace cosim {
 

@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

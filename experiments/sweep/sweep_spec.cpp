@@ -5,8 +5,8 @@
 #include <set>
 #include <sstream>
 
-#include "planning/input_error.h"
-#include "planning/input_file.h"
+#include "core/input_error.h"
+#include "core/input_file.h"
 #include "sim/yaml_document.h"
 #include "sim/yaml_reader.h"
 

@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <map>
 
-#include "experiments/cli/output_files.h"
+#include "core/output_files.h"
 
 namespace cosim {
 

@@ -5,7 +5,7 @@
 namespace cosim {
 
 GridPlanResult AStar::solveGrid(const GridQuery& query) {
-  const Deadline clock(query.time_limit_s);
+  const StopToken clock(query.time_limit_s);
   if (GridPlanResult rejected; gridQueryRejected(query, rejected)) return rejected;
   const GridMoves moves = resolveGridMoves(options_.moves, query.grid->is3D(), params_file_);
   const GridSearchSpace space(*query.grid, moves, query.segments);

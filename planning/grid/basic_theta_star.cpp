@@ -5,7 +5,7 @@
 namespace cosim {
 
 GridPlanResult BasicThetaStar::solveGrid(const GridQuery& query) {
-  const Deadline clock(query.time_limit_s);
+  const StopToken clock(query.time_limit_s);
   if (GridPlanResult rejected; gridQueryRejected(query, rejected)) return rejected;
   const GridSearchSpace space(
       *query.grid, resolveGridMoves(moves_, query.grid->is3D(), params_file_), query.segments);

@@ -6,7 +6,7 @@
 // how a neighbour's cost and parent are computed (ComputeCost).
 #include <cstdint>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/grid/grid_distance.h"
 #include "planning/grid/grid_open_list.h"
 #include "planning/grid/grid_search_outcome.h"
@@ -31,7 +31,7 @@ struct AnyAngleCandidate {
 template <class OnPop, class ComputeCost>
 GridPlanResult anyAngleSearch(const GridQuery& query, const GridSearchSpace& space,
                               AnyAngleWorkspace& w, GridNodeTable<double>::State start_state,
-                              const Deadline& clock, GridSearchCounters& counters, OnPop&& on_pop,
+                              const StopToken& clock, GridSearchCounters& counters, OnPop&& on_pop,
                               ComputeCost&& compute_cost) {
   using State = GridNodeTable<double>::State;
   auto& nodes = w.nodes;

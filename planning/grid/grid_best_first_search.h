@@ -9,7 +9,7 @@
 // and OPEN is a radix heap; a weighted heuristic breaks that, and OPEN is a binary heap.
 #include <cstdint>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/grid/grid_open_list.h"
 #include "planning/grid/grid_radix_heap.h"
 #include "planning/grid/grid_search_outcome.h"
@@ -28,7 +28,7 @@ struct BestFirstWorkspace {
 template <class Heuristic>
 GridSearchEnd bestFirstSearch(const GridSearchSpace& space, BestFirstWorkspace& w,
                               std::uint32_t start, std::uint32_t goal, Heuristic&& h,
-                              bool consistent, const Deadline& deadline,
+                              bool consistent, const StopToken& deadline,
                               GridSearchCounters& counters) {
   using State = GridNodeTable<FixedCost>::State;
   auto& nodes = w.nodes;

@@ -4,7 +4,7 @@
 // 2D, 6/18/26 in 3D), corner_cutting (false: a diagonal move needs the cells it sweeps past
 // free, as in seed 004 and the MovingAI benchmarks). astar also takes heuristic_weight (1).
 #include "planning/grid/grid_planner.h"
-#include "planning/param_set.h"
+#include "core/param_set.h"
 
 namespace cosim {
 

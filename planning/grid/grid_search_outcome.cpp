@@ -29,7 +29,7 @@ bool gridQueryRejected(const GridQuery& query, GridPlanResult& result) {
 
 GridPlanResult gridSearchResult(const GridSearchSpace& space,
                                 const std::vector<std::uint32_t>& goal_to_start, GridSearchEnd end,
-                                const GridSearchCounters& counters, const Deadline& clock,
+                                const GridSearchCounters& counters, const StopToken& clock,
                                 bool any_angle) {
   GridPlanResult r;
   r.counters["expansions"] = counters.expansions;

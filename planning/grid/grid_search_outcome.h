@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/grid/grid_node_table.h"
 #include "planning/grid/grid_search_space.h"
 
@@ -29,7 +29,7 @@ enum class GridSearchEnd { Found, Exhausted, TimeLimit };
 // "time limit".
 GridPlanResult gridSearchResult(const GridSearchSpace& space,
                                 const std::vector<std::uint32_t>& goal_to_start, GridSearchEnd end,
-                                const GridSearchCounters& counters, const Deadline& clock,
+                                const GridSearchCounters& counters, const StopToken& clock,
                                 bool any_angle);
 
 // The same, following parent links from the goal: on Found, the cells from start to goal along
@@ -38,7 +38,7 @@ GridPlanResult gridSearchResult(const GridSearchSpace& space,
 template <class Cost>
 GridPlanResult gridSearchResult(const GridSearchSpace& space, const GridNodeTable<Cost>& nodes,
                                 std::uint32_t start, std::uint32_t goal, GridSearchEnd end,
-                                const GridSearchCounters& counters, const Deadline& clock,
+                                const GridSearchCounters& counters, const StopToken& clock,
                                 bool any_angle) {
   std::vector<std::uint32_t> chain;
   if (end == GridSearchEnd::Found)

@@ -3,7 +3,7 @@
 #include <cstdlib>
 
 #include "planning/grid/grid_line_of_sight.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

@@ -3,10 +3,10 @@
 #include <memory>
 #include <tuple>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/grid/grid_passage_diagnosis.h"
 #include "planning/grid/grid_segment_checker.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 
@@ -25,7 +25,7 @@ const char* blockingName(OccupancyGrid::Blocking b) {
 }  // namespace
 
 PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
-  const Deadline clock(problem.time_limit_s);
+  const StopToken clock(problem.time_limit_s);
   const double plane_z = problem.start.z();
   const OccupancyGrid grid = OccupancyGrid::fromWorld(
       *problem.world, resolution_, problem.inflation, problem.planar, plane_z, blocking_);

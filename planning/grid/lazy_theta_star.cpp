@@ -8,7 +8,7 @@ namespace cosim {
 
 GridPlanResult LazyThetaStar::solveGrid(const GridQuery& query) {
   using State = GridNodeTable<double>::State;
-  const Deadline clock(query.time_limit_s);
+  const StopToken clock(query.time_limit_s);
   if (GridPlanResult rejected; gridQueryRejected(query, rejected)) return rejected;
   const GridSearchSpace space(
       *query.grid, resolveGridMoves(moves_, query.grid->is3D(), params_file_), query.segments);

@@ -232,7 +232,7 @@ std::vector<int> mddSingletons(const MapfGrid& grid, int start, int goal, int co
 }  // namespace
 
 MapfResult ConflictBasedSearch::solve(const MapfQuery& query) {
-  const Deadline deadline(query.time_limit_s, query.stop);
+  const StopToken deadline(query.time_limit_s, query.stop);
   const MapfInstance& inst = *query.instance;
   const MapfGrid grid(inst.grid, inst.connectivity);
   const int n = inst.agentCount();

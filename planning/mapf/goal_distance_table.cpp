@@ -101,7 +101,7 @@ std::size_t GoalDistanceTable::bytes() const {
 }
 
 std::string checkGoalsReachable(const GoalDistanceTable& distance, std::span<const int> starts,
-                                const Deadline& deadline) {
+                                const StopToken& deadline) {
   // The agents' searches share nothing, so they run on all cores: each worker takes every
   // k-th agent. The answer does not depend on the split: the lowest unreachable agent is named.
   const std::size_t n = starts.size();

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/mapf/mapf_graph.h"
 
 namespace cosim {
@@ -63,6 +63,6 @@ class GoalDistanceTable {
 // goals can be reached, else why not ("goal of agent 3 is unreachable", or "time limit reached"
 // / "stopped" when the deadline ends it first).
 std::string checkGoalsReachable(const GoalDistanceTable& distance, std::span<const int> starts,
-                                const Deadline& deadline);
+                                const StopToken& deadline);
 
 }  // namespace cosim

@@ -1,6 +1,6 @@
 #include "planning/mapf/graph_instance.h"
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

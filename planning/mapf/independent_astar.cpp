@@ -7,7 +7,7 @@
 namespace cosim {
 
 MapfResult IndependentAStar::solve(const MapfQuery& query) {
-  const Deadline deadline(query.time_limit_s, query.stop);
+  const StopToken deadline(query.time_limit_s, query.stop);
   const MapfInstance& inst = *query.instance;
   const MapfGrid grid(inst.grid, inst.connectivity);
   MapfResult result;

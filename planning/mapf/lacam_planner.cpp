@@ -5,7 +5,7 @@
 namespace cosim {
 
 MapfResult LacamPlanner::solve(const MapfQuery& query) {
-  const Deadline deadline(query.time_limit_s, query.stop);
+  const StopToken deadline(query.time_limit_s, query.stop);
   const GraphInstance g = graphInstance(*query.instance);
   const int n = query.instance->agentCount();
   const LacamOutcome out = searchLacam(g.graph, g.starts, g.goals, options_, deadline, query.seed);

@@ -29,7 +29,7 @@ struct HighLevelNode {
 class LacamSearch {
  public:
   LacamSearch(const MapfGraph& graph, std::span<const int> starts, std::span<const int> goals,
-              const LacamOptions& options, const Deadline& deadline, std::uint64_t seed,
+              const LacamOptions& options, const StopToken& deadline, std::uint64_t seed,
               const GoalDistanceTable& distance)
       : graph_(graph),
         starts_(starts),
@@ -72,7 +72,7 @@ class LacamSearch {
   std::span<const int> starts_, goals_;
   int n_;
   LacamOptions options_;
-  const Deadline& deadline_;
+  const StopToken& deadline_;
   const GoalDistanceTable& distance_;
   SplitMix64 rng_;
   PibtStep pibt_;
@@ -312,7 +312,7 @@ LacamOutcome LacamSearch::run() {
 
 LacamOutcome searchLacam(const MapfGraph& graph, std::span<const int> starts,
                          std::span<const int> goals, const LacamOptions& options,
-                         const Deadline& deadline, std::uint64_t seed) {
+                         const StopToken& deadline, std::uint64_t seed) {
   const GoalDistanceTable distance(graph, goals);
   const std::string unreachable = checkGoalsReachable(distance, starts, deadline);
   if (!unreachable.empty()) {

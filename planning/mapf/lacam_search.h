@@ -29,7 +29,7 @@
 #include <string>
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/mapf/mapf_graph.h"
 
 namespace cosim {
@@ -74,6 +74,6 @@ struct LacamOutcome {
 
 LacamOutcome searchLacam(const MapfGraph& graph, std::span<const int> starts,
                          std::span<const int> goals, const LacamOptions& options,
-                         const Deadline& deadline, std::uint64_t seed);
+                         const StopToken& deadline, std::uint64_t seed);
 
 }  // namespace cosim

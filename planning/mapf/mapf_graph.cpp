@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "planning/grid/grid_planner.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

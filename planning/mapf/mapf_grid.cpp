@@ -4,7 +4,7 @@
 #include <cstdlib>
 
 #include "planning/grid/grid_planner.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

@@ -1,6 +1,6 @@
 #include "planning/mapf/mapf_planner_registry.h"
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/mapf/conflict_based_search.h"
 #include "planning/mapf/cooperative_astar.h"
 #include "planning/mapf/independent_astar.h"
@@ -9,7 +9,7 @@
 #include "planning/mapf/pibt_planner.h"
 #include "planning/mapf/potential_field.h"
 #include "planning/mapf/windowed_hca_star.h"
-#include "planning/name_suggestion.h"
+#include "core/name_suggestion.h"
 
 namespace cosim {
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "planning/mapf/mapf_planner.h"
-#include "planning/param_set.h"
+#include "core/param_set.h"
 
 namespace cosim {
 

@@ -5,7 +5,7 @@
 #include <tuple>
 #include <utility>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

@@ -4,7 +4,7 @@
 #include <random>
 #include <vector>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

@@ -11,7 +11,7 @@
 namespace cosim {
 
 MapfResult PibtPlanner::solve(const MapfQuery& query) {
-  const Deadline deadline(query.time_limit_s, query.stop);
+  const StopToken deadline(query.time_limit_s, query.stop);
   const GraphInstance g = graphInstance(*query.instance);
   const int n = query.instance->agentCount();
   const int max_steps =

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <utility>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/mapf/mapf_grid.h"
 #include "planning/mapf/step_arbiter.h"
 
@@ -40,7 +40,7 @@ std::vector<double> obstaclePotential(const OccupancyGrid& grid, double radius) 
 }  // namespace
 
 MapfResult PotentialField::solve(const MapfQuery& query) {
-  const Deadline deadline(query.time_limit_s, query.stop);
+  const StopToken deadline(query.time_limit_s, query.stop);
   const MapfInstance& inst = *query.instance;
   const MapfGrid grid(inst.grid, inst.connectivity);
   const int n = inst.agentCount();

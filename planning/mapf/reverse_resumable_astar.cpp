@@ -3,7 +3,7 @@
 namespace cosim {
 
 ReverseResumableAStar::ReverseResumableAStar(const MapfGrid& grid, int goal, int start,
-                                             const Deadline* deadline)
+                                             const StopToken* deadline)
     : grid_(&grid),
       deadline_(deadline),
       goal_(goal),

@@ -9,7 +9,7 @@
 #include <tuple>
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/mapf/goal_distance.h"
 #include "planning/mapf/mapf_grid.h"
 
@@ -20,7 +20,7 @@ class ReverseResumableAStar final : public GoalDistance {
   // With a `deadline`, a resumed search stops when it expires (one resume could otherwise cover
   // the whole map, seconds on the largest ones).
   ReverseResumableAStar(const MapfGrid& grid, int goal, int start,
-                        const Deadline* deadline = nullptr);
+                        const StopToken* deadline = nullptr);
 
   // True distance from `cell` to the goal, or kUnreachable. Past the deadline, for a cell not yet
   // closed: the grid's lower bound (still admissible, so searches stay correct; the planner sees
@@ -33,7 +33,7 @@ class ReverseResumableAStar final : public GoalDistance {
   void resumeUntilClosed(int target);
 
   const MapfGrid* grid_;
-  const Deadline* deadline_;
+  const StopToken* deadline_;
   int goal_, start_;
   std::vector<int> g_;
   std::vector<std::uint8_t> closed_;

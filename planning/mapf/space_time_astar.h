@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/mapf/goal_distance.h"
 #include "planning/mapf/mapf_grid.h"
 #include "planning/mapf/space_time_constraints.h"
@@ -27,7 +27,7 @@ struct SpaceTimeRequest {
   const SpaceTimeConflictCounter* conflict_counter = nullptr;  // optional tie-break
   GoalDistance* heuristic = nullptr;                           // required
   long max_expansions = 2'000'000;
-  const Deadline* deadline = nullptr;
+  const StopToken* deadline = nullptr;
 };
 
 struct SpaceTimePlan {

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/mapf/mapf_grid.h"
 
 namespace cosim {
@@ -16,7 +16,7 @@ struct SpatialAStarRequest {
   const std::vector<std::uint8_t>* extra_blocked = nullptr;  // per cell, 1 = blocked
   double noise = 0.0;                                        // each node's h gets + noise * U(0, 1)
   std::mt19937_64* rng = nullptr;                            // required when noise > 0
-  const Deadline* deadline = nullptr;
+  const StopToken* deadline = nullptr;
 };
 
 struct SpatialAStarResult {

@@ -58,7 +58,7 @@ int StepArbiter::commitStep() {
   return moved;
 }
 
-bool StepArbiter::finished(const std::vector<int>& goals, int max_steps, const Deadline& deadline,
+bool StepArbiter::finished(const std::vector<int>& goals, int max_steps, const StopToken& deadline,
                            MapfResult& result) const {
   if (position_ == goals) {
     result.success = true;

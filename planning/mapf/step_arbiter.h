@@ -6,7 +6,7 @@
 // propose nothing wait, which never collides, so every executed step is conflict-free.
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/mapf/mapf_grid.h"
 #include "planning/mapf/mapf_planner.h"
 
@@ -27,7 +27,7 @@ class StepArbiter {
 
   // The end of a step-by-step plan: true with result.success once every agent is on its goal;
   // true with result.message once max_steps steps have passed or the deadline has expired.
-  bool finished(const std::vector<int>& goals, int max_steps, const Deadline& deadline,
+  bool finished(const std::vector<int>& goals, int max_steps, const StopToken& deadline,
                 MapfResult& result) const;
   // The executed paths (on success without the final waits) into result.paths.
   void storePaths(MapfResult& result) const;

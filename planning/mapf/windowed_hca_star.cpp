@@ -11,7 +11,7 @@
 namespace cosim {
 
 MapfResult WindowedHcaStar::solve(const MapfQuery& query) {
-  const Deadline deadline(query.time_limit_s, query.stop);
+  const StopToken deadline(query.time_limit_s, query.stop);
   const MapfInstance& inst = *query.instance;
   const MapfGrid grid(inst.grid, inst.connectivity);
   const int n = inst.agentCount();

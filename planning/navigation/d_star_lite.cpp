@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 
 namespace cosim {
 
@@ -83,7 +83,7 @@ void DStarLite::updateVertex(int u) {
 }
 
 bool DStarLite::computeShortestPath(double time_limit_s) {
-  const Deadline deadline(time_limit_s);
+  const StopToken deadline(time_limit_s);
   int nb[8];
   while (true) {
     while (!open_.empty() &&
@@ -138,7 +138,7 @@ std::vector<Cell> DStarLite::extractPlan(int from, int max_steps) const {
 }
 
 NavigationDecision DStarLite::decide(const Cell& at, double t) {
-  const Deadline clock(1e9);
+  const StopToken clock(1e9);
   NavigationDecision d;
   d.next = {at.x, at.y, 0};
   start_ = at.y * nx_ + at.x;

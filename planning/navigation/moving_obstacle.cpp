@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

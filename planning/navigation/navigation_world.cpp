@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

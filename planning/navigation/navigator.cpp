@@ -4,13 +4,13 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 
 namespace cosim {
 
 NavigationRun runNavigation(Navigator& navigator, const NavigationWorld& world, const Cell& start,
                             const Cell& goal, const NavigationLimits& limits, std::uint64_t seed) {
-  const Deadline deadline(limits.time_limit_s);
+  const StopToken deadline(limits.time_limit_s);
   const OccupancyGrid& grid = world.grid();
   NavigationRun run;
   if (grid.blocked(start.x, start.y) || grid.blocked(goal.x, goal.y)) {

@@ -1,11 +1,11 @@
 #include "planning/navigation/navigator_grid_planner.h"
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 
 namespace cosim {
 
 GridPlanResult NavigatorGridPlanner::solveGrid(const GridQuery& query) {
-  const Deadline clock(query.time_limit_s);
+  const StopToken clock(query.time_limit_s);
   GridPlanResult result;
   const OccupancyGrid& g = *query.grid;
   if (query.start.z != query.goal.z) {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/grid/dijkstra.h"
 
 namespace cosim {
@@ -136,7 +136,7 @@ NavigationDecision RobotNavigationAnt::evade(const Cell& at, const Cell& goal,
 }
 
 NavigationDecision RobotNavigationAnt::decide(const Cell& at_in, double t) {
-  const Deadline clock(1e9);
+  const StopToken clock(1e9);
   const Cell at{at_in.x, at_in.y, 0};
   ++decisions_;
   visited_[world_->grid().index(at.x, at.y)] = 1;

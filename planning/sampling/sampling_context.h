@@ -8,7 +8,7 @@
 #include <random>
 #include <string>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/planner.h"
 #include "planning/sampling/collision_world.h"
 #include "planning/sampling/state_sampler.h"
@@ -86,7 +86,7 @@ class SamplingContext {
  private:
   CollisionWorld world_;
   StateSampler sampler_;
-  Deadline deadline_;
+  StopToken deadline_;
   std::mt19937_64 rng_;
   Eigen::Vector3d start_, goal_;
   double time_limit_s_;

@@ -5,7 +5,7 @@
 #include <limits>
 #include <random>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 
@@ -15,7 +15,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 AcsMaklinkResult optimiseMaklinkRoute(const MaklinkGraph& graph, const Eigen::Vector2d& start,
                                       const Eigen::Vector2d& goal, const AcsMaklinkParams& p,
-                                      std::uint64_t seed, const Deadline& deadline) {
+                                      std::uint64_t seed, const StopToken& deadline) {
   AcsMaklinkResult out;
   out.lines = static_cast<int>(graph.lines().size());
   if (!graph.pointFree(start) || !graph.pointFree(goal)) {
@@ -156,7 +156,7 @@ AcsMaklinkResult optimiseMaklinkRoute(const MaklinkGraph& graph, const Eigen::Ve
 }
 
 PlanResult AcsMaklink::solve(const PlanningProblem& problem) {
-  const Deadline deadline(problem.time_limit_s);
+  const StopToken deadline(problem.time_limit_s);
   PlanResult result;
   const World& world = *problem.world;
   const double z = problem.start.z();

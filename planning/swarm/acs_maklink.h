@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/planner.h"
 #include "planning/planner_registry.h"
 #include "planning/swarm/maklink_graph.h"
@@ -57,7 +57,7 @@ struct AcsMaklinkResult {
 // The planner on a ready graph (used by the world planner, the reproduction and the tests).
 AcsMaklinkResult optimiseMaklinkRoute(const MaklinkGraph& graph, const Eigen::Vector2d& start,
                                       const Eigen::Vector2d& goal, const AcsMaklinkParams& params,
-                                      std::uint64_t seed, const Deadline& deadline);
+                                      std::uint64_t seed, const StopToken& deadline);
 
 class AcsMaklink : public Planner {
  public:

@@ -12,7 +12,7 @@
 #include <random>
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/swarm/extended_neighbourhood_002.h"
 
 namespace cosim {
@@ -33,7 +33,7 @@ class GridWalk {
   // path receives start..goal; dirs the direction index of each move (dirs.size() + 1 ==
   // path.size()).
   template <class Choose>
-  WalkOutcome walk(const Cell& start, const Cell& goal, Choose&& choose, const Deadline& deadline,
+  WalkOutcome walk(const Cell& start, const Cell& goal, Choose&& choose, const StopToken& deadline,
                    std::vector<Cell>& path, std::vector<int>& dirs) {
     if (++stamp_ == 0) {  // wrapped: clear the stamps once every 2^32 walks
       std::fill(visit_stamp_.begin(), visit_stamp_.end(), 0);

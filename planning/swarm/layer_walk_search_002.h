@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/grid/grid_planner.h"
 #include "planning/swarm/extended_neighbourhood_002.h"
 #include "planning/swarm/grid_walk_002.h"
@@ -27,7 +27,7 @@ class LayerWalkSearch {
   LayerWalkSearch(const LayerWalkSearch&) = delete;
   LayerWalkSearch& operator=(const LayerWalkSearch&) = delete;
 
-  const Deadline& deadline() const { return deadline_; }
+  const StopToken& deadline() const { return deadline_; }
   const PlanarLayer& layer() const { return layer_; }
   const OccupancyGrid& grid() const { return layer_.grid; }
   const ExtendedNeighbourhood& moves() const { return moves_; }
@@ -59,7 +59,7 @@ class LayerWalkSearch {
   GridPlanResult result(const std::string& no_path, int iterations) const;
 
  private:
-  const Deadline deadline_;
+  const StopToken deadline_;
   const PlanarLayer layer_;
   const ExtendedNeighbourhood moves_;
   GridWalk walker_;

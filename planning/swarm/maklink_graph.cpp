@@ -25,7 +25,7 @@ struct Ray {
 }  // namespace
 
 MaklinkGraph::MaklinkGraph(std::vector<ConvexPolygon> obstacles, const Eigen::Vector2d& bounds_min,
-                           const Eigen::Vector2d& bounds_max, const Deadline* deadline)
+                           const Eigen::Vector2d& bounds_max, const StopToken* deadline)
     : obstacles_(std::move(obstacles)), lo_(bounds_min), hi_(bounds_max) {
   auto outOfTime = [&] {
     if (deadline && deadline->expired()) complete_ = false;

@@ -14,7 +14,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/swarm/planar_obstacles_002.h"
 
 namespace cosim {
@@ -38,7 +38,7 @@ class MaklinkGraph {
   // Construction is quadratic in the obstacles' vertices (and more); with a deadline it stops
   // when the deadline expires and complete() is false.
   MaklinkGraph(std::vector<ConvexPolygon> obstacles, const Eigen::Vector2d& bounds_min,
-               const Eigen::Vector2d& bounds_max, const Deadline* deadline = nullptr);
+               const Eigen::Vector2d& bounds_max, const StopToken* deadline = nullptr);
 
   bool complete() const { return complete_; }
   const std::vector<MaklinkLine>& lines() const { return lines_; }

@@ -5,7 +5,7 @@
 #include <limits>
 #include <random>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/swarm/ant_common_000.h"
 
 namespace cosim {
@@ -34,7 +34,7 @@ class MsacSearch {
   }
 
   // Runs up to MAX iterations; returns the best path (empty if none).
-  std::vector<int> run(const Deadline& deadline, int s_max, GridPlanResult& result) {
+  std::vector<int> run(const StopToken& deadline, int s_max, GridPlanResult& result) {
     best_length_ = std::numeric_limits<double>::infinity();
     best_.clear();
     int iterations = 0;
@@ -259,7 +259,7 @@ class MsacSearch {
 }  // namespace
 
 GridPlanResult Msac::solveGrid(const GridQuery& query) {
-  const Deadline deadline(query.time_limit_s);
+  const StopToken deadline(query.time_limit_s);
   GridPlanResult result;
   if (p_.ants < 1 || p_.ants > 127 || p_.iterations < 1 || p_.tabu_version < 1 ||
       p_.tabu_version > 3) {

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/swarm/acs_maklink.h"
 #include "planning/swarm/ant_grid.h"
 #include "planning/swarm/genetic_algorithm.h"

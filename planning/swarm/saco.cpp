@@ -5,7 +5,7 @@
 #include <limits>
 #include <random>
 
-#include "planning/deadline.h"
+#include "core/stop_token.h"
 #include "planning/swarm/ant_common_000.h"
 
 namespace cosim {
@@ -50,7 +50,7 @@ class SacoColony {
 
   // One ant's walk from start to goal (seed §2.6 step 3 with memory, §4.5.1-4.5.2); returns the
   // processed path, empty if the walk gave up. raw_length: length before any processing.
-  std::vector<int> walk(const Deadline& deadline, double& raw_length) {
+  std::vector<int> walk(const StopToken& deadline, double& raw_length) {
     clock_ += p_.gamma + 2;  // older walks' visits never count as recent
     const long long walk_start = clock_;
     std::vector<int> path{start_};
@@ -155,7 +155,7 @@ class SacoColony {
 }  // namespace
 
 GridPlanResult Saco::solveGrid(const GridQuery& query) {
-  const Deadline deadline(query.time_limit_s);
+  const StopToken deadline(query.time_limit_s);
   GridPlanResult result;
   const std::optional<AntGrid> ant_grid = antGridForQuery(query, p_.conditional_diagonal, result);
   if (!ant_grid) return result;  // rejected, or start == goal

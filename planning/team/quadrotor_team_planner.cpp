@@ -6,7 +6,7 @@
 #include <set>
 #include <tuple>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/mapf/solution_validator.h"
 #include "planning/team/team_grid.h"
 

@@ -5,8 +5,8 @@
 #include <optional>
 #include <sstream>
 
-#include "planning/deadline.h"
-#include "planning/input_error.h"
+#include "core/stop_token.h"
+#include "core/input_error.h"
 #include "planning/trajectory/inflated_world.h"
 #include "planning/trajectory/minimum_snap_closed_form.h"
 #include "planning/trajectory/segment_time_allocation.h"
@@ -87,7 +87,7 @@ std::vector<Eigen::Vector3d> MinimumSnapTrajectory::thinWaypoints(
 MinimumSnapResult MinimumSnapTrajectory::fitImpl(const Path& path, const World* world,
                                                  double inflation,
                                                  const std::vector<std::size_t>& via) const {
-  const Deadline clock(1e9);  // only to report time_ms
+  const StopToken clock(1e9);  // only to report time_ms
   MinimumSnapResult result;
   result.counters["input_waypoints"] = static_cast<double>(path.size());
   if (path.empty()) {

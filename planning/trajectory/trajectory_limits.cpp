@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 namespace {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 

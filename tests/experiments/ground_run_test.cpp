@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "experiments/cli/ground_run_pipeline.h"
-#include "planning/input_error.h"
+#include "run/ground_run_pipeline.h"
+#include "core/input_error.h"
 #include "tests/experiments/cli_test_support.h"
 #include "tests/experiments/headless_run.h"
 

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string>
 
-#include "experiments/cli/run_pipeline.h"
+#include "run/run_pipeline.h"
 #include "tests/experiments/cli_test_support.h"
 
 namespace cosim::test {

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <string>
 
-#include "experiments/cli/run_pipeline.h"
-#include "planning/input_error.h"
+#include "run/run_pipeline.h"
+#include "core/input_error.h"
 #include "tests/experiments/cli_test_support.h"
 #include "tests/experiments/headless_run.h"
 

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "experiments/cli/ground_run_pipeline.h"
-#include "planning/input_error.h"
+#include "run/ground_run_pipeline.h"
+#include "core/input_error.h"
 #include "sim/moving_obstacle_motion.h"
 #include "sim/run_log.h"
 #include "sim/run_log_io.h"

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/scenario.h"
 #include "tests/experiments/cli_test_support.h"
 

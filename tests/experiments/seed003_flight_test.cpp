@@ -4,7 +4,7 @@
 // thesis found; ours (a grown plan, minimum snap) keeps it clear. The first 20 s of each flight.
 #include <gtest/gtest.h>
 
-#include "experiments/cli/run_pipeline.h"
+#include "run/run_pipeline.h"
 #include "tests/experiments/cli_test_support.h"
 
 namespace cosim::test {

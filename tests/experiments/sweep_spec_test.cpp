@@ -10,7 +10,7 @@
 
 #include "experiments/sweep/sweep_jobs.h"
 #include "experiments/sweep/sweep_shard.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 namespace cosim {
 namespace {

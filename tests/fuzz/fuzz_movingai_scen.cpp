@@ -1,6 +1,6 @@
 // libFuzzer target: the MovingAI .scen reader (cosim::parseMovingAIScenario).
 #include "planning/grid/movingai.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "tests/fuzz/fuzz_input.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -1,6 +1,6 @@
 // libFuzzer target: the scenario YAML loader (cosim::parseScenario), as `cosim run` and
 // `cosim plan` call it on a user's file.
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/scenario.h"
 #include "tests/fuzz/fuzz_input.h"
 

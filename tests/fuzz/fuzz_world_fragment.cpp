@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/mujoco_messages.h"
 #include "sim/world_fragment.h"
 #include "tests/fuzz/fuzz_input.h"

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/urdf_vehicle.h"
 
 namespace cosim::fuzz {

@@ -5,7 +5,7 @@
 
 #include "planning/grid/astar.h"
 #include "planning/grid/movingai.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/planner_registry.h"
 #include "planning/swarm/ant_common_000.h"
 #include "planning/swarm/msac.h"

@@ -10,7 +10,7 @@
 
 #include "planning/grid/astar.h"
 #include "planning/grid/movingai.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/planner_registry.h"
 #include "planning/swarm/ant_grid.h"
 #include "planning/swarm/extended_neighbourhood_002.h"

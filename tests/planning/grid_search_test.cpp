@@ -13,7 +13,7 @@
 #include "planning/grid/bellman_ford.h"
 #include "planning/grid/dijkstra.h"
 #include "planning/grid/lazy_theta_star.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 using namespace cosim;
 

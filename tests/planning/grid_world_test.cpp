@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "planning/grid/basic_theta_star.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/planner_registry.h"
 #include "planning/worlds/seed003_maps.h"
 

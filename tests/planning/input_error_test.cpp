@@ -1,7 +1,7 @@
 // InputError's one-line message: control bytes quoted from the input are escaped in what()
 // (a NUL used to cut the message short), the parts keep them raw; an error raised where the
 // file is unknown can be given the file afterwards.
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/planner_registry.h"
 #include "planning/swarm/acs_maklink.h"
 #include "planning/swarm/maklink_graph.h"
@@ -132,8 +132,8 @@ TEST(AcsMaklink, OffsetsAreOnTheLevelsAndFinerLevelsAreNoWorseAtBest) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     AcsMaklinkParams p11, p21;
     p21.levels = 21;
-    const AcsMaklinkResult r11 = optimiseMaklinkRoute(g, {1, 1}, {19, 19}, p11, seed, Deadline(5));
-    const AcsMaklinkResult r21 = optimiseMaklinkRoute(g, {1, 1}, {19, 19}, p21, seed, Deadline(5));
+    const AcsMaklinkResult r11 = optimiseMaklinkRoute(g, {1, 1}, {19, 19}, p11, seed, StopToken(5));
+    const AcsMaklinkResult r21 = optimiseMaklinkRoute(g, {1, 1}, {19, 19}, p21, seed, StopToken(5));
     ASSERT_TRUE(r11.success && r21.success);
     for (double h : r11.offsets) EXPECT_NEAR(h * 10, std::round(h * 10), 1e-9);
     EXPECT_LE(r11.length, r11.dijkstra_length + 1e-9);

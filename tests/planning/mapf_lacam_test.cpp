@@ -6,7 +6,7 @@
 #include <atomic>
 
 #include "mapf_test_instances.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/mapf/mapf_graph.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/mapf/movingai_instance.h"

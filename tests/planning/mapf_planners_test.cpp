@@ -5,7 +5,7 @@
 #include <queue>
 
 #include "mapf_test_instances.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/mapf/mapf_grid.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/mapf/maze_generator.h"

@@ -4,13 +4,13 @@
 // anything is allocated.
 #include <gtest/gtest.h>
 
-#include "planning/deadline.h"
-#include "planning/input_error.h"
+#include "core/stop_token.h"
+#include "core/input_error.h"
 #include "planning/mapf/mapf_grid.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/mapf/maze_generator.h"
 #include "planning/mapf/reverse_resumable_astar.h"
-#include "planning/stop_request.h"
+#include "core/stop_request.h"
 
 using namespace cosim;
 
@@ -66,7 +66,7 @@ TEST(ReverseResumableAStar, PastItsDeadlineAnUnexpandedCellGetsTheAdmissibleLowe
   for (int y = 0; y < 255; ++y) g.setBlocked(128, y, 0, true);  // a wall with a gap at the bottom
   const MapfGrid grid(g, 4);
   const int goal = grid.id({0, 0, 0}), far = grid.id({255, 0, 0});
-  const Deadline expired(0.0);
+  const StopToken expired(0.0);
   ReverseResumableAStar late(grid, goal, far, &expired);
   // The true distance goes around the wall (255 + 2 * 255 = 765); the bound is 255.
   EXPECT_EQ(late.distance(far), grid.lowerBound(far, goal));

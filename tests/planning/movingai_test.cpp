@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 using namespace cosim;
 

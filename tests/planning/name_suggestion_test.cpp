@@ -1,5 +1,5 @@
 // "Did you mean": the nearest known name by edit distance, only for slips of a few keystrokes.
-#include "planning/name_suggestion.h"
+#include "core/name_suggestion.h"
 
 #include <gtest/gtest.h>
 

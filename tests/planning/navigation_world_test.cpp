@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/navigation/navigator.h"
 
 using namespace cosim;

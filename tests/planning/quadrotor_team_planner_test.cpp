@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/team/team_grid.h"
 

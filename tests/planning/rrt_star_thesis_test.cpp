@@ -5,7 +5,7 @@
 
 #include <random>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/planner_registry.h"
 #include "planning/sampling/nearest_neighbor_index.h"
 #include "planning/worlds/seed003_maps.h"

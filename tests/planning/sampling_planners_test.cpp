@@ -7,7 +7,7 @@
 #include <cmath>
 #include <random>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/planner_registry.h"
 
 namespace cosim {

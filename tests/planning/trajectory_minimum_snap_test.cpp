@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/trajectory/inflated_world.h"
 #include "planning/trajectory/minimum_snap_closed_form.h"
 #include "planning/trajectory/minimum_snap_trajectory.h"

@@ -6,7 +6,7 @@
 #include <queue>
 
 #include "planning/grid/occupancy_grid.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/worlds/generators/city_generator.h"
 #include "planning/worlds/generators/forest_generator.h"
 #include "planning/worlds/generators/maze_world_generator.h"

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "render_test_scene.h"
 
 using namespace cosim;

@@ -1,7 +1,7 @@
 // The scenario's render section: cameras, fixed camera, speed-up, see-through obstacles.
 #include <gtest/gtest.h>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/scenario.h"
 
 using namespace cosim;

@@ -1,6 +1,6 @@
 // CSV fields with the user's text in them (vehicle names, messages) are quoted as RFC 4180 says
 // and split back to the same text.
-#include "sim/csv_text.h"
+#include "core/csv_text.h"
 
 #include <gtest/gtest.h>
 

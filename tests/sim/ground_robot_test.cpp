@@ -7,7 +7,7 @@
 
 #include "control/ground_feedback_linearization.h"
 #include "control/ground_velocity_tracker.h"
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/ground_simulation.h"
 #include "sim/ground_vehicle_handles.h"
 #include "sim/world_model.h"

@@ -10,7 +10,7 @@
 #include <regex>
 #include <sstream>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "single_vehicle_scenario.h"
 
 using namespace cosim;

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/scenario.h"
 
 using namespace cosim;

@@ -2,7 +2,7 @@
 // that do not exist (the file's lists are never grown by an override).
 #include <gtest/gtest.h>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/scenario.h"
 
 using namespace cosim;

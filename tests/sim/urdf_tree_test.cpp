@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/urdf_vehicle.h"
 
 // GCC 12 warns -Wrestrict inside libstdc++ for string concatenations once inlined (GCC bug

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "sim/scenario.h"
 #include "sim/world_model.h"
 

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 
 using namespace cosim;
 

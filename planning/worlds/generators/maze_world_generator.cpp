@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "planning/input_error.h"
+#include "core/input_error.h"
 #include "planning/mapf/maze_generator.h"
 
 namespace cosim {

@@ -1,0 +1,68 @@
+// cosim export-mjcf SCENARIO.yaml [--out FILE.xml]: the world a run would simulate (obstacles,
+// grid-map boxes, included MJCF, every vehicle with its prefixed names, rotor constants) as one
+// standalone MJCF file that MuJoCo's own tools load: mujoco-compile, mujoco-testspeed (the
+// engine's speed on this very model, the limit a simulation loop is measured against) and
+// mujoco-simulate. The rotors' dynamics and the air are cosim's, not the file's: its thrust
+// actuators take the rotor thrust directly, so in MuJoCo's viewer the vehicles fall unless
+// driven.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "cli/command.h"
+#include "core/output_files.h"
+#include "core/input_error.h"
+#include "sim/world_model.h"
+
+namespace cosim::cli {
+
+void addExportMjcfCommand(CLI::App& app, CommandContext& ctx) {
+  auto* cmd = app.add_subcommand(
+      "export-mjcf",
+      "Write the scenario's composed world as one standalone MJCF file (loads in mujoco-compile,\n"
+      "mujoco-testspeed and mujoco-simulate).");
+  struct Args {
+    std::string scenario, out;
+    std::vector<std::string> sets;
+  };
+  auto a = std::make_shared<Args>();
+  cmd->add_option("scenario", a->scenario, "scenario YAML")->required();
+  cmd->add_option("--out", a->out,
+                  "output file (default: <scenario name>.xml in the current folder)");
+  cmd->add_option("--set", a->sets, "override a scenario key, e.g. --set render.width=1920");
+  cmd->callback([a, &ctx] {
+    const Scenario s = loadScenario(a->scenario, a->sets);
+    const std::filesystem::path out =
+        a->out.empty()
+            ? std::filesystem::path(std::filesystem::path(a->scenario).stem().string() + ".xml")
+            : std::filesystem::path(a->out);
+    const std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
+    if (!std::filesystem::is_directory(dir))
+      throw InputError("command line", "--out", "no such folder: " + dir.string());
+    const WorldModel world = WorldModel::build(s);  // compiles it: MuJoCo keeps its last XML
+    // MuJoCo writes the file itself: into a temporary name, then read back and written in place
+    // atomically like every other output.
+    const std::filesystem::path tmp =
+        dir / ("." + out.filename().string() + ".mjcf" + std::to_string(::getpid()));
+    char error[1024] = "";
+    if (!mj_saveLastXML(tmp.c_str(), world.model(), error, sizeof error)) {
+      std::filesystem::remove(tmp);
+      throw std::runtime_error("mujoco could not write the model: " + std::string(error));
+    }
+    std::ifstream in(tmp);
+    std::ostringstream text;
+    text << "<!-- Composed by cosim from " << s.file << " (cosim export-mjcf). -->\n" << in.rdbuf();
+    in.close();
+    std::filesystem::remove(tmp);
+    writeFileAtomically(out, text.str());
+    std::cout << "written: " << out.string() << " (" << world.model()->nbody << " bodies, "
+              << world.model()->ngeom << " geoms, " << world.model()->nu << " actuators, "
+              << world.model()->nv << " degrees of freedom)\n";
+    ctx.status = 0;
+  });
+}
+
+}  // namespace cosim::cli

@@ -1,0 +1,157 @@
+// cosim render RUN_DIR: re-render a logged run without simulating it again.
+#include <cmath>
+#include <iostream>
+
+#include "cli/command.h"
+#include "cli/interrupt_flag.h"
+#include "cli/option_checks.h"
+#include "core/output_files.h"
+#include "core/input_error.h"
+#include "core/input_file.h"
+#include "render/run_outputs.h"
+#include "sim/run_log_io.h"
+#include "sim/world_model.h"
+#include "sim/yaml_document.h"
+
+namespace cosim::cli {
+
+namespace {
+
+std::string readText(const std::filesystem::path& p) {
+  std::error_code ec;
+  if (!std::filesystem::exists(p, ec))
+    throw InputError(p.string(), "", "cannot open (is this a run folder?)");
+  return readInputFile(p.string(), kMaxScenarioFileBytes, "file of a run folder");
+}
+
+// The original scenario path recorded in run.json (relative paths in the scenario resolve there).
+std::string recordedScenarioFile(const std::filesystem::path& dir) {
+  const std::string file = (dir / "run.json").string();
+  const YAML::Node json = loadYamlDocument(readText(dir / "run.json"), file);  // JSON is YAML
+  if (!json.IsMap() || !json["scenario_file"] || !json["scenario_file"].IsScalar())
+    throw InputError(file, "scenario_file", "missing");
+  return json["scenario_file"].Scalar();
+}
+
+// What the run could have logged: the scenario bounds the log it is re-rendered from.
+LogBounds logBoundsFor(const Scenario& s) {
+  LogBounds b;
+  // The last sample may fall a control period after max_time; a second is ample.
+  b.max_time = s.sim.max_time + 1.0;
+  b.max_rows_per_vehicle = static_cast<std::size_t>(std::ceil(b.max_time * s.sim.control_rate)) + 2;
+  b.max_vehicles = s.vehicles.size();
+  b.max_moving_obstacles = s.moving_obstacles.size();
+  b.max_path_points = 20000000;
+  return b;
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, CommandContext& ctx) {
+  auto* cmd = app.add_subcommand(
+      "render",
+      "Re-render a logged run from its scenario.yaml, timeseries.csv, path.csv and\n"
+      "moving_obstacles.csv (if the run had moving obstacles), without\n"
+      "simulating again. Writes a video (.mp4), a PNG frame sequence (--frames), or, if --out\n"
+      "ends in .png, one frame (the last, or the one at --at).");
+  struct Args {
+    std::string dir, camera, out;
+    bool frames = false, quiet = false;
+    double at = -1.0, speedup = 0.0;
+    int width = 0, height = 0, fps = 0;
+  };
+  auto a = std::make_shared<Args>();
+  cmd->add_option("run_dir", a->dir, "folder written by cosim run")->required();
+  cmd->add_option("--camera", a->camera,
+                  "chase, orbit, top, overview or fixed (fixed needs render.fixed_camera in the "
+                  "scenario; default: the scenario's render.camera)");
+  cmd->add_option("--out", a->out,
+                  "output file (default: RUN_DIR/video_<camera>.mp4, or RUN_DIR/frames_<camera>/ "
+                  "with --frames)");
+  cmd->add_flag("--frames", a->frames,
+                "write PNG frames (00001.png, ...) into a folder instead of a video");
+  cmd->add_option("--at", a->at, "with --out FILE.png: the frame at this simulated time (s)")
+      ->check(numberIn(0.0, 1e9));
+  cmd->add_option("--video-speed,--speedup", a->speedup,
+                  "time-lapse: simulated seconds per video second (default: the scenario's "
+                  "render.speed)")
+      ->check(numberIn(0.01, 1000.0));
+  cmd->add_option("--fps", a->fps, "frames per second (default: the scenario's)")
+      ->check(wholeNumberIn(1, 240));
+  cmd->add_option("--width", a->width, "frame width in pixels, even (default: the scenario's)")
+      ->check(wholeNumberIn(64, 3840));
+  cmd->add_option("--height", a->height, "frame height in pixels, even (default: the scenario's)")
+      ->check(wholeNumberIn(64, 2160));
+  cmd->add_flag("--quiet", a->quiet, "no progress bar");
+  cmd->callback([a, &ctx] {
+    const std::atomic<bool>& interrupt = installInterruptFlag();
+    const std::filesystem::path dir = a->dir;
+    const std::string yaml = readText(dir / "scenario.yaml");
+    Scenario s = parseScenario(yaml, recordedScenarioFile(dir));
+    if (!a->camera.empty()) {
+      try {
+        cameraKind(a->camera);
+      } catch (const std::invalid_argument&) {
+        throw InputError("command line", "--camera", std::string("must be ") + cameraNames());
+      }
+      if (a->camera == "fixed" && !s.render.has_fixed_camera)
+        throw InputError("command line", "--camera",
+                         "'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]} "
+                         "in the scenario");
+      s.render.camera = a->camera;
+    }
+    if (a->width) s.render.width = a->width;
+    if (a->height) s.render.height = a->height;
+    if (s.render.width % 2 || s.render.height % 2)
+      throw InputError("command line", "--width/--height", "must be even (H.264, yuv420p)");
+    if (a->fps) s.render.fps = a->fps;
+    if (a->speedup > 0) s.render.speedup = a->speedup;
+    // Where the output goes is checked before anything is read or drawn.
+    const std::string camera = s.render.camera;
+    std::filesystem::path out = a->out;
+    if (out.empty()) out = dir / (a->frames ? "frames_" + camera : "video_" + camera + ".mp4");
+    const bool one_frame = out.extension() == ".png" && !a->frames;
+    checkOutputPath(out, a->out.empty() ? "run folder" : "--out", a->frames);
+    RunLog log;
+    // The time series first: it names the vehicles, and a single vehicle's path.csv has no
+    // vehicle column (its rows belong to the first vehicle).
+    const LogBounds bounds = logBoundsFor(s);
+    readTimeseriesCsv((dir / "timeseries.csv").string(), log, bounds);
+    readPathCsv((dir / "path.csv").string(), log, bounds);
+    // Where the moving obstacles were (without it they would stand at their start); runs
+    // logged before the file existed have none.
+    if (!s.moving_obstacles.empty() && std::filesystem::exists(dir / "moving_obstacles.csv"))
+      readMovingObstaclesCsv((dir / "moving_obstacles.csv").string(), log, bounds);
+    if (interrupt.load()) {
+      std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
+      ctx.status = 1;
+      return;
+    }
+    const WorldModel world = WorldModel::build(s);  // its off-screen buffer fits the frame size
+    for (std::size_t v = 0; v < log.vehicles.size() && v < s.vehicles.size(); ++v) {
+      log.vehicles[v].goal = s.vehicles[v].goal();
+      log.vehicles[v].radius = world.vehicles()[v].params.radius;
+    }
+    RunRenderer renderer(world, s, log, s.render.width, s.render.height);
+    if (one_frame) {
+      std::vector<std::uint8_t> rgb;
+      renderer.render(a->at >= 0 ? a->at : renderer.endTime(), camera, rgb);
+      writePng(out, rgb, renderer.width(), renderer.height());
+    } else {
+      const int frames = renderRunVideo(renderer, s.render, camera, out,
+                                        a->frames ? VideoFormat::PngSequence : VideoFormat::Mp4,
+                                        !a->quiet, &interrupt);
+      if (frames == 0) {  // SIGINT/SIGTERM: ffmpeg was stopped and its partial output deleted
+        std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
+        ctx.status = 1;
+        return;
+      }
+      std::cout << "frames: " << frames << " at " << s.render.fps << " fps (" << s.render.speedup
+                << "x simulated time)\n";
+    }
+    std::cout << "rendered: " << out.string() << "\n";
+    ctx.status = 0;
+  });
+}
+
+}  // namespace cosim::cli

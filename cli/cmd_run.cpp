@@ -1,0 +1,93 @@
+// cosim run [SCENARIO.yaml]: plan, fly, evaluate and render one scenario.
+#include <unistd.h>
+
+#include <iostream>
+
+#include "cli/command.h"
+#include "cli/interrupt_flag.h"
+#include "cli/option_checks.h"
+#include "core/output_files.h"
+#include "run/run_files.h"
+#include "run/run_pipeline.h"
+#include "run/scenario_checks.h"
+#include "core/input_error.h"
+
+namespace cosim::cli {
+
+std::string defaultScenarioPath() {
+  return std::string(COSIM_SCENARIOS_DIR) + "/default.yaml";
+}
+
+void addRunCommand(CLI::App& app, CommandContext& ctx) {
+  auto* cmd = app.add_subcommand(
+      "run",
+      "Plan a path, turn it into a reference, fly it in MuJoCo under the scenario's controller,\n"
+      "evaluate it and render it. Writes metrics.json, timeseries.csv, path.csv, final.png and\n"
+      "video.mp4 to the output folder. Exit 0 if every vehicle reached its goal without a\n"
+      "collision, 1 if not (no path, goal missed, collision), 2 for bad input.");
+  struct Args {
+    std::string scenario, out;
+    bool no_video = false, no_images = false, quiet = false;
+    long seed = -1;
+    double video_speed = 0.0;
+    std::vector<std::string> sets;
+  };
+  auto a = std::make_shared<Args>();
+  cmd->add_option("scenario", a->scenario, "scenario YAML (default: the bundled default scenario)");
+  cmd->add_option("--out", a->out, "output folder (default: a new folder under out/)");
+  cmd->add_flag("--no-video", a->no_video, "skip video.mp4 (much faster)");
+  cmd->add_flag(
+      "--no-images", a->no_images,
+      "skip final.png, figures/ and index.html too (with --no-video: no rendering at all)");
+  cmd->add_option("--seed", a->seed, "random seed (overrides sim.seed)")
+      ->check(wholeNumberIn(0L, 2147483647L));
+  cmd->add_option("--set", a->sets, "override a scenario key, e.g. --set planner.name=astar")
+      ->allow_extra_args(false);
+  cmd->add_option("--video-speed", a->video_speed,
+                  "time-lapse: simulated seconds per second of video (same as --set "
+                  "render.speed=X)")
+      ->check(numberIn(0.01, 1000.0));
+  cmd->add_flag("--quiet", a->quiet, "no progress lines");
+  cmd->callback([a, &ctx] {
+    // Interruptible from here on, loading included; and the folder loses an earlier run's
+    // results before anything else, so neither a refusal nor an interruption below can leave
+    // them looking like this run's. A new folder is made only once the scenario and its
+    // planners passed their checks: bad input leaves no empty folder behind.
+    const std::atomic<bool>& interrupt = installInterruptFlag();
+    RunRequest request;
+    checkOutputDir(a->out);
+    if (!a->out.empty()) removeStaleResults(a->out, kRunResultNames);
+    const std::string path = a->scenario.empty() ? defaultScenarioPath() : a->scenario;
+    std::vector<std::string> overrides = a->sets;
+    if (a->seed >= 0) overrides.push_back("sim.seed=" + std::to_string(a->seed));
+    if (a->video_speed > 0) overrides.push_back("render.speed=" + std::to_string(a->video_speed));
+    Scenario scenario = loadCheckedScenario(path, overrides, PlannerUse::Run);
+    request.out_dir = prepareOutputDir(a->out, "run");
+    request.video = !a->no_video;
+    request.images = !a->no_images;
+    request.progress = !a->quiet;
+    request.interrupt = &interrupt;
+    RunSummary s;
+    try {
+      s = executeRun(scenario, request);
+    } catch (const InputError& e) {
+      throw e.inFile(path);  // e.g. a planner's grid too large for the scenario's world
+    }
+    if (s.message == "interrupted") {
+      std::cerr << "cosim: interrupted; " << request.out_dir.string() << " holds no finished run\n";
+      ctx.status = 1;
+      return;
+    }
+    const FlightMetrics& m = s.metrics.front();
+    std::cout << "run: " << request.out_dir.string() << "\n"
+              << "  reached_goal " << (m.reached_goal ? "yes" : "no") << ", collisions "
+              << m.collisions << ", flight " << m.flight_time_s << " s, rmse " << m.rmse_m
+              << " m (against the " << m.error_reference << "), max error " << m.max_error_m
+              << " m, min clearance " << m.min_clearance_m << " m, " << s.sim_speed_x
+              << "x real time\n";
+    if (s.status != 0) std::cerr << "cosim: " << s.message << "\n";
+    ctx.status = s.status;
+  });
+}
+
+}  // namespace cosim::cli

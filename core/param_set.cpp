@@ -1,0 +1,133 @@
+#include "core/param_set.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "core/input_error.h"
+#include "core/name_suggestion.h"
+
+namespace cosim {
+
+namespace {
+std::string formatNumber(double v) {
+  std::ostringstream out;
+  out.precision(12);
+  out << v;
+  return out.str();
+}
+}  // namespace
+
+void ParamSet::set(const std::string& name, const std::string& value, const std::string& place) {
+  values_[name] = Entry{value, place};
+}
+
+void ParamSet::fail(const std::string& name, const std::string& problem) const {
+  auto it = values_.find(name);
+  std::string place = (it != values_.end() && !it->second.place.empty()) ? it->second.place
+                                                                         : "parameter " + name;
+  throw InputError(file_, place, problem);
+}
+
+const ParamSet::Entry* ParamSet::find(const std::string& name) {
+  used_[name] = true;
+  auto it = values_.find(name);
+  return it == values_.end() ? nullptr : &it->second;
+}
+
+double ParamSet::getDouble(const std::string& name, double fallback, double lo, double hi) {
+  double v = fallback;
+  if (const Entry* e = find(name)) {
+    char* end = nullptr;
+    v = std::strtod(e->value.c_str(), &end);
+    if (e->value.empty() || end == e->value.c_str() || *end != '\0' || !std::isfinite(v))
+      fail(name, "'" + name + "' must be a number, got '" + e->value + "'");
+  }
+  if (v < lo || v > hi)
+    fail(name, "'" + name + "' = " + formatNumber(v) + " is outside [" + formatNumber(lo) + ", " +
+                   formatNumber(hi) + "]");
+  effective_[name] = formatNumber(v);
+  return v;
+}
+
+int ParamSet::getInt(const std::string& name, int fallback, int lo, int hi) {
+  long v = fallback;
+  if (const Entry* e = find(name)) {
+    char* end = nullptr;
+    v = std::strtol(e->value.c_str(), &end, 10);
+    if (e->value.empty() || *end != '\0' || v > 2147483647L || v < -2147483647L)
+      fail(name, "'" + name + "' must be a whole number, got '" + e->value + "'");
+  }
+  if (v < lo || v > hi)
+    fail(name, "'" + name + "' = " + std::to_string(v) + " is outside [" + std::to_string(lo) +
+                   ", " + std::to_string(hi) + "]");
+  effective_[name] = std::to_string(v);
+  return static_cast<int>(v);
+}
+
+bool ParamSet::getBool(const std::string& name, bool fallback) {
+  bool v = fallback;
+  if (const Entry* e = find(name)) {
+    std::string s = e->value;
+    std::transform(s.begin(), s.end(), s.begin(), ::tolower);
+    if (s == "true" || s == "1" || s == "yes" || s == "on")
+      v = true;
+    else if (s == "false" || s == "0" || s == "no" || s == "off")
+      v = false;
+    else
+      fail(name, "'" + name + "' must be true or false, got '" + e->value + "'");
+  }
+  effective_[name] = v ? "true" : "false";
+  return v;
+}
+
+std::string ParamSet::getString(const std::string& name, const std::string& fallback,
+                                const std::vector<std::string>& allowed) {
+  std::string v = fallback;
+  if (const Entry* e = find(name)) v = e->value;
+  if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
+    std::string list;
+    for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+    fail(name, "'" + name + "' = '" + v + "' is not one of: " + list);
+  }
+  effective_[name] = v;
+  return v;
+}
+
+namespace {
+// "unknown parameter 'x' for OWNER (did you mean 'y'? allowed: ...)": the allowed names are those
+// the owner asked for.
+std::string unknownParameterProblem(const std::string& name, const std::string& owner,
+                                    const std::map<std::string, bool>& asked) {
+  std::vector<std::string> names;
+  std::string list;
+  for (const auto& [known, used] : asked) {
+    names.push_back(known);
+    list += (list.empty() ? "" : ", ") + known;
+  }
+  const std::string hint = didYouMean(name, names);
+  return "unknown parameter '" + name + "' for " + owner + " (" + (hint.empty() ? "" : hint + " ") +
+         "allowed: " + (list.empty() ? "none" : list) + ")";
+}
+}  // namespace
+
+std::vector<std::string> ParamSet::requireAllUsedExcept(
+    const std::string& owner, const std::vector<std::string>& tolerated) const {
+  std::vector<std::string> ignored;
+  for (const auto& [name, entry] : values_) {
+    if (used_.count(name)) continue;
+    if (std::find(tolerated.begin(), tolerated.end(), name) == tolerated.end())
+      fail(name, unknownParameterProblem(name, owner, used_));
+    ignored.push_back(name);
+  }
+  return ignored;
+}
+
+void ParamSet::requireAllUsed(const std::string& owner) const {
+  for (const auto& [name, entry] : values_) {
+    if (!used_.count(name)) fail(name, unknownParameterProblem(name, owner, used_));
+  }
+}
+
+}  // namespace cosim

@@ -1,0 +1,111 @@
+#include "run/quadrotor_team_planning.h"
+
+#include "core/input_error.h"
+#include "planning/mapf/mapf_planner_registry.h"
+#include "planning/team/quadrotor_team_planner.h"
+
+namespace cosim {
+
+namespace {
+
+struct TeamPlannerSettings {
+  double time_limit = 30.0;
+  double min_separation = kTeamMinSeparation;
+};
+
+// planner.* besides the MAPF planner's own parameters (marked used in `p`).
+TeamPlannerSettings readTeamPlannerSettings(ParamSet& p) {
+  TeamPlannerSettings s;
+  s.time_limit = p.getDouble("time_limit", s.time_limit, 0.001, kMaxPlannerTimeLimit);
+  s.min_separation = p.getDouble("min_separation", s.min_separation, 1.0, 10.0);
+  return s;
+}
+
+std::vector<TeamAgent> teamAgents(const Scenario& s, const WorldModel& world,
+                                  const std::vector<std::size_t>& vehicles) {
+  std::vector<TeamAgent> agents;
+  for (std::size_t v : vehicles) {
+    const VehicleSpec& spec = s.vehicles[v];
+    if (spec.waypoints.size() != 1)
+      throw InputError(
+          s.file, "vehicles[" + std::to_string(v) + "]",
+          "a team plan takes one goal per vehicle ('" + spec.name + "' has waypoints)");
+    const QuadrotorParams& q = world.vehicles()[v].params;
+    TeamAgent a;
+    a.start = spec.start;
+    a.goal = spec.goal();
+    a.separation = s.planner_separation.value_or(
+        SeparationEllipsoid{q.separation_radius, q.separation_height});
+    a.inflation = q.radius + s.planner_margin;
+    // As for a single quadrotor's trajectory: half the margin is the budget for tracking error.
+    a.clearance = q.radius + 0.5 * s.planner_margin;
+    agents.push_back(a);
+  }
+  return agents;
+}
+
+std::vector<VehiclePlan> vehiclePlans(const TeamPlan& team, const TeamPlanningProblem& problem,
+                                      const std::map<std::string, std::string>& params) {
+  std::vector<VehiclePlan> plans(problem.agents.size());
+  for (std::size_t i = 0; i < plans.size(); ++i) {
+    VehiclePlan& p = plans[i];
+    p.success = team.success;
+    p.message = team.message;
+    p.inflation = problem.agents[i].inflation;
+    p.counters = team.counters;
+    p.params = params;
+    if (i < team.points.size()) p.path.waypoints = team.points[i];
+    p.via_indices.push_back(p.path.waypoints.empty() ? 0 : p.path.waypoints.size() - 1);
+  }
+  if (!plans.empty()) plans.front().time_ms = team.time_ms;  // the team is planned once
+  return plans;
+}
+
+}  // namespace
+
+void checkQuadrotorTeamPlanner(const Scenario& scenario) {
+  ParamSet p = scenario.planner_params;
+  readTeamPlannerSettings(p);
+  makeMapfPlanner(scenario.planner_name, p, "planner.name");
+}
+
+QuadrotorTeamFlight planQuadrotorTeamFlight(const Scenario& s, const WorldModel& world,
+                                            const std::vector<std::size_t>& vehicles,
+                                            const RunRequest& request) {
+  ParamSet p = s.planner_params;
+  const TeamPlannerSettings settings = readTeamPlannerSettings(p);
+  auto planner = makeMapfPlanner(s.planner_name, p, "planner.name");
+  ParamSet t = s.trajectory_params;
+  TeamPlanningProblem problem;
+  problem.world = &s.world;
+  problem.agents = teamAgents(s, world, vehicles);
+  problem.min_separation = settings.min_separation;
+  problem.max_speed = t.getDouble("max_speed", kTeamMaxSpeed, 0.01, 100.0);
+  problem.max_acceleration = t.getDouble("max_acceleration", kTeamMaxAcceleration, 0.01, 100.0);
+  t.requireAllUsed("trajectory of a quadrotor team (max_speed, max_acceleration)");
+  problem.time_limit_s = settings.time_limit;
+  problem.seed = s.sim.seed;
+  problem.stop = request.interrupt;
+
+  TeamPlan team;
+  try {
+    team = planQuadrotorTeam(problem, *planner);
+  } catch (const InputError& e) {
+    throw e.inFile(s.file);  // a start or goal the grid cannot hold; a planner without 3D grids
+  }
+  std::map<std::string, std::string> params = p.effective();
+  params["margin"] = std::to_string(s.planner_margin);
+  params["min_separation"] = std::to_string(settings.min_separation);
+  if (s.planner_separation) {
+    params["separation.radius"] = std::to_string(s.planner_separation->radius);
+    params["separation.height"] = std::to_string(s.planner_separation->height);
+  }
+  QuadrotorTeamFlight flight;
+  flight.plans = vehiclePlans(team, problem, params);
+  flight.success = team.success;
+  if (!team.success) flight.failure = "no path found: " + team.message;
+  flight.trajectories = std::move(team.trajectories);
+  return flight;
+}
+
+}  // namespace cosim

@@ -1,0 +1,64 @@
+#include "run/scenario_planning.h"
+
+#include "core/stop_token.h"
+#include "core/input_error.h"
+#include "planning/planner_registry.h"
+
+namespace cosim {
+
+VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, double vehicle_radius,
+                        ParamSet params) {
+  VehiclePlan plan;
+  plan.inflation = vehicle_radius + scenario.planner_margin;
+  if (scenario.planner_name.empty()) {
+    plan.success = true;
+    plan.path.waypoints.push_back(vehicle.start);
+    for (const auto& w : vehicle.waypoints) {
+      plan.path.waypoints.push_back(w);
+      plan.via_indices.push_back(plan.path.waypoints.size() - 1);
+    }
+    return plan;
+  }
+  const double time_limit = params.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);
+  auto planner =
+      makePlanner(scenario.planner_name, params, "key planner.name", &plan.ignored_params);
+  plan.params = params.effective();
+  plan.params["margin"] = std::to_string(scenario.planner_margin);
+
+  PlanningProblem problem;
+  problem.world = &scenario.world;
+  problem.inflation = plan.inflation;
+  problem.planar = vehicle.ground;
+  problem.seed = scenario.sim.seed;
+  const StopToken deadline(time_limit);
+  Eigen::Vector3d from = vehicle.start;
+  plan.path.waypoints.push_back(from);
+  for (std::size_t i = 0; i < vehicle.waypoints.size(); ++i) {
+    problem.start = from;
+    problem.goal = vehicle.waypoints[i];
+    problem.time_limit_s = std::max(1e-3, time_limit - deadline.elapsedMs() / 1000.0);
+    PlanResult r;
+    try {
+      r = planner->solve(problem);
+    } catch (const InputError& e) {
+      throw e.inFile(scenario.file);  // e.g. the planner's grid is too large for the world
+    }
+    plan.time_ms += r.time_ms;
+    for (const auto& [k, v] : r.counters) plan.counters[k] += v;
+    if (!r.success || r.path.empty()) {
+      plan.success = false;
+      plan.message = "no path from waypoint " + std::to_string(i) + " to " + std::to_string(i + 1) +
+                     (r.message.empty() ? "" : ": " + r.message);
+      return plan;
+    }
+    // Consecutive segments share their joining point.
+    for (std::size_t k = 1; k < r.path.waypoints.size(); ++k)
+      plan.path.waypoints.push_back(r.path.waypoints[k]);
+    plan.via_indices.push_back(plan.path.waypoints.size() - 1);
+    from = vehicle.waypoints[i];
+  }
+  plan.success = true;
+  return plan;
+}
+
+}  // namespace cosim
