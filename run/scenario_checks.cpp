@@ -10,7 +10,7 @@
 #include "sim/yaml_document.h"
 #include "sim/yaml_reader.h"
 
-namespace cosim::cli {
+namespace cosim {
 
 namespace {
 
@@ -68,4 +68,4 @@ Scenario loadCheckedScenario(const std::string& path, const std::vector<std::str
   return scenario;
 }
 
-}  // namespace cosim::cli
+}  // namespace cosim

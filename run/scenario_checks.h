@@ -8,7 +8,7 @@
 
 #include "sim/scenario.h"
 
-namespace cosim::cli {
+namespace cosim {
 
 enum class PlannerUse {
   Run,          // as `cosim run` builds them (team planners and navigators for ground robots)
@@ -24,4 +24,4 @@ Scenario loadCheckedScenario(const std::string& path, const std::vector<std::str
 std::string scenarioKeyPlace(const std::string& path, const std::vector<std::string>& overrides,
                              const std::string& key);
 
-}  // namespace cosim::cli
+}  // namespace cosim
