@@ -64,8 +64,9 @@ class SimulationLoop {
   // per vehicle. world, scenario and both pilot vectors must outlive the loop, and the vectors
   // must not be resized while it runs: the loop holds pointers to their elements. Between two
   // stepControl calls a caller may point a quadrotor's VehiclePilot::controller (or reference)
-  // at another one: the next control step uses it as it is (the loop reset only the controllers
-  // it began with). believed_airframe is read once, here. The wall clock of the log starts here.
+  // at another one: the next control step uses it as it is (the loop resets only the
+  // controllers it begins with; reset a new one first if it keeps state). believed_airframe is
+  // read once, here. The wall clock of the log starts here.
   SimulationLoop(const WorldModel& world, const Scenario& scenario,
                  std::vector<GroundPilot>& robots, std::vector<VehiclePilot>& quadrotors,
                  const SimulationOptions& options);
