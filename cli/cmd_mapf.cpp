@@ -15,6 +15,7 @@
 #include "cli/mapf_benchmark.h"
 #include "cli/mapf_execution.h"
 #include "cli/option_checks.h"
+#include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "run/run_pipeline.h"
 #include "cli/set_options.h"

@@ -1,6 +1,6 @@
 #include "run/run_files.h"
 
-#include "core/output_files.h"
+#include "core/atomic_file.h"
 #include "render/run_outputs.h"
 #include "sim/run_log_io.h"
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "run/ground_run_pipeline.h"
-#include "core/output_files.h"
+#include "core/atomic_file.h"
 #include "experiments/sweep/generated_scenario.h"
 #include "core/input_error.h"
 #include "planning/planner_registry.h"
