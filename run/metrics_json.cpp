@@ -30,7 +30,8 @@ void addHeadline(JsonObject& j, const RunRecord& r) {
       .add("min_clearance_m", m.min_clearance_m)
       .add("sim_speed_x", m.sim_speed_x)
       // A robot's reference is its timed plan.
-      .add("error_reference", r.setup.ground() ? std::string("timed_plan") : m.team.error_reference);
+      .add("error_reference",
+           r.setup.ground() ? std::string("timed_plan") : m.team.error_reference);
 }
 
 // A flight: its quadrotors' airframe figures and how they were flown.

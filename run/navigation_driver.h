@@ -34,7 +34,8 @@ class NavigationDriver {
  public:
   // Throws InputError if the robot's start or goal lies in a blocked cell.
   NavigationDriver(std::unique_ptr<Navigator> navigator, NavigationWorld world,
-                   const std::string& file, const VehicleSpec& v, double tau, GroundTimedPath& path);
+                   const std::string& file, const VehicleSpec& v, double tau,
+                   GroundTimedPath& path);
 
   // Called before each control step (GroundSimOptions::before_control): false when the
   // navigator gives up.

@@ -18,7 +18,8 @@ namespace {
 // top speed (the rest is headroom for the feedback that corrects tracking errors).
 double cruiseSpeed(const Scenario& s, const RunSetup& setup, const WorldModel& world) {
   double slowest = std::numeric_limits<double>::infinity();
-  for (std::size_t v : setup.robots) slowest = std::min(slowest, world.vehicles()[v].drive.max_speed);
+  for (std::size_t v : setup.robots)
+    slowest = std::min(slowest, world.vehicles()[v].drive.max_speed);
   ParamSet p = s.trajectory_params;
   const double speed = p.getDouble("max_speed", 0.8 * slowest, 1e-3, 100.0);
   p.requireAllUsed("trajectory (ground robots: max_speed only)");
@@ -177,8 +178,8 @@ void planNavigation(const Scenario& s, const RunSetup& setup, const WorldModel& 
   p.requireAllUsed("planner '" + name + "' (in cosim run: resolution and sight)");
   plans.summary.params = p.effective();
   const std::size_t robot = setup.robots.front();
-  NavigationWorld nav = navigationWorld(s, world, robot, resolution, plans.cruise_speed,
-                                        plans.summary.inflation);
+  NavigationWorld nav =
+      navigationWorld(s, world, robot, resolution, plans.cruise_speed, plans.summary.inflation);
   plans.paths.resize(1);
   plans.navigator = std::make_unique<NavigationDriver>(
       std::move(navigator), std::move(nav), s.file, s.vehicles[robot],
@@ -206,14 +207,19 @@ RobotPlans planRobots(const Scenario& s, const RunSetup& setup, const WorldModel
   RobotPlans plans;
   plans.cruise_speed = cruiseSpeed(s, setup, world);
   switch (setup.robot_planning) {
-    case Planning::Navigator: planNavigation(s, setup, world, plans); break;
-    case Planning::Team: planTeam(s, setup, world, plans); break;
-    case Planning::Alone: planEach(s, setup, world, plans); break;
+    case Planning::Navigator:
+      planNavigation(s, setup, world, plans);
+      break;
+    case Planning::Team:
+      planTeam(s, setup, world, plans);
+      break;
+    case Planning::Alone:
+      planEach(s, setup, world, plans);
+      break;
   }
   // The timed plan's corners are rounded so that the robots can follow them within their
   // acceleration limit (GroundTimedPath::setSmoothing).
-  const double accel =
-      ParamSet(s.controller_gains).getDouble("max_acceleration", 1.0, 1e-3, 100.0);
+  const double accel = ParamSet(s.controller_gains).getDouble("max_acceleration", 1.0, 1e-3, 100.0);
   for (auto& path : plans.paths) path.setSmoothing(plans.cruise_speed / accel);
   return plans;
 }

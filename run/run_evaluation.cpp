@@ -64,8 +64,7 @@ std::string failureMessage(const RunPlan& plan, const RunMetrics& m) {
     why = "goal not reached within sim.max_time";
   else if (m.collisions > 0)
     why = "collision";
-  if (plan.status == PlanStatus::Conflicting)
-    why = plan.message + (why.empty() ? "" : "; " + why);
+  if (plan.status == PlanStatus::Conflicting) why = plan.message + (why.empty() ? "" : "; " + why);
   return why;
 }
 

@@ -20,8 +20,8 @@ namespace cosim {
 struct RobotSchedule {
   std::vector<double> planned_arrival_s;  // per robot: its timed plan's end, -1 if not planned
   double planned_makespan_s = 0.0;
-  double executed_makespan_s = 0.0;       // latest arrival (robots that arrived)
-  double sum_of_arrival_times_s = 0.0;    // robots that arrived
+  double executed_makespan_s = 0.0;     // latest arrival (robots that arrived)
+  double sum_of_arrival_times_s = 0.0;  // robots that arrived
 };
 
 struct RunMetrics {

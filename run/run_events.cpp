@@ -6,13 +6,20 @@ namespace cosim {
 
 const char* runStageName(RunStage stage) {
   switch (stage) {
-    case RunStage::Resolve: return "resolve";
-    case RunStage::Plan: return "plan";
-    case RunStage::BuildPilots: return "build_pilots";
-    case RunStage::Simulate: return "simulate";
-    case RunStage::Evaluate: return "evaluate";
-    case RunStage::Write: return "write";
-    case RunStage::Render: return "render";
+    case RunStage::Resolve:
+      return "resolve";
+    case RunStage::Plan:
+      return "plan";
+    case RunStage::BuildPilots:
+      return "build_pilots";
+    case RunStage::Simulate:
+      return "simulate";
+    case RunStage::Evaluate:
+      return "evaluate";
+    case RunStage::Write:
+      return "write";
+    case RunStage::Render:
+      return "render";
   }
   return "unknown";
 }

@@ -14,7 +14,7 @@
 namespace cosim {
 
 struct RunPilots {
-  std::vector<std::unique_ptr<GroundController>> robot_controllers;  // one per robot
+  std::vector<std::unique_ptr<GroundController>> robot_controllers;      // one per robot
   std::vector<std::unique_ptr<FlightController>> quadrotor_controllers;  // one per quadrotor
   // Filled when the plan is drivable, pointing into the plan and the controllers above.
   std::vector<GroundPilot> robots;

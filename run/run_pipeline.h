@@ -36,8 +36,8 @@ struct RunRequest {
 };
 
 struct RunSummary {
-  int status = 0;       // CONTRACT.md exit status: 0 ok, 1 task failed
-  std::string message;  // why the task failed
+  int status = 0;                      // CONTRACT.md exit status: 0 ok, 1 task failed
+  std::string message;                 // why the task failed
   std::vector<FlightMetrics> metrics;  // one per vehicle, in the scenario's order
   double sim_speed_x = 0.0;
   JsonObject metrics_json;  // metrics.json's object (as written into out_dir, if given)

@@ -35,7 +35,8 @@ std::vector<VehiclePlan> vehiclePlans(const Scenario& scenario, const RunSetup& 
     p = robots.plans[k];
     if (k >= robots.paths.size()) continue;
     p.path.waypoints.clear();
-    for (const auto& point : robots.paths[k].points()) p.path.waypoints.push_back(floorPoint(point));
+    for (const auto& point : robots.paths[k].points())
+      p.path.waypoints.push_back(floorPoint(point));
     p.point_times = robots.paths[k].times();
   }
   return plans;

@@ -18,7 +18,7 @@ struct RunRequest;
 struct RunPlan {
   PlanStatus status = PlanStatus::Ready;
   std::string message;  // why it is not Ready: the robots' failure first, then the quadrotors'
-  RobotPlans robots;          // empty in a run without robots
+  RobotPlans robots;    // empty in a run without robots
   QuadrotorPlans quadrotors;  // empty in a run without quadrotors
 
   bool drivable() const { return cosim::drivable(status); }

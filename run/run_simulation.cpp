@@ -25,8 +25,8 @@ RunLog unplannedLog(const Scenario& s) {
   return log;
 }
 
-RunLog fly(const Scenario& s, const WorldModel& world, RunPilots& pilots,
-           const RunRequest& request, const RunReporter& report) {
+RunLog fly(const Scenario& s, const WorldModel& world, RunPilots& pilots, const RunRequest& request,
+           const RunReporter& report) {
   report.message("flying (physics step " + std::to_string(s.sim.timestep) + " s)");
   FlightOptions options;
   options.settings = s.sim;

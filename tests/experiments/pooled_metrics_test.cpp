@@ -1,10 +1,10 @@
 // A team's top-level figures pool its vehicles: lengths and energy add up, the RMS error is over
 // every vehicle's tracked samples, extremes are the team's extremes; one vehicle is itself.
+#include "run/pooled_metrics.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "run/pooled_metrics.h"
 
 namespace cosim {
 namespace {
@@ -28,16 +28,34 @@ TEST(PooledMetrics, ATeamIsPooledOverItsMembersTrackedSamples) {
   RunLog log;
   log.vehicles = {loggedVehicle(10, 0.35), loggedVehicle(10, -1.0), loggedVehicle(10, 0.0)};
   std::vector<FlightMetrics> each(3);
-  each[0] = {.reached_goal = true, .collisions = 1, .planned_length_m = 2.0,
-             .flown_length_m = 2.5, .flight_time_s = 0.35, .error_reference = "trajectory",
-             .rmse_m = 0.3, .max_error_m = 0.5, .min_clearance_m = 0.4,
-             .peak_thrust_fraction = 0.7, .saturated_fraction = 0.1, .energy_proxy = 10.0,
-             .max_speed_mps = 1.0, .estimation_rmse_m = 0.02};
-  each[1] = {.reached_goal = false, .collisions = 0, .planned_length_m = 4.0,
-             .flown_length_m = 3.0, .flight_time_s = 0.9, .error_reference = "trajectory",
-             .rmse_m = 0.1, .max_error_m = 0.2, .min_clearance_m = 0.1,
-             .peak_thrust_fraction = 0.9, .saturated_fraction = 0.3, .energy_proxy = 5.0,
-             .max_speed_mps = 2.0, .estimation_rmse_m = 0.01};
+  each[0] = {.reached_goal = true,
+             .collisions = 1,
+             .planned_length_m = 2.0,
+             .flown_length_m = 2.5,
+             .flight_time_s = 0.35,
+             .error_reference = "trajectory",
+             .rmse_m = 0.3,
+             .max_error_m = 0.5,
+             .min_clearance_m = 0.4,
+             .peak_thrust_fraction = 0.7,
+             .saturated_fraction = 0.1,
+             .energy_proxy = 10.0,
+             .max_speed_mps = 1.0,
+             .estimation_rmse_m = 0.02};
+  each[1] = {.reached_goal = false,
+             .collisions = 0,
+             .planned_length_m = 4.0,
+             .flown_length_m = 3.0,
+             .flight_time_s = 0.9,
+             .error_reference = "trajectory",
+             .rmse_m = 0.1,
+             .max_error_m = 0.2,
+             .min_clearance_m = 0.1,
+             .peak_thrust_fraction = 0.9,
+             .saturated_fraction = 0.3,
+             .energy_proxy = 5.0,
+             .max_speed_mps = 2.0,
+             .estimation_rmse_m = 0.01};
   each[2].rmse_m = 100.0;  // not a member
   const FlightMetrics p = poolFlightMetrics(each, log, {0, 1});
   EXPECT_FALSE(p.reached_goal);

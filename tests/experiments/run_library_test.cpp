@@ -89,11 +89,11 @@ TEST(RunLibrary, ATeamsTopLevelFiguresAreTheWholeTeams) {
   const FlightMetrics& near = r.metrics[0];
   const FlightMetrics& far = r.metrics[1];
   EXPECT_NEAR(test::jsonNumber(metrics, "planned_length_m"), 6.0, 1e-9);  // 2 m + 4 m
-  EXPECT_NEAR(test::jsonNumber(metrics, "flown_length_m"),
-              near.flown_length_m + far.flown_length_m, 1e-6);
+  EXPECT_NEAR(test::jsonNumber(metrics, "flown_length_m"), near.flown_length_m + far.flown_length_m,
+              1e-6);
   EXPECT_NEAR(test::jsonNumber(metrics, "flight_time_s"), far.flight_time_s, 1e-9);  // longer
-  EXPECT_NEAR(test::jsonNumber(metrics, "max_error_m"),
-              std::max(near.max_error_m, far.max_error_m), 1e-9);
+  EXPECT_NEAR(test::jsonNumber(metrics, "max_error_m"), std::max(near.max_error_m, far.max_error_m),
+              1e-9);
   const double rmse = test::jsonNumber(metrics, "rmse_m");
   EXPECT_GT(rmse, std::min(near.rmse_m, far.rmse_m));
   EXPECT_LT(rmse, std::max(near.rmse_m, far.rmse_m));
@@ -101,8 +101,8 @@ TEST(RunLibrary, ATeamsTopLevelFiguresAreTheWholeTeams) {
 
 TEST(RunLibrary, AnObserverHearsTheStagesLinesAndNoFilesStages) {
   std::vector<RunEvent> events;
-  const RunSummary r =
-      runInEmptyFolder(kOneRobot, "library-events", [&](const RunEvent& e) { events.push_back(e); });
+  const RunSummary r = runInEmptyFolder(kOneRobot, "library-events",
+                                        [&](const RunEvent& e) { events.push_back(e); });
   ASSERT_EQ(r.status, 0) << r.message;
   std::vector<RunStage> stages;
   std::vector<std::string> lines;
@@ -115,9 +115,8 @@ TEST(RunLibrary, AnObserverHearsTheStagesLinesAndNoFilesStages) {
     EXPECT_EQ(e.stage, RunStage::Simulate);
     EXPECT_EQ(e.total, 11);  // the plan ends at 0.2 s + 4 m / 0.4 m/s = 10.2 s
   }
-  EXPECT_EQ(stages, (std::vector<RunStage>{RunStage::Resolve, RunStage::Plan,
-                                           RunStage::BuildPilots, RunStage::Simulate,
-                                           RunStage::Evaluate}));
+  EXPECT_EQ(stages, (std::vector<RunStage>{RunStage::Resolve, RunStage::Plan, RunStage::BuildPilots,
+                                           RunStage::Simulate, RunStage::Evaluate}));
   EXPECT_EQ(lines, std::vector<std::string>{"driving 1 ground robot(s)"});
   EXPECT_GE(progress, 11);  // one per simulated second
 }
