@@ -16,10 +16,76 @@ namespace cosim {
 
 namespace {
 
-const char* const kTimeseriesHeader =
-    "t,ref_x,ref_y,ref_z,ref_vx,ref_vy,ref_vz,x,y,z,vx,vy,vz,qw,qx,qy,qz,roll_deg,pitch_deg,"
-    "yaw_deg,p,q,r,cmd0,cmd1,cmd2,cmd3,thrust0,thrust1,thrust2,thrust3,saturated,est_x,est_y,est_z,"
-    "est_vx,est_vy,est_vz,est_qw,est_qx,est_qy,est_qz,w0,w1,w2,w3,vehicle";
+// One numeric column of timeseries.csv: its header name and its value in a sample. The file
+// writer and timeseriesColumns both read this table, so that the columns a front end gets in
+// memory are the file's, in the file's order. (The last column, the vehicle's name, is text.)
+struct TimeseriesColumn {
+  const char* name;
+  double (*value)(const LogSample&);
+};
+
+// Euler angles (ZYX, degrees) of an attitude, as the file has always written them.
+double rollDeg(const LogSample& s) {
+  const Eigen::Matrix3d R = s.att.toRotationMatrix();
+  return std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI;
+}
+double pitchDeg(const LogSample& s) {
+  const Eigen::Matrix3d R = s.att.toRotationMatrix();
+  return -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI;
+}
+double yawDeg(const LogSample& s) {
+  const Eigen::Matrix3d R = s.att.toRotationMatrix();
+  return std::atan2(R(1, 0), R(0, 0)) * 180.0 / M_PI;
+}
+
+const TimeseriesColumn kTimeseriesColumns[] = {
+    {"t", [](const LogSample& s) { return s.t; }},
+    {"ref_x", [](const LogSample& s) { return s.ref_pos.x(); }},
+    {"ref_y", [](const LogSample& s) { return s.ref_pos.y(); }},
+    {"ref_z", [](const LogSample& s) { return s.ref_pos.z(); }},
+    {"ref_vx", [](const LogSample& s) { return s.ref_vel.x(); }},
+    {"ref_vy", [](const LogSample& s) { return s.ref_vel.y(); }},
+    {"ref_vz", [](const LogSample& s) { return s.ref_vel.z(); }},
+    {"x", [](const LogSample& s) { return s.pos.x(); }},
+    {"y", [](const LogSample& s) { return s.pos.y(); }},
+    {"z", [](const LogSample& s) { return s.pos.z(); }},
+    {"vx", [](const LogSample& s) { return s.vel.x(); }},
+    {"vy", [](const LogSample& s) { return s.vel.y(); }},
+    {"vz", [](const LogSample& s) { return s.vel.z(); }},
+    {"qw", [](const LogSample& s) { return s.att.w(); }},
+    {"qx", [](const LogSample& s) { return s.att.x(); }},
+    {"qy", [](const LogSample& s) { return s.att.y(); }},
+    {"qz", [](const LogSample& s) { return s.att.z(); }},
+    {"roll_deg", [](const LogSample& s) { return rollDeg(s); }},
+    {"pitch_deg", [](const LogSample& s) { return pitchDeg(s); }},
+    {"yaw_deg", [](const LogSample& s) { return yawDeg(s); }},
+    {"p", [](const LogSample& s) { return s.omega.x(); }},
+    {"q", [](const LogSample& s) { return s.omega.y(); }},
+    {"r", [](const LogSample& s) { return s.omega.z(); }},
+    {"cmd0", [](const LogSample& s) { return s.rotor_cmd[0]; }},
+    {"cmd1", [](const LogSample& s) { return s.rotor_cmd[1]; }},
+    {"cmd2", [](const LogSample& s) { return s.rotor_cmd[2]; }},
+    {"cmd3", [](const LogSample& s) { return s.rotor_cmd[3]; }},
+    {"thrust0", [](const LogSample& s) { return s.rotor_thrust[0]; }},
+    {"thrust1", [](const LogSample& s) { return s.rotor_thrust[1]; }},
+    {"thrust2", [](const LogSample& s) { return s.rotor_thrust[2]; }},
+    {"thrust3", [](const LogSample& s) { return s.rotor_thrust[3]; }},
+    {"saturated", [](const LogSample& s) { return s.saturated ? 1.0 : 0.0; }},
+    {"est_x", [](const LogSample& s) { return s.est_pos.x(); }},
+    {"est_y", [](const LogSample& s) { return s.est_pos.y(); }},
+    {"est_z", [](const LogSample& s) { return s.est_pos.z(); }},
+    {"est_vx", [](const LogSample& s) { return s.est_vel.x(); }},
+    {"est_vy", [](const LogSample& s) { return s.est_vel.y(); }},
+    {"est_vz", [](const LogSample& s) { return s.est_vel.z(); }},
+    {"est_qw", [](const LogSample& s) { return s.est_att.w(); }},
+    {"est_qx", [](const LogSample& s) { return s.est_att.x(); }},
+    {"est_qy", [](const LogSample& s) { return s.est_att.y(); }},
+    {"est_qz", [](const LogSample& s) { return s.est_att.z(); }},
+    {"w0", [](const LogSample& s) { return s.rotor_speed[0]; }},
+    {"w1", [](const LogSample& s) { return s.rotor_speed[1]; }},
+    {"w2", [](const LogSample& s) { return s.rotor_speed[2]; }},
+    {"w3", [](const LogSample& s) { return s.rotor_speed[3]; }},
+};
 
 void put(std::string& out, double v) {
   char buf[32];
@@ -127,37 +193,28 @@ double sampleTime(const CsvLogReader& in, const LogBounds& bounds, double previo
 }  // namespace
 
 std::string timeseriesCsv(const RunLog& log) {
-  std::string out = std::string(kTimeseriesHeader) + "\n";
+  std::string out;
+  for (const TimeseriesColumn& c : kTimeseriesColumns) out += std::string(c.name) + ",";
+  out += "vehicle\n";
   for (const VehicleLog& v : log.vehicles) {
     for (const LogSample& s : v.samples) {
-      put(out, s.t);
-      for (int i = 0; i < 3; ++i) put(out, s.ref_pos[i]);
-      for (int i = 0; i < 3; ++i) put(out, s.ref_vel[i]);
-      for (int i = 0; i < 3; ++i) put(out, s.pos[i]);
-      for (int i = 0; i < 3; ++i) put(out, s.vel[i]);
-      put(out, s.att.w());
-      put(out, s.att.x());
-      put(out, s.att.y());
-      put(out, s.att.z());
-      const Eigen::Matrix3d R = s.att.toRotationMatrix();
-      put(out, std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI);
-      put(out, -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI);
-      put(out, std::atan2(R(1, 0), R(0, 0)) * 180.0 / M_PI);
-      for (int i = 0; i < 3; ++i) put(out, s.omega[i]);
-      for (int i = 0; i < 4; ++i) put(out, s.rotor_cmd[i]);
-      for (int i = 0; i < 4; ++i) put(out, s.rotor_thrust[i]);
-      out += s.saturated ? "1," : "0,";
-      for (int i = 0; i < 3; ++i) put(out, s.est_pos[i]);
-      for (int i = 0; i < 3; ++i) put(out, s.est_vel[i]);
-      put(out, s.est_att.w());
-      put(out, s.est_att.x());
-      put(out, s.est_att.y());
-      put(out, s.est_att.z());
-      for (int i = 0; i < 4; ++i) put(out, s.rotor_speed[i]);
+      for (const TimeseriesColumn& c : kTimeseriesColumns) put(out, c.value(s));
       out += csvField(v.name) + "\n";
     }
   }
   return out;
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> timeseriesColumns(const RunLog& log,
+                                                                           std::size_t vehicle) {
+  std::vector<std::pair<std::string, std::vector<double>>> columns;
+  const std::vector<LogSample>& samples = log.vehicles.at(vehicle).samples;
+  for (const TimeseriesColumn& c : kTimeseriesColumns) {
+    std::vector<double>& values = columns.emplace_back(c.name, std::vector<double>()).second;
+    values.reserve(samples.size());
+    for (const LogSample& s : samples) values.push_back(c.value(s));
+  }
+  return columns;
 }
 
 std::string pathCsv(const RunLog& log) {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/run_log.h"
@@ -13,6 +14,11 @@
 namespace cosim {
 
 std::string timeseriesCsv(const RunLog& log);
+// The numeric columns of timeseries.csv for log.vehicles[vehicle] (throws std::out_of_range past
+// the last vehicle), by header name in the file's order, one value per sample: the same column
+// definitions as the file (the vehicle's name, a text column, is left out).
+std::vector<std::pair<std::string, std::vector<double>>> timeseriesColumns(const RunLog& log,
+                                                                           std::size_t vehicle);
 std::string pathCsv(const RunLog& log);
 std::string movingObstaclesCsv(const RunLog& log);
 
