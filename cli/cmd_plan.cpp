@@ -59,7 +59,9 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     const WorldModel world = WorldModel::build(s);
     const VehiclePlan plan = planVehicle(s, s.vehicles.front(), world.vehicles().front().params.radius,
                                          s.planner_params);
-    if (stopRequested()) {  // the planner stopped early: its outcome is no result
+    // A planner ended by the stop request says so; a request that came after it returned is an
+    // interrupt all the same.
+    if (plan.status == PlannerStatus::Stopped || stopRequested()) {
       std::cerr << "cosim: interrupted; " << dir.string() << " holds no plan\n";
       ctx.status = 1;
       return;
@@ -72,6 +74,7 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     }
     JsonObject j;
     j.add("success", plan.success)
+        .add("status", toString(plan.status))
         .add("length_m", plan.success ? plan.path.length() : 0.0)
         .add("time_ms", plan.time_ms)
         .add("waypoints", plan.path.size())
