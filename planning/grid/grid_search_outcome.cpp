@@ -47,7 +47,7 @@ GridPlanResult gridSearchResult(const GridSearchSpace& space,
       r.cells.push_back(space.cellOf(*it));
     r.length = gridPathLength(r.cells);
     r.success = true;
-    r.status = PlannerStatus::ExactSolution;
+    r.status = searchStatus(true, clock, PlannerStatus::NoSolution);
   } else if (end == GridSearchEnd::TimeLimit) {
     r.status = expiredStatus(clock);
     r.message = "time limit";

@@ -68,7 +68,7 @@ NavigationRun runNavigation(Navigator& navigator, const NavigationWorld& world, 
     if (limits.record_decisions) run.decisions.push_back(std::move(d));
   }
   run.reached = at.x == goal.x && at.y == goal.y;
-  if (run.reached) run.status = PlannerStatus::ExactSolution;
+  if (run.reached) run.status = searchStatus(true, deadline, PlannerStatus::NoSolution);
   run.travel_time = t;
   run.mean_plan_ms = decisions > 0 ? plan_ms_sum / static_cast<double>(decisions) : 0.0;
   return run;
