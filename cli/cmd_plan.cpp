@@ -3,11 +3,11 @@
 
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
+#include "cli/planner_list.h"
 #include "core/output_files.h"
 #include "run/scenario_checks.h"
 #include "run/scenario_planning.h"
 #include "core/input_error.h"
-#include "planning/planner_registry.h"
 #include "core/stop_request.h"
 #include "core/json_writer.h"
 #include "sim/world_model.h"
@@ -18,7 +18,9 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
   auto* cmd = app.add_subcommand(
       "plan",
       "Plan the first vehicle's path in a scenario's world, without physics. Writes path.csv and\n"
-      "plan.json (success, length_m, time_ms, counters, planner, params). Exit 1 if no path.");
+      "plan.json (success, status, length_m, time_ms, counters, planner, params). Exit 1 if no\n"
+      "path or interrupted. `cosim plan --list` lists every planner with its parameters (name,\n"
+      "default, valid values, what it does).");
   struct Args {
     std::string scenario, planner, out;
     std::vector<std::string> sets;
@@ -29,11 +31,11 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--planner", a->planner, "planner name (overrides planner.name)");
   cmd->add_option("--out", a->out, "output folder (default: a new folder under out/)");
   cmd->add_option("--set", a->sets, "override a scenario key, e.g. --set planner.resolution=0.25");
-  cmd->add_flag("--list", a->list, "list the planners and exit");
+  cmd->add_flag("--list", a->list,
+                "list every planner with its parameters (default, valid values, meaning) and exit");
   cmd->callback([a, &ctx] {
     if (a->list) {
-      for (const auto& e : PlannerRegistry::instance().entries())
-        std::cout << e.name << "\t" << e.family << "\t" << e.summary << "\n";
+      std::cout << plannerListText();
       return;
     }
     if (a->scenario.empty()) throw InputError("command line", "plan", "a scenario file is required");
