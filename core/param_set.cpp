@@ -22,10 +22,12 @@ std::string formatNumber(double v) {
 // is no bound.
 template <class T>
 std::string rangeText(T lo, T hi, T lowest, T highest, std::string (*format)(T)) {
+  // (appended piecewise: GCC 12 warns falsely on "..." + std::string, -Wrestrict)
+  std::string text;
   if (lo <= lowest && hi >= highest) return "any";
-  if (hi >= highest) return ">= " + format(lo);
-  if (lo <= lowest) return "<= " + format(hi);
-  return "[" + format(lo) + ", " + format(hi) + "]";
+  if (hi >= highest) return text.append(">= ").append(format(lo));
+  if (lo <= lowest) return text.append("<= ").append(format(hi));
+  return text.append("[").append(format(lo)).append(", ").append(format(hi)).append("]");
 }
 std::string formatInt(long v) {
   return std::to_string(v);
