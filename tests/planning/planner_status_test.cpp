@@ -11,6 +11,8 @@
 #include "core/stop_request.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/planner_registry.h"
+#include "planning/trajectory/minimum_snap_trajectory.h"
+#include "planning/trajectory/segment_time_allocation.h"
 
 using namespace cosim;
 
@@ -115,6 +117,36 @@ TEST_P(EveryTeamPlanner, TheCallersStopFlagEndsTheSearchAsStopped) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryTeamPlanner, ::testing::ValuesIn(teamPlanners()));
+
+// The trajectory optimisation honours the stop request too: NLopt is stopped (force_stop) at its
+// first cost evaluation, and the fit ends as Stopped instead of running its repair rounds.
+TEST(MinimumSnapStop, AStopRequestStopsNloptAndTheFit) {
+  Path zigzag;
+  for (int i = 0; i < 12; ++i) zigzag.waypoints.push_back({2.0 * i, (i % 2) * 3.0, 1.0});
+  const MinimumSnapTrajectory generator;
+  const MinimumSnapResult free_fit = generator.fit(zigzag);
+  ASSERT_TRUE(free_fit.success);
+  EXPECT_EQ(free_fit.status, PlannerStatus::ExactSolution);
+  EXPECT_GT(free_fit.counters.at("cost_evaluations"), 1.0);
+
+  std::vector<Eigen::Vector3d> points = zigzag.waypoints;
+  const MinimumSnapClosedForm closed_form(points);
+  const std::vector<double> initial = distanceProportionalTimes(closed_form, 100.0);
+  const std::atomic<bool> stop{true};
+  const StopToken token(1e9, &stop);
+  const TimeAllocationResult allocation =
+      optimizeSegmentTimes(closed_form, initial, 100.0, 400, &token);
+  EXPECT_TRUE(allocation.stopped);
+  EXPECT_EQ(allocation.evaluations, 0);
+  EXPECT_EQ(allocation.durations, initial);
+
+  requestStop();
+  const MinimumSnapResult stopped = generator.fit(zigzag);
+  clearStopRequest();
+  EXPECT_FALSE(stopped.success);
+  EXPECT_EQ(stopped.status, PlannerStatus::Stopped);
+  EXPECT_EQ(stopped.counters.at("cost_evaluations"), 0.0);
+}
 
 TEST(PlannerStatus, EveryValueHasItsOwnName) {
   std::set<std::string> names;
