@@ -2,9 +2,9 @@
 // `cosim mapf --execute`: a MAPF instance on a MovingAI map, driven by ground robots in MuJoCo.
 // The instance becomes an ordinary scenario (world.grid_map with the map, one robot per agent at
 // its start cell's centre, the same planner and parameters), written next to the results so the
-// execution can be re-run with `cosim run`, and executed by the ground pipeline, which plans the
-// team on the map's own cells (the same plan as the command printed: same planner, parameters
-// and seed) and drives it.
+// execution can be re-run with `cosim run` (which plans again: same planner, parameters and seed
+// on the map's own cells), and executed by the ground pipeline, which drives the plan the command
+// printed and wrote (RunRequest::given_team_plan) instead of searching a second time.
 #include <cstdint>
 #include <string>
 #include <vector>

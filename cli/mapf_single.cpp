@@ -121,8 +121,8 @@ std::string mapfJson(const MapfArgs& a, const MapfInstance& inst, const ParamSet
 }
 
 // Ground robots drive the written plan in MuJoCo; the run's files go to DIR/execution/.
-int executePlan(const MapfArgs& a, Scenario execution, const std::filesystem::path& dir,
-                const std::atomic<bool>& interrupt) {
+int executePlan(const MapfArgs& a, Scenario execution, const MapfResult& plan,
+                const std::filesystem::path& dir, const std::atomic<bool>& interrupt) {
   const std::filesystem::path exec_dir = dir / "execution";
   std::filesystem::create_directories(exec_dir);
   execution.file = (exec_dir / "scenario.yaml").string();  // where the run writes it
@@ -130,6 +130,7 @@ int executePlan(const MapfArgs& a, Scenario execution, const std::filesystem::pa
   request.out_dir = exec_dir;
   request.video = a.video;
   request.interrupt = &interrupt;
+  request.given_team_plan = &plan;  // the plan just written, not a second search
   RunConsole console(true);
   request.observer = console.observer();
   const RunSummary run = executeRun(execution, request);
@@ -197,7 +198,7 @@ int runSingleMapf(const MapfArgs& a, int agents) {
     std::cerr << "cosim: no valid plan to execute\n";
     return 1;
   }
-  return executePlan(a, execution, dir, interrupt);
+  return executePlan(a, execution, result, dir, interrupt);
 }
 
 }  // namespace cosim::cli

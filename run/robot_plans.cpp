@@ -110,9 +110,10 @@ void teamVehiclePlans(const MapfResult& r, RobotPlans& plans) {
   }
 }
 
-// Team plan: a multi-robot planner on the planar grid, executed one grid step per step_time.
+// Team plan: a multi-robot planner on the planar grid, executed one grid step per step_time. A
+// given plan (made by the caller on the same instance) is checked and timed like the planner's.
 void planTeam(const Scenario& s, const RunSetup& setup, const WorldModel& world,
-              RobotPlans& plans) {
+              const MapfResult* given, RobotPlans& plans) {
   ParamSet p = s.planner_params;
   const TeamGrid g = readTeamGrid(s, p);
   const double radius = largestRadius(setup, world);
@@ -124,7 +125,7 @@ void planTeam(const Scenario& s, const RunSetup& setup, const WorldModel& world,
   query.instance = &instance;
   query.time_limit_s = g.time_limit;
   query.seed = s.sim.seed;
-  const MapfResult r = planner->solve(query);
+  const MapfResult r = given ? *given : planner->solve(query);
   plans.summary.time_ms = r.time_ms;
   plans.summary.counters = r.counters;
   const MapfValidation check = validateMapfSolution(instance, r.paths);
@@ -203,7 +204,8 @@ OccupancyGrid robotGrid(const Scenario& s, double resolution, double inflation) 
                                   s.world.bounds_min.z() + 0.1);
 }
 
-RobotPlans planRobots(const Scenario& s, const RunSetup& setup, const WorldModel& world) {
+RobotPlans planRobots(const Scenario& s, const RunSetup& setup, const WorldModel& world,
+                      const MapfResult* given_team_plan) {
   RobotPlans plans;
   plans.cruise_speed = cruiseSpeed(s, setup, world);
   switch (setup.robot_planning) {
@@ -211,7 +213,7 @@ RobotPlans planRobots(const Scenario& s, const RunSetup& setup, const WorldModel
       planNavigation(s, setup, world, plans);
       break;
     case Planning::Team:
-      planTeam(s, setup, world, plans);
+      planTeam(s, setup, world, given_team_plan, plans);
       break;
     case Planning::Alone:
       planEach(s, setup, world, plans);

@@ -10,6 +10,7 @@
 
 #include "control/ground_timed_path.h"
 #include "planning/grid/occupancy_grid.h"
+#include "planning/mapf/mapf_problem.h"
 #include "run/group_plan.h"
 #include "run/run_setup.h"
 #include "run/scenario_planning.h"
@@ -53,7 +54,10 @@ struct RobotPlans {
 // Plans scenario.vehicles[i] for each i in setup.robots with the scenario's top-level planner.
 // Throws InputError for bad planner or trajectory parameters, starts or goals the planner's grid
 // cannot hold, or robots too large for world.grid_map's cells.
-RobotPlans planRobots(const Scenario& scenario, const RunSetup& setup, const WorldModel& world);
+// With `given_team_plan` (Planning::Team only), that plan is timed and driven instead of the
+// planner's own.
+RobotPlans planRobots(const Scenario& scenario, const RunSetup& setup, const WorldModel& world,
+                      const MapfResult* given_team_plan = nullptr);
 
 // Throws InputError (at world.grid_map.cell) unless robots of `robot_radius` plus the planner's
 // margin fit the cells of the scenario's grid map for a team plan of `connectivity` (4 or 8).

@@ -4,7 +4,7 @@
 
 #include "control/ground_feedback_linearization.h"
 #include "control/ground_velocity_tracker.h"
-#include "sim/controller_factory.h"
+#include "control/controller_factory.h"
 
 namespace cosim {
 

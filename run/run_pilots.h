@@ -1,6 +1,6 @@
 #pragma once
 // The pilots stage of a run: a controller for every vehicle (a ground robot's path follower, a
-// quadrotor's flight controller, sim/controller_factory.h) and, when the plan can be driven,
+// quadrotor's flight controller, control/controller_factory.h) and, when the plan can be driven,
 // the pilots that tie each controller to its plan for the simulation loop.
 #include <memory>
 #include <vector>

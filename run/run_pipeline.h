@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/json_writer.h"
+#include "planning/mapf/mapf_problem.h"
 #include "run/run_events.h"
 #include "run/scenario_planning.h"
 #include "sim/flight_metrics.h"
@@ -33,6 +34,10 @@ struct RunRequest {
   // Plan for a point: ignore the vehicle's size and the margin, as seed 003 did (for its
   // reproduction only; flights planned this way clip obstacles).
   bool plan_as_point_mass = false;
+  // A team plan already made for this scenario's robots (cosim mapf --execute prints and writes
+  // it first): the robots drive it instead of planning again. It must solve the run's own team
+  // instance (same grid cells, starts and goals); the independent validator checks that it does.
+  const MapfResult* given_team_plan = nullptr;
 };
 
 struct RunSummary {

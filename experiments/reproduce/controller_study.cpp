@@ -17,7 +17,7 @@
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "render/figures.h"
-#include "sim/controller_factory.h"
+#include "control/controller_factory.h"
 #include "sim/flight_metrics.h"
 #include "sim/flight_simulation.h"
 #include "core/json_writer.h"

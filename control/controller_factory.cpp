@@ -1,4 +1,4 @@
-#include "sim/controller_factory.h"
+#include "control/controller_factory.h"
 
 #include "control/cascade_controller.h"
 #include "control/dsl_pid_controller.h"
