@@ -748,6 +748,8 @@ RunSummary executeGroundRun(Scenario& scenario, const RunRequest& request) {
   // Interrupted while rendering: no index.html, no metrics.json, nothing that looks finished.
   if (!writeRunFiles(world, scenario, log, request, drive, metrics, summary))
     return interruptedRun();
+  summary.metrics_json = std::move(metrics);
+  summary.log = std::move(log);
   return summary;
 }
 

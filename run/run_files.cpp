@@ -14,6 +14,7 @@ bool writeRunFiles(const WorldModel& world, const Scenario& scenario, const RunL
                    const RunRequest& request, bool render, const JsonObject& metrics,
                    const RunSummary& summary) {
   const auto& dir = request.out_dir;
+  if (dir.empty()) return true;  // the caller keeps the run in memory (RunSummary)
   // A folder reused with --out lost an earlier run's results when this run started
   // (kRunResultNames); the marks of a finished run go again in case something wrote them since.
   std::error_code ignored;

@@ -13,7 +13,8 @@ namespace cosim {
 extern const std::vector<std::string> kRunResultNames;
 
 // `render`: whether there is anything to draw (false when planning failed). Returns false, with
-// no index.html and no metrics.json written, if the interrupt flag stopped the rendering.
+// no index.html and no metrics.json written, if the interrupt flag stopped the rendering. Writes
+// and renders nothing, returning true, when request.out_dir is empty.
 bool writeRunFiles(const WorldModel& world, const Scenario& scenario, const RunLog& log,
                    const RunRequest& request, bool render, const JsonObject& metrics,
                    const RunSummary& summary);

@@ -68,7 +68,10 @@ bool stopRequestedFor(const RunRequest& request) {
 }
 
 RunSummary interruptedRun() {
-  return RunSummary{.status = 1, .message = "interrupted", .metrics = {}, .sim_speed_x = 0.0};
+  RunSummary summary;
+  summary.status = 1;
+  summary.message = "interrupted";
+  return summary;
 }
 
 RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
@@ -211,6 +214,8 @@ RunSummary executeRun(Scenario& scenario, const RunRequest& request) {
   // Interrupted while rendering: no index.html, no metrics.json, nothing that looks finished.
   if (!writeRunFiles(world, scenario, log, request, all_planned, metrics, summary))
     return interruptedRun();
+  summary.metrics_json = std::move(metrics);
+  summary.log = std::move(log);
   return summary;
 }
 

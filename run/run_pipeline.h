@@ -14,7 +14,9 @@
 namespace cosim {
 
 struct RunRequest {
-  std::filesystem::path out_dir;  // created beforehand
+  // Created beforehand. Empty: no files at all and nothing rendered (the caller, e.g. Python's
+  // cosim.run, takes the metrics and the log from the RunSummary).
+  std::filesystem::path out_dir;
   bool video = true;
   bool images = true;     // final.png
   bool progress = false;  // progress lines on stderr
@@ -29,6 +31,8 @@ struct RunSummary {
   std::string message;  // why the task failed
   std::vector<FlightMetrics> metrics;
   double sim_speed_x = 0.0;
+  JsonObject metrics_json;  // exactly what metrics.json holds (also when no files are written)
+  RunLog log;               // what timeseries.csv and path.csv are written from
 };
 
 // Throws InputError for bad input discovered late (unknown planner, bad gains). Stopped by the

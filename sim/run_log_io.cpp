@@ -1,6 +1,7 @@
 #include "sim/run_log_io.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -16,10 +17,53 @@ namespace cosim {
 
 namespace {
 
-const char* const kTimeseriesHeader =
-    "t,ref_x,ref_y,ref_z,ref_vx,ref_vy,ref_vz,x,y,z,vx,vy,vz,qw,qx,qy,qz,roll_deg,pitch_deg,"
-    "yaw_deg,p,q,r,cmd0,cmd1,cmd2,cmd3,thrust0,thrust1,thrust2,thrust3,saturated,est_x,est_y,est_z,"
-    "est_vx,est_vy,est_vz,est_qw,est_qx,est_qy,est_qz,w0,w1,w2,w3,vehicle";
+// timeseries.csv's numeric columns, in order (the file adds `vehicle`, the name, last), and
+// their values for one sample: the one definition behind timeseriesCsv and timeseriesColumns.
+constexpr std::array<const char*, 46> kTimeseriesColumns = {
+    "t",      "ref_x",    "ref_y",     "ref_z",   "ref_vx",  "ref_vy",  "ref_vz",  "x",
+    "y",      "z",        "vx",        "vy",      "vz",      "qw",      "qx",      "qy",
+    "qz",     "roll_deg", "pitch_deg", "yaw_deg", "p",       "q",       "r",       "cmd0",
+    "cmd1",   "cmd2",     "cmd3",      "thrust0", "thrust1", "thrust2", "thrust3", "saturated",
+    "est_x",  "est_y",    "est_z",     "est_vx",  "est_vy",  "est_vz",  "est_qw",  "est_qx",
+    "est_qy", "est_qz",   "w0",        "w1",      "w2",      "w3"};
+using TimeseriesRow = std::array<double, kTimeseriesColumns.size()>;
+
+TimeseriesRow timeseriesRow(const LogSample& s) {
+  TimeseriesRow row;
+  std::size_t i = 0;
+  const auto put3 = [&](const Eigen::Vector3d& v) {
+    for (int k = 0; k < 3; ++k) row[i++] = v[k];
+  };
+  const auto put4 = [&](const Eigen::Vector4d& v) {
+    for (int k = 0; k < 4; ++k) row[i++] = v[k];
+  };
+  const auto putQuaternion = [&](const Eigen::Quaterniond& q) {
+    row[i++] = q.w();
+    row[i++] = q.x();
+    row[i++] = q.y();
+    row[i++] = q.z();
+  };
+  row[i++] = s.t;
+  put3(s.ref_pos);
+  put3(s.ref_vel);
+  put3(s.pos);
+  put3(s.vel);
+  putQuaternion(s.att);
+  // Roll, pitch and yaw (Z-Y-X Euler angles) of the attitude, degrees.
+  const Eigen::Matrix3d R = s.att.toRotationMatrix();
+  row[i++] = std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI;
+  row[i++] = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI;
+  row[i++] = std::atan2(R(1, 0), R(0, 0)) * 180.0 / M_PI;
+  put3(s.omega);
+  put4(s.rotor_cmd);
+  put4(s.rotor_thrust);
+  row[i++] = s.saturated ? 1.0 : 0.0;
+  put3(s.est_pos);
+  put3(s.est_vel);
+  putQuaternion(s.est_att);
+  put4(s.rotor_speed);
+  return row;
+}
 
 void put(std::string& out, double v) {
   char buf[32];
@@ -127,37 +171,32 @@ double sampleTime(const CsvLogReader& in, const LogBounds& bounds, double previo
 }  // namespace
 
 std::string timeseriesCsv(const RunLog& log) {
-  std::string out = std::string(kTimeseriesHeader) + "\n";
+  std::string out;
+  for (const char* name : kTimeseriesColumns) out += std::string(name) + ",";
+  out += "vehicle\n";
   for (const VehicleLog& v : log.vehicles) {
     for (const LogSample& s : v.samples) {
-      put(out, s.t);
-      for (int i = 0; i < 3; ++i) put(out, s.ref_pos[i]);
-      for (int i = 0; i < 3; ++i) put(out, s.ref_vel[i]);
-      for (int i = 0; i < 3; ++i) put(out, s.pos[i]);
-      for (int i = 0; i < 3; ++i) put(out, s.vel[i]);
-      put(out, s.att.w());
-      put(out, s.att.x());
-      put(out, s.att.y());
-      put(out, s.att.z());
-      const Eigen::Matrix3d R = s.att.toRotationMatrix();
-      put(out, std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI);
-      put(out, -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI);
-      put(out, std::atan2(R(1, 0), R(0, 0)) * 180.0 / M_PI);
-      for (int i = 0; i < 3; ++i) put(out, s.omega[i]);
-      for (int i = 0; i < 4; ++i) put(out, s.rotor_cmd[i]);
-      for (int i = 0; i < 4; ++i) put(out, s.rotor_thrust[i]);
-      out += s.saturated ? "1," : "0,";
-      for (int i = 0; i < 3; ++i) put(out, s.est_pos[i]);
-      for (int i = 0; i < 3; ++i) put(out, s.est_vel[i]);
-      put(out, s.est_att.w());
-      put(out, s.est_att.x());
-      put(out, s.est_att.y());
-      put(out, s.est_att.z());
-      for (int i = 0; i < 4; ++i) put(out, s.rotor_speed[i]);
+      for (double x : timeseriesRow(s)) put(out, x);
       out += csvField(v.name) + "\n";
     }
   }
   return out;
+}
+
+std::vector<std::pair<std::string, std::vector<double>>> timeseriesColumns(const RunLog& log,
+                                                                           std::size_t vehicle) {
+  std::vector<std::pair<std::string, std::vector<double>>> columns;
+  if (vehicle >= log.vehicles.size()) return columns;
+  const std::vector<LogSample>& samples = log.vehicles[vehicle].samples;
+  for (const char* name : kTimeseriesColumns) {
+    columns.emplace_back(name, std::vector<double>());
+    columns.back().second.reserve(samples.size());
+  }
+  for (const LogSample& s : samples) {
+    const TimeseriesRow row = timeseriesRow(s);
+    for (std::size_t c = 0; c < row.size(); ++c) columns[c].second.push_back(row[c]);
+  }
+  return columns;
 }
 
 std::string pathCsv(const RunLog& log) {

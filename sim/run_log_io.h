@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "sim/run_log.h"
@@ -13,6 +14,11 @@
 namespace cosim {
 
 std::string timeseriesCsv(const RunLog& log);
+// timeseries.csv's numeric columns (all but `vehicle`) for log.vehicles[vehicle], as (name,
+// values) in the file's order and with its definitions (timeseriesCsv writes these same values);
+// empty for a vehicle index past the log's.
+std::vector<std::pair<std::string, std::vector<double>>> timeseriesColumns(const RunLog& log,
+                                                                           std::size_t vehicle);
 std::string pathCsv(const RunLog& log);
 std::string movingObstaclesCsv(const RunLog& log);
 
