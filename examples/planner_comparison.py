@@ -62,12 +62,12 @@ def main():
     seeds = range(1, 3 if args.quick else args.seeds + 1)
 
     results = compare(args.scenario, planners, seeds)
-    print(f"{'planner':<20} {'found':>5} {'length_m':>10} {'time_ms':>10}")
+    print(f"{'planner':<20} {'found':>5} {'median length_m':>16} {'median time_ms':>15}")
     for planner, runs in results.items():
         found = [p for _, p in runs if p.success]
         length = statistics.median(p.length_m for p in found) if found else float("nan")
         time_ms = statistics.median(p.time_ms for p in found) if found else float("nan")
-        print(f"{planner:<20} {len(found):>2}/{len(runs):<2} {length:>10.2f} {time_ms:>10.1f}")
+        print(f"{planner:<20} {len(found):>2}/{len(runs):<2} {length:>16.2f} {time_ms:>15.1f}")
     plot(results, args.out)
     print(f"figure: {args.out}")
 
