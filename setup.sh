@@ -14,7 +14,7 @@ PACKAGES=(
   libnlopt-cxx-dev libyaml-cpp-dev libcli11-dev
   ffmpeg                              # H.264 video and PNG output
   libgtest-dev libgmock-dev libbenchmark-dev
-  nlohmann-json3-dev                  # tests read every JSON file cosim writes with a real parser
+  nlohmann-json3-dev                  # JSON: what cosim writes and reads back (core/)
   libompl-dev libboost-graph-dev libnanoflann-dev   # peers for the benchmarks, k-d tree
   gnuplot-nox                         # figures
   chromium                            # the HTML report test opens the report headless

@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "cli/command.h"
-#include "core/output_files.h"
+#include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "sim/world_model.h"
 

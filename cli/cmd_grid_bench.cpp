@@ -11,6 +11,7 @@
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
+#include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "cli/set_options.h"
 #include "planning/grid/movingai.h"

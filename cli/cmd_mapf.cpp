@@ -10,11 +10,13 @@
 #include <limits>
 
 #include "cli/command.h"
-#include "run/ground_run_pipeline.h"
+#include "run/robot_plans.h"
 #include "cli/interrupt_flag.h"
 #include "cli/mapf_benchmark.h"
 #include "cli/mapf_execution.h"
 #include "cli/option_checks.h"
+#include "core/atomic_file.h"
+#include "cli/run_console.h"
 #include "core/output_files.h"
 #include "run/run_pipeline.h"
 #include "cli/set_options.h"
@@ -296,9 +298,11 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
     RunRequest request;
     request.out_dir = exec_dir;
     request.video = a->video;
-    request.progress = true;
     request.interrupt = &interrupt;
+    RunConsole console(true);
+    request.observer = console.observer();
     const RunSummary run = executeRun(execution, request);
+    console.finish();
     if (run.message == "interrupted") {
       std::cerr << "cosim: interrupted; " << exec_dir.string() << " holds no finished run\n";
       ctx.status = 1;

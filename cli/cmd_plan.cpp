@@ -3,6 +3,7 @@
 
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
+#include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "run/scenario_checks.h"
 #include "run/scenario_planning.h"

@@ -1,17 +1,18 @@
 // cosim render RUN_DIR: re-render a logged run without simulating it again.
 #include <cmath>
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
-#include "core/output_files.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
+#include "core/json_reading.h"
+#include "core/output_files.h"
 #include "render/run_outputs.h"
 #include "sim/run_log_io.h"
 #include "sim/world_model.h"
-#include "sim/yaml_document.h"
 
 namespace cosim::cli {
 
@@ -27,10 +28,10 @@ std::string readText(const std::filesystem::path& p) {
 // The original scenario path recorded in run.json (relative paths in the scenario resolve there).
 std::string recordedScenarioFile(const std::filesystem::path& dir) {
   const std::string file = (dir / "run.json").string();
-  const YAML::Node json = loadYamlDocument(readText(dir / "run.json"), file);  // JSON is YAML
-  if (!json.IsMap() || !json["scenario_file"] || !json["scenario_file"].IsScalar())
+  const nlohmann::ordered_json json = parseJsonText(readText(dir / "run.json"), file);
+  if (!json.is_object() || !json.contains("scenario_file") || !json["scenario_file"].is_string())
     throw InputError(file, "scenario_file", "missing");
-  return json["scenario_file"].Scalar();
+  return json["scenario_file"].get<std::string>();
 }
 
 // What the run could have logged: the scenario bounds the log it is re-rendered from.

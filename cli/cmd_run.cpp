@@ -6,6 +6,7 @@
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
+#include "cli/run_console.h"
 #include "core/output_files.h"
 #include "run/run_files.h"
 #include "run/run_pipeline.h"
@@ -65,14 +66,16 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     request.out_dir = prepareOutputDir(a->out, "run");
     request.video = !a->no_video;
     request.images = !a->no_images;
-    request.progress = !a->quiet;
     request.interrupt = &interrupt;
+    RunConsole console(!a->quiet);
+    request.observer = console.observer();
     RunSummary s;
     try {
       s = executeRun(scenario, request);
     } catch (const InputError& e) {
       throw e.inFile(path);  // e.g. a planner's grid too large for the scenario's world
     }
+    console.finish();
     if (s.message == "interrupted") {
       std::cerr << "cosim: interrupted; " << request.out_dir.string() << " holds no finished run\n";
       ctx.status = 1;

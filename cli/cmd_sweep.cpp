@@ -10,6 +10,7 @@
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
+#include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "experiments/sweep/sweep_jobs.h"
 #include "experiments/sweep/sweep_outputs.h"

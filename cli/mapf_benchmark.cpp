@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "cli/lacam_published_results.h"
+#include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "core/input_error.h"
 #include "planning/mapf/mapf_planner_registry.h"

@@ -1,17 +1,15 @@
 #pragma once
-// Output files appear complete or not at all (CONTRACT.md): everything is written to a
-// temporary name in the same folder and renamed into place.
+// The output folders of the commands: made before work starts, checked before anything is
+// computed, and cleared of an earlier command's results. The files in them are written with
+// core/atomic_file.h.
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "core/csv_text.h"  // csvField, for the CSV files the commands write
+#include "core/atomic_file.h"  // writeFileAtomically, how every file in these folders is written
+#include "core/csv_text.h"     // csvField, for the CSV files the commands write
 
 namespace cosim {
-
-// Writes `content` to `path` atomically (temporary file + fsync + rename). Throws
-// std::runtime_error naming the path on failure (full disk, unwritable folder).
-void writeFileAtomically(const std::filesystem::path& path, const std::string& content);
 
 // Creates `dir` (and parents) if needed; throws InputError if it exists as a file or cannot be
 // created. An empty `dir` makes a new time-stamped folder under out/<prefix>-...

@@ -1,14 +1,14 @@
 #include "render/figures.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
 
+#include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "core/temporary_name.h"
 #include "render/csv_table.h"
 #include "render/gnuplot.h"
 #include "render/log_lookup.h"
@@ -29,7 +29,7 @@ class WorkDir {
  public:
   explicit WorkDir(const std::filesystem::path& parent) {
     std::filesystem::create_directories(parent);
-    path_ = parent / (".plot.part" + std::to_string(getpid()));
+    path_ = temporaryNameFor(parent / "plot", ".part");
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }
@@ -39,7 +39,7 @@ class WorkDir {
   }
   const std::filesystem::path& path() const { return path_; }
   void publish(const std::string& name, const std::filesystem::path& target) const {
-    std::filesystem::rename(path_ / name, target);
+    moveIntoPlace(path_ / name, target);
   }
 
  private:

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/atomic_file.h"
+#include "core/temporary_name.h"
 #include "render/video_encoder.h"
 
 namespace cosim {
@@ -14,7 +16,7 @@ namespace cosim {
 GnuplotScratch::GnuplotScratch(const std::filesystem::path& out_base, const std::string& tag)
     : out_dir_(out_base.has_parent_path() ? out_base.parent_path() : std::filesystem::path(".")),
       out_base_name_(out_base.filename()),
-      work_(out_dir_ / ("." + tag + ".part" + std::to_string(getpid()))) {
+      work_(temporaryNameFor(out_dir_ / tag, ".part")) {
   std::filesystem::remove_all(work_);
   std::filesystem::create_directories(work_);
 }
@@ -32,8 +34,8 @@ void GnuplotScratch::write(const std::string& name, const std::string& text) con
 
 void GnuplotScratch::publish(const std::string& name) const {
   const std::string base = out_base_name_.string();
-  std::filesystem::rename(work_ / (name + ".png"), out_dir_ / (base + ".png"));
-  std::filesystem::rename(work_ / (name + ".svg"), out_dir_ / (base + ".svg"));
+  moveIntoPlace(work_ / (name + ".png"), out_dir_ / (base + ".png"));
+  moveIntoPlace(work_ / (name + ".svg"), out_dir_ / (base + ".svg"));
 }
 
 std::string gnuplotString(const std::string& s) {

@@ -1,14 +1,11 @@
 #include "render/html_report.h"
 
-#include <unistd.h>
-
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "render/json_flatten.h"
+#include "core/atomic_file.h"
+#include "core/json_flatten.h"
 #include "render/metric_groups.h"
-#include "core/temporary_name.h"
 
 namespace cosim {
 
@@ -162,14 +159,7 @@ void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& r) {
   }
   h << "<script>" << kLoadCheck << "</script>\n</body>\n</html>\n";
 
-  const std::filesystem::path target = dir / "index.html";
-  const std::filesystem::path tmp = temporaryNameFor(target, ".part");
-  {
-    std::ofstream out(tmp);
-    out << h.str();
-    if (!out) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  std::filesystem::rename(tmp, target);
+  writeFileAtomically(dir / "index.html", h.str());
 }
 
 }  // namespace cosim

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iostream>
+#include <optional>
 
 #include "core/input_error.h"
 #include "render/figures.h"
@@ -38,9 +38,23 @@ int videoFrameCount(double duration, const RenderSettings& settings) {
 int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
                    const std::filesystem::path& out, VideoFormat format, bool progress,
                    const std::atomic<bool>* interrupt, int workers) {
+  std::optional<ProgressBar> bar;
+  const FrameProgress show = [&](int done, int total) {
+    if (!bar) bar.emplace("rendering " + out.filename().string(), total, progress);
+    bar->update(done);
+  };
+  return renderRunVideo(renderer, settings, camera, out, format, show, interrupt, workers);
+}
+
+int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
+                   const std::filesystem::path& out, VideoFormat format,
+                   const FrameProgress& progress, const std::atomic<bool>* interrupt, int workers) {
   const int frames = videoFrameCount(renderer.endTime(), settings);
   VideoEncoder video(out, renderer.width(), renderer.height(), settings.fps, format);
-  ProgressBar bar("rendering " + out.filename().string(), frames, progress);
+  const auto bar = [&](int done) {
+    if (progress) progress(done, frames);
+  };
+  bar(0);
   const CameraKind kind = cameraKind(camera);
   const double seconds_per_frame = settings.speedup / settings.fps;
   if (workers == 0) workers = defaultRenderWorkers();
@@ -50,7 +64,7 @@ int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const 
     for (; done < frames && !interrupted(interrupt); ++done) {
       renderer.render(done * seconds_per_frame, kind, rgb);
       video.addFrame(rgb);
-      bar.update(done + 1);
+      bar(done + 1);
     }
   } else {
     const FrameSequence sequence{kind, frames, seconds_per_frame, renderer.width(),
@@ -59,7 +73,7 @@ int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const 
         renderer.world(), renderer.scenario(), renderer.log(), sequence, workers,
         [&](std::vector<std::uint8_t>& rgb) {
           video.addFrame(rgb);
-          bar.update(video.frames());
+          bar(video.frames());
         },
         interrupt);
   }
@@ -83,7 +97,13 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
                              const std::filesystem::path& dir, const RunRenderRequest& request) {
   RenderedRun done;
   const auto say = [&](const std::string& what) {
-    if (request.progress) std::cerr << "cosim: " << what << std::endl;
+    if (request.on_message) request.on_message(what);
+  };
+  const auto frames_of = [&request](const std::filesystem::path& file) -> FrameProgress {
+    if (!request.on_progress) return nullptr;
+    return [&request, what = "rendering " + file.filename().string()](int done, int total) {
+      request.on_progress(what, done, total);
+    };
   };
   const RenderSettings& rs = scenario.render;
   RunRenderer renderer(world, scenario, log, rs.width, rs.height);
@@ -105,13 +125,13 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
       const std::string file = videoFileName(rs, camera);
       say("rendering " + file + " (" + camera + " camera, " +
           std::to_string(videoFrameCount(renderer.endTime(), rs)) + " frames)");
-      renderRunVideo(renderer, rs, camera, dir / file, VideoFormat::Mp4, request.progress,
+      renderRunVideo(renderer, rs, camera, dir / file, VideoFormat::Mp4, frames_of(file),
                      request.interrupt);
       if (stop()) return done;
       done.videos.push_back(file);
       if (rs.png_frames)
         renderRunVideo(renderer, rs, camera, dir / ("frames_" + camera), VideoFormat::PngSequence,
-                       request.progress, request.interrupt);
+                       frames_of("frames_" + camera), request.interrupt);
     }
   }
   stop();

@@ -4,6 +4,7 @@
 // (figures/*.png and .svg), and index.html showing them with the metrics.
 #include <atomic>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -23,12 +24,20 @@ constexpr int kMaxVideoFrames = 1000000;
 // (place "render") for more than kMaxVideoFrames.
 int videoFrameCount(double duration, const RenderSettings& settings);
 
+// Frames done of a video's total, told before the first frame (0) and after each one.
+using FrameProgress = std::function<void(int done, int total)>;
+
 // Renders the whole flight from one camera into `out` (an .mp4 or a PNG folder). Returns the
-// number of frames. progress: a progress bar with the time left on stderr. interrupt: polled
-// between frames; once it is set, ffmpeg is killed, nothing is written (the partial output is
-// deleted) and the result is 0 frames. workers: threads rendering frames at once, each with a
-// renderer of its own like `renderer` (render/ordered_frame_workers.h); 0: all cores; 1:
-// `renderer` alone, on this thread.
+// number of frames. progress: told of the frames done (may be empty). interrupt: polled between
+// frames; once it is set, ffmpeg is killed, nothing is written (the partial output is deleted)
+// and the result is 0 frames. workers: threads rendering frames at once, each with a renderer of
+// its own like `renderer` (render/ordered_frame_workers.h); 0: all cores; 1: `renderer` alone,
+// on this thread.
+int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
+                   const std::filesystem::path& out, VideoFormat format,
+                   const FrameProgress& progress, const std::atomic<bool>* interrupt = nullptr,
+                   int workers = 0);
+// The same with, if `progress`, a progress bar with the time left on stderr (render/progress_bar.h).
 int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
                    const std::filesystem::path& out, VideoFormat format, bool progress,
                    const std::atomic<bool>* interrupt = nullptr, int workers = 0);
@@ -39,9 +48,13 @@ std::vector<std::string> videoCameras(const RenderSettings& settings);
 std::string videoFileName(const RenderSettings& settings, const std::string& camera);
 
 struct RunRenderRequest {
-  bool images = true;     // final.png and the figures
-  bool video = true;      // the videos
-  bool progress = false;  // progress lines and bars on stderr
+  bool images = true;  // final.png and the figures
+  bool video = true;   // the videos
+  // What the rendering is doing, for a front end to show (each may be empty): a line as each
+  // output starts ("rendering final.png"), and the frames done of each video (what: "rendering
+  // video.mp4"). Rendering itself prints nothing.
+  std::function<void(const std::string& line)> on_message;
+  std::function<void(const std::string& what, int done, int total)> on_progress;
   // Polled between outputs and before every video frame (SIGINT/SIGTERM): once set, rendering
   // stops, the video being written is deleted and the rest is skipped.
   const std::atomic<bool>* interrupt = nullptr;

@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 
+#include "core/atomic_file.h"
 #include "core/temporary_name.h"
 
 namespace cosim {
@@ -160,15 +161,7 @@ void VideoEncoder::finish() {
   const bool exited_cleanly = ffmpeg_->finish();
   if (write_failed_ || !exited_cleanly) fail(ffmpegFailure(*ffmpeg_, path_.string()));
   ffmpeg_.reset();
-  if (format_ == VideoFormat::PngSequence)
-    removeOutput(path_);  // a folder cannot be renamed over a non-empty one
-  std::error_code ec;
-  std::filesystem::rename(tmp_, path_, ec);
-  if (ec) {
-    removeOutput(tmp_);
-    throw std::runtime_error("cannot move the video into place at " + path_.string() + ": " +
-                             ec.message());
-  }
+  moveIntoPlace(tmp_, path_);
 }
 
 void writePng(const std::filesystem::path& path, const std::vector<std::uint8_t>& rgb, int width,
@@ -183,7 +176,7 @@ void writePng(const std::filesystem::path& path, const std::vector<std::uint8_t>
     removeOutput(tmp);
     throw std::runtime_error(ffmpegFailure(ffmpeg, path.string()));
   }
-  std::filesystem::rename(tmp, path);
+  moveIntoPlace(tmp, path);
 }
 
 }  // namespace cosim

@@ -1,7 +1,9 @@
 #include "run/run_files.h"
 
+#include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "render/run_outputs.h"
+#include "run/run_pipeline.h"
 #include "sim/run_log_io.h"
 
 namespace cosim {
@@ -10,11 +12,8 @@ const std::vector<std::string> kRunResultNames = {
     "metrics.json", "index.html", "timeseries.csv", "path.csv", "moving_obstacles.csv",
     "final.png",    "video*.mp4", "figures",        "frames_*"};
 
-bool writeRunFiles(const WorldModel& world, const Scenario& scenario, const RunLog& log,
-                   const RunRequest& request, bool render, const JsonObject& metrics,
-                   const RunSummary& summary) {
-  const auto& dir = request.out_dir;
-  if (dir.empty()) return true;  // the caller keeps the run in memory (RunSummary)
+void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario,
+                      const RunLog& log) {
   // A folder reused with --out lost an earlier run's results when this run started
   // (kRunResultNames); the marks of a finished run go again in case something wrote them since.
   std::error_code ignored;
@@ -30,22 +29,26 @@ bool writeRunFiles(const WorldModel& world, const Scenario& scenario, const RunL
   writeFileAtomically(dir / "timeseries.csv", timeseriesCsv(log));
   if (!log.moving_obstacles.empty())
     writeFileAtomically(dir / "moving_obstacles.csv", movingObstaclesCsv(log));
+}
 
-  // Rendered from the log: final.png, figures/, the videos, and index.html showing them.
-  RenderedRun rendered;
-  if (render && (request.images || request.video)) {
-    RunRenderRequest r;
-    r.images = request.images;
-    r.video = request.video;
-    r.progress = request.progress;
-    r.interrupt = request.interrupt;
-    rendered = renderRunOutputs(world, scenario, log, dir, r);
-    if (rendered.interrupted) return false;
-  }
-  writeRunReport(dir, scenario, metrics.str(), summary.status == 0 ? "" : summary.message,
-                 rendered);
+RenderedRun renderRunFiles(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+                           const RunRequest& request, const RunReporter& report) {
+  RunRenderRequest r;
+  r.images = request.images;
+  r.video = request.video;
+  r.interrupt = request.interrupt;
+  r.on_message = [&report](const std::string& line) { report.message(line); };
+  r.on_progress = [&report](const std::string& what, int done, int total) {
+    report.progress(what, done, total);
+  };
+  return renderRunOutputs(world, scenario, log, request.out_dir, r);
+}
+
+void finishRunFolder(const std::filesystem::path& dir, const Scenario& scenario,
+                     const JsonObject& metrics, const std::string& failure,
+                     const RenderedRun& rendered) {
+  writeRunReport(dir, scenario, metrics.str(), failure, rendered);
   writeFileAtomically(dir / "metrics.json", metrics.str() + "\n");
-  return true;
 }
 
 }  // namespace cosim

@@ -1,22 +1,41 @@
 #pragma once
 // The files of a run, written in an order that never lets an unfinished run look finished: first
 // any metrics.json and index.html of an earlier run in the folder go, then the log files
-// (scenario.yaml, run.json, path.csv, timeseries.csv), the pictures and videos rendered from the
-// log, index.html, and metrics.json last: its presence means the run's files are complete.
-#include "run/run_pipeline.h"
+// (scenario.yaml, run.json, path.csv, timeseries.csv, moving_obstacles.csv), the pictures and
+// videos rendered from the log, index.html, and metrics.json last: its presence means the run's
+// files are complete.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/json_writer.h"
+#include "render/run_outputs.h"
+#include "run/run_events.h"
+#include "sim/run_log.h"
+#include "sim/scenario.h"
 #include "sim/world_model.h"
 
 namespace cosim {
+
+struct RunRequest;
 
 // What `cosim run` writes into its folder that says "a run happened" (everything but the copy of
 // the scenario, which may be the very file being run): removed before the run starts.
 extern const std::vector<std::string> kRunResultNames;
 
-// `render`: whether there is anything to draw (false when planning failed). Returns false, with
-// no index.html and no metrics.json written, if the interrupt flag stopped the rendering. Writes
-// and renders nothing, returning true, when request.out_dir is empty.
-bool writeRunFiles(const WorldModel& world, const Scenario& scenario, const RunLog& log,
-                   const RunRequest& request, bool render, const JsonObject& metrics,
-                   const RunSummary& summary);
+// The write stage: the log's files in `dir`, once an earlier run's finishing marks are gone.
+void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario,
+                      const RunLog& log);
+
+// The render stage: final.png, figures/ and the videos the request asks for, into its out_dir.
+// Returns with `interrupted` set if the request's interrupt flag stopped it.
+RenderedRun renderRunFiles(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+                           const RunRequest& request, const RunReporter& report);
+
+// The finishing marks: index.html (showing `rendered`), then metrics.json. `failure`: why the
+// run failed its task ("" if it did not).
+void finishRunFolder(const std::filesystem::path& dir, const Scenario& scenario,
+                     const JsonObject& metrics, const std::string& failure,
+                     const RenderedRun& rendered);
 
 }  // namespace cosim

@@ -1,25 +1,34 @@
 #pragma once
-// `cosim run` as a function: plan -> reference -> fly in MuJoCo -> evaluate -> write the run's
-// files -> render. Used by the run command and by sweeps.
+// One run of a scenario, for every front end (the cosim program, sweeps, reproductions, Python)
+// and every kind of run (a quadrotor, a quadrotor team, ground robots, robots with quadrotors
+// over them, a navigator, given waypoints), in typed stages:
+//   resolve (run/run_setup.h) -> plan (run/run_plan.h) -> build pilots (run/run_pilots.h) ->
+//   simulate (run/run_simulation.h) -> evaluate (run/run_evaluation.h, metrics.json from
+//   run/metrics_json.h) -> write -> render (run/run_files.h).
+// The pipeline prints nothing and exits nothing: what it is doing goes to the request's observer
+// (run/run_events.h), what it found comes back in the RunSummary.
 #include <atomic>
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "sim/flight_metrics.h"
 #include "core/json_writer.h"
+#include "run/run_events.h"
+#include "run/scenario_planning.h"
+#include "sim/flight_metrics.h"
 #include "sim/run_log.h"
 #include "sim/scenario.h"
 
 namespace cosim {
 
 struct RunRequest {
-  // Created beforehand. Empty: no files at all and nothing rendered (the caller, e.g. Python's
-  // cosim.run, takes the metrics and the log from the RunSummary).
+  // Where the run's files go (created beforehand). Empty: no files are written, nothing is
+  // rendered and no folder is created; the results are only in the returned RunSummary.
   std::filesystem::path out_dir;
   bool video = true;
-  bool images = true;     // final.png
-  bool progress = false;  // progress lines on stderr
+  bool images = true;  // final.png, figures/ (and index.html shows them)
+  // Told of the stages, progress and warnings as the run goes (none: the run is silent).
+  RunObserver observer;
   const std::atomic<bool>* interrupt = nullptr;
   // Plan for a point: ignore the vehicle's size and the margin, as seed 003 did (for its
   // reproduction only; flights planned this way clip obstacles).
@@ -27,30 +36,25 @@ struct RunRequest {
 };
 
 struct RunSummary {
-  int status = 0;       // CONTRACT.md exit status: 0 ok, 1 task failed
-  std::string message;  // why the task failed
-  std::vector<FlightMetrics> metrics;
+  int status = 0;                      // CONTRACT.md exit status: 0 ok, 1 task failed
+  std::string message;                 // why the task failed
+  std::vector<FlightMetrics> metrics;  // one per vehicle, in the scenario's order
   double sim_speed_x = 0.0;
-  JsonObject metrics_json;  // exactly what metrics.json holds (also when no files are written)
-  RunLog log;               // what timeseries.csv and path.csv are written from
+  JsonObject metrics_json;  // metrics.json's object (as written into out_dir, if given)
+  RunLog log;               // what the simulation recorded (timeseries: sim/run_log_io.h)
+  // Each vehicle's plan, in the scenario's order (run/run_plan.h vehiclePlans): what the
+  // planner made of it, and for a ground robot its timed plan.
+  std::vector<VehiclePlan> plans;
 };
 
-// Throws InputError for bad input discovered late (unknown planner, bad gains). Stopped by the
-// request's interrupt flag (between stages, in planning, flight and rendering), it returns
-// interruptedRun() having written no metrics.json or index.html.
+// Resolves the scenario's defaults in place (a quadrotor team's controller and trajectory mode:
+// run/run_setup.h), then runs it. Throws InputError for bad input discovered late (unknown
+// planner, bad gains). Stopped by the request's interrupt flag (between stages, in planning,
+// flight and rendering), it returns interruptedRun() having written no metrics.json or index.html.
 RunSummary executeRun(Scenario& scenario, const RunRequest& request);
 
 // Whether the request's interrupt flag is set; what a run stopped by it returns.
 bool stopRequestedFor(const RunRequest& request);
 RunSummary interruptedRun();
-
-// A quadrotor's entry in metrics.json's "vehicles" list (without its name and model).
-JsonObject flightMetricsJson(const FlightMetrics& m);
-
-// Why a run whose vehicles all planned did not succeed, from the simulation's end_reason.
-std::string flightFailureMessage(const std::string& end_reason);
-
-// A quadrotor's longest stretch of continuous mixer saturation in the log, in seconds.
-double longestSaturation(const VehicleLog& vehicle);
 
 }  // namespace cosim

@@ -2,11 +2,14 @@
 
 #include <sstream>
 
-#include "run/ground_run_pipeline.h"
-#include "run/scenario_planning.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
+#include "planning/mapf/mapf_planner_registry.h"
 #include "planning/planner_registry.h"
+#include "run/navigation_driver.h"
+#include "run/quadrotor_team_planning.h"
+#include "run/run_setup.h"
+#include "run/scenario_planning.h"
 #include "sim/yaml_document.h"
 #include "sim/yaml_reader.h"
 
@@ -32,6 +35,38 @@ void checkPlanners(const Scenario& s, PlannerUse use) {
 }
 
 }  // namespace
+
+void checkRunPlanners(const Scenario& s) {
+  const auto single = [&s](const std::string& name, ParamSet p, const std::string& key) {
+    if (name.empty()) return;
+    p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);  // read by planVehicle
+    makePlanner(name, p, key);
+  };
+  if (!isGroundRun(s))
+    return isMapfPlanner(s.planner_name)
+               ? checkQuadrotorTeamPlanner(s)
+               : single(s.planner_name, s.planner_params, "key planner.name");
+  const std::string& name = s.planner_name;
+  ParamSet p = s.planner_params;
+  if (isNavigatorName(name)) {
+    p.getDouble("resolution", 0.5, 0.01, 100.0);
+    makeNavigator(name, p);
+    p.requireAllUsed("planner '" + name + "' (in cosim run: resolution and sight)");
+  } else if (isMapfPlanner(name)) {
+    if (!s.grid_map.present()) p.getDouble("resolution", 0.5, 0.01, 100.0);
+    p.getInt("connectivity", 4, 4, 8);
+    p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);
+    makeMapfPlanner(name, p, "planner.name");
+  } else {
+    single(name, p, "key planner.name");
+  }
+  if (!s.aerial.planner_name.empty()) {
+    if (!PlannerRegistry::instance().find(s.aerial.planner_name))
+      throw InputError(s.file, "aerial.planner.name",
+                       "unknown single-agent planner '" + s.aerial.planner_name + "'");
+    single(s.aerial.planner_name, s.aerial.planner_params, "key aerial.planner.name");
+  }
+}
 
 std::string scenarioKeyPlace(const std::string& path, const std::vector<std::string>& overrides,
                              const std::string& key) {

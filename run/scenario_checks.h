@@ -15,6 +15,12 @@ enum class PlannerUse {
   FirstVehicle  // as `cosim plan` does: one single-agent plan for the first vehicle
 };
 
+// Builds every planner the run of `scenario` would build (the team planner, navigator or
+// single-agent planner of the robots, the quadrotors' planner), reading the parameters the run
+// reads, so that an unknown planner or parameter is found without running: sweeps check each
+// job with it before starting any. Throws InputError as the run would.
+void checkRunPlanners(const Scenario& scenario);
+
 // loadScenario, then the planners of `use` built once and thrown away. Throws InputError.
 Scenario loadCheckedScenario(const std::string& path, const std::vector<std::string>& overrides,
                              PlannerUse use);

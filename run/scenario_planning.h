@@ -27,6 +27,9 @@ struct VehiclePlan {
   // Indices in `path` of the vehicle's waypoints (the points it was asked to visit, the goal
   // last): a trajectory through the path must not cut past them.
   std::vector<std::size_t> via_indices;
+  // When the vehicle is due at each point of `path` (s): a ground robot's timed plan. Empty for
+  // a path without times (a quadrotor's reference is timed by its trajectory).
+  std::vector<double> point_times;
 };
 
 // planner_params is consumed (parameters are marked used); `vehicle_radius` comes from the model.

@@ -1,10 +1,10 @@
 #pragma once
-// One quadrotor's share of a simulation loop, for every loop that flies quadrotors
-// (sim/flight_simulation.h; sim/ground_simulation.h flies them over ground robots): at each
-// control step: estimate the state from what the sensors delivered (sim/state_estimator.h), ask
-// the reference for the set-point, run the controller, turn its rotor thrusts into rotor-speed
-// commands with the flight software's thrust coefficient, log a sample, and book arrival,
-// saturation and divergence (judged on the true state).
+// One quadrotor's share of the simulation loop (sim/simulation_loop.h; a ground robot's is
+// sim/ground_pilot_step.h): at each control step: estimate the state from what the sensors
+// delivered (sim/state_estimator.h), ask the reference for the set-point, run the controller,
+// turn its rotor thrusts into rotor-speed commands with the flight software's thrust
+// coefficient, log a sample, and book arrival, saturation and divergence (judged on the true
+// state).
 #include <Eigen/Core>
 #include <cstddef>
 #include <vector>

@@ -1,12 +1,13 @@
 #pragma once
-// The simulation loop: controllers at their rate, mj_step at the physics rate, a logger at the
-// control rate, contact bookkeeping every step. Short on purpose: read it top to bottom. Each
-// quadrotor's part of a control step is sim/aerial_pilot_step.h (shared with the ground loop).
+// A flight of quadrotors to its end: sim/simulation_loop.h stepped until it stops, with a log
+// sample at every control step. Each quadrotor's part of a control step is
+// sim/aerial_pilot_step.h.
 #include <atomic>
 #include <vector>
 
 #include "sim/aerial_pilot_step.h"
 #include "sim/run_log.h"
+#include "sim/simulation_loop.h"
 #include "sim/world_model.h"
 
 namespace cosim {
@@ -19,6 +20,10 @@ struct FlightOptions {
   // (absurd gains, too heavy, a reference beyond the airframe): the run ends as "saturated".
   double max_saturated_time = 2.0;  // s
 };
+
+// The loop's options for a flight: every control step logged, hold_after_arrival for the
+// quadrotors.
+SimulationOptions flightSimulationOptions(const FlightOptions& options);
 
 // Runs until every vehicle has reached its goal and held it, or max_time, or an interrupt, or a
 // fault: end_reason "diverged" (NaN, far outside the world), "unstable" (MuJoCo found bad numbers

@@ -1,9 +1,9 @@
 #pragma once
-// The physics half that both simulation loops (sim/flight_simulation, sim/ground_simulation)
-// share: how many physics steps a control period and the time limit are, the quadrotors' rotors
-// and sensors (sim/quadrotor_plant.h), one physics step with what must surround it (the rotors
-// advance, the air acts on the quadrotors, mj_step, contact bookkeeping, the sensors sample, the
-// check that the state can still be trusted), and the figures a finished run's log records.
+// The physics half of the simulation loop (sim/simulation_loop.h): how many physics steps a
+// control period and the time limit are, the quadrotors' rotors and sensors
+// (sim/quadrotor_plant.h), one physics step with what must surround it (the rotors advance, the
+// air acts on the quadrotors, mj_step, contact bookkeeping, the sensors sample, the check that
+// the state can still be trusted), and the figures a finished run's log records.
 #include <mujoco/mujoco.h>
 
 #include <array>

@@ -1,7 +1,6 @@
 #include "sim/run_log_io.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -17,53 +16,76 @@ namespace cosim {
 
 namespace {
 
-// timeseries.csv's numeric columns, in order (the file adds `vehicle`, the name, last), and
-// their values for one sample: the one definition behind timeseriesCsv and timeseriesColumns.
-constexpr std::array<const char*, 46> kTimeseriesColumns = {
-    "t",      "ref_x",    "ref_y",     "ref_z",   "ref_vx",  "ref_vy",  "ref_vz",  "x",
-    "y",      "z",        "vx",        "vy",      "vz",      "qw",      "qx",      "qy",
-    "qz",     "roll_deg", "pitch_deg", "yaw_deg", "p",       "q",       "r",       "cmd0",
-    "cmd1",   "cmd2",     "cmd3",      "thrust0", "thrust1", "thrust2", "thrust3", "saturated",
-    "est_x",  "est_y",    "est_z",     "est_vx",  "est_vy",  "est_vz",  "est_qw",  "est_qx",
-    "est_qy", "est_qz",   "w0",        "w1",      "w2",      "w3"};
-using TimeseriesRow = std::array<double, kTimeseriesColumns.size()>;
+// One numeric column of timeseries.csv: its header name and its value in a sample. The file
+// writer and timeseriesColumns both read this table, so that the columns a front end gets in
+// memory are the file's, in the file's order. (The last column, the vehicle's name, is text.)
+struct TimeseriesColumn {
+  const char* name;
+  double (*value)(const LogSample&);
+};
 
-TimeseriesRow timeseriesRow(const LogSample& s) {
-  TimeseriesRow row;
-  std::size_t i = 0;
-  const auto put3 = [&](const Eigen::Vector3d& v) {
-    for (int k = 0; k < 3; ++k) row[i++] = v[k];
-  };
-  const auto put4 = [&](const Eigen::Vector4d& v) {
-    for (int k = 0; k < 4; ++k) row[i++] = v[k];
-  };
-  const auto putQuaternion = [&](const Eigen::Quaterniond& q) {
-    row[i++] = q.w();
-    row[i++] = q.x();
-    row[i++] = q.y();
-    row[i++] = q.z();
-  };
-  row[i++] = s.t;
-  put3(s.ref_pos);
-  put3(s.ref_vel);
-  put3(s.pos);
-  put3(s.vel);
-  putQuaternion(s.att);
-  // Roll, pitch and yaw (Z-Y-X Euler angles) of the attitude, degrees.
+// Euler angles (ZYX, degrees) of an attitude, as the file has always written them.
+double rollDeg(const LogSample& s) {
   const Eigen::Matrix3d R = s.att.toRotationMatrix();
-  row[i++] = std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI;
-  row[i++] = -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI;
-  row[i++] = std::atan2(R(1, 0), R(0, 0)) * 180.0 / M_PI;
-  put3(s.omega);
-  put4(s.rotor_cmd);
-  put4(s.rotor_thrust);
-  row[i++] = s.saturated ? 1.0 : 0.0;
-  put3(s.est_pos);
-  put3(s.est_vel);
-  putQuaternion(s.est_att);
-  put4(s.rotor_speed);
-  return row;
+  return std::atan2(R(2, 1), R(2, 2)) * 180.0 / M_PI;
 }
+double pitchDeg(const LogSample& s) {
+  const Eigen::Matrix3d R = s.att.toRotationMatrix();
+  return -std::asin(std::clamp(R(2, 0), -1.0, 1.0)) * 180.0 / M_PI;
+}
+double yawDeg(const LogSample& s) {
+  const Eigen::Matrix3d R = s.att.toRotationMatrix();
+  return std::atan2(R(1, 0), R(0, 0)) * 180.0 / M_PI;
+}
+
+const TimeseriesColumn kTimeseriesColumns[] = {
+    {"t", [](const LogSample& s) { return s.t; }},
+    {"ref_x", [](const LogSample& s) { return s.ref_pos.x(); }},
+    {"ref_y", [](const LogSample& s) { return s.ref_pos.y(); }},
+    {"ref_z", [](const LogSample& s) { return s.ref_pos.z(); }},
+    {"ref_vx", [](const LogSample& s) { return s.ref_vel.x(); }},
+    {"ref_vy", [](const LogSample& s) { return s.ref_vel.y(); }},
+    {"ref_vz", [](const LogSample& s) { return s.ref_vel.z(); }},
+    {"x", [](const LogSample& s) { return s.pos.x(); }},
+    {"y", [](const LogSample& s) { return s.pos.y(); }},
+    {"z", [](const LogSample& s) { return s.pos.z(); }},
+    {"vx", [](const LogSample& s) { return s.vel.x(); }},
+    {"vy", [](const LogSample& s) { return s.vel.y(); }},
+    {"vz", [](const LogSample& s) { return s.vel.z(); }},
+    {"qw", [](const LogSample& s) { return s.att.w(); }},
+    {"qx", [](const LogSample& s) { return s.att.x(); }},
+    {"qy", [](const LogSample& s) { return s.att.y(); }},
+    {"qz", [](const LogSample& s) { return s.att.z(); }},
+    {"roll_deg", [](const LogSample& s) { return rollDeg(s); }},
+    {"pitch_deg", [](const LogSample& s) { return pitchDeg(s); }},
+    {"yaw_deg", [](const LogSample& s) { return yawDeg(s); }},
+    {"p", [](const LogSample& s) { return s.omega.x(); }},
+    {"q", [](const LogSample& s) { return s.omega.y(); }},
+    {"r", [](const LogSample& s) { return s.omega.z(); }},
+    {"cmd0", [](const LogSample& s) { return s.rotor_cmd[0]; }},
+    {"cmd1", [](const LogSample& s) { return s.rotor_cmd[1]; }},
+    {"cmd2", [](const LogSample& s) { return s.rotor_cmd[2]; }},
+    {"cmd3", [](const LogSample& s) { return s.rotor_cmd[3]; }},
+    {"thrust0", [](const LogSample& s) { return s.rotor_thrust[0]; }},
+    {"thrust1", [](const LogSample& s) { return s.rotor_thrust[1]; }},
+    {"thrust2", [](const LogSample& s) { return s.rotor_thrust[2]; }},
+    {"thrust3", [](const LogSample& s) { return s.rotor_thrust[3]; }},
+    {"saturated", [](const LogSample& s) { return s.saturated ? 1.0 : 0.0; }},
+    {"est_x", [](const LogSample& s) { return s.est_pos.x(); }},
+    {"est_y", [](const LogSample& s) { return s.est_pos.y(); }},
+    {"est_z", [](const LogSample& s) { return s.est_pos.z(); }},
+    {"est_vx", [](const LogSample& s) { return s.est_vel.x(); }},
+    {"est_vy", [](const LogSample& s) { return s.est_vel.y(); }},
+    {"est_vz", [](const LogSample& s) { return s.est_vel.z(); }},
+    {"est_qw", [](const LogSample& s) { return s.est_att.w(); }},
+    {"est_qx", [](const LogSample& s) { return s.est_att.x(); }},
+    {"est_qy", [](const LogSample& s) { return s.est_att.y(); }},
+    {"est_qz", [](const LogSample& s) { return s.est_att.z(); }},
+    {"w0", [](const LogSample& s) { return s.rotor_speed[0]; }},
+    {"w1", [](const LogSample& s) { return s.rotor_speed[1]; }},
+    {"w2", [](const LogSample& s) { return s.rotor_speed[2]; }},
+    {"w3", [](const LogSample& s) { return s.rotor_speed[3]; }},
+};
 
 void put(std::string& out, double v) {
   char buf[32];
@@ -172,11 +194,11 @@ double sampleTime(const CsvLogReader& in, const LogBounds& bounds, double previo
 
 std::string timeseriesCsv(const RunLog& log) {
   std::string out;
-  for (const char* name : kTimeseriesColumns) out += std::string(name) + ",";
+  for (const TimeseriesColumn& c : kTimeseriesColumns) out += std::string(c.name) + ",";
   out += "vehicle\n";
   for (const VehicleLog& v : log.vehicles) {
     for (const LogSample& s : v.samples) {
-      for (double x : timeseriesRow(s)) put(out, x);
+      for (const TimeseriesColumn& c : kTimeseriesColumns) put(out, c.value(s));
       out += csvField(v.name) + "\n";
     }
   }
@@ -186,15 +208,11 @@ std::string timeseriesCsv(const RunLog& log) {
 std::vector<std::pair<std::string, std::vector<double>>> timeseriesColumns(const RunLog& log,
                                                                            std::size_t vehicle) {
   std::vector<std::pair<std::string, std::vector<double>>> columns;
-  if (vehicle >= log.vehicles.size()) return columns;
-  const std::vector<LogSample>& samples = log.vehicles[vehicle].samples;
-  for (const char* name : kTimeseriesColumns) {
-    columns.emplace_back(name, std::vector<double>());
-    columns.back().second.reserve(samples.size());
-  }
-  for (const LogSample& s : samples) {
-    const TimeseriesRow row = timeseriesRow(s);
-    for (std::size_t c = 0; c < row.size(); ++c) columns[c].second.push_back(row[c]);
+  const std::vector<LogSample>& samples = log.vehicles.at(vehicle).samples;
+  for (const TimeseriesColumn& c : kTimeseriesColumns) {
+    std::vector<double>& values = columns.emplace_back(c.name, std::vector<double>()).second;
+    values.reserve(samples.size());
+    for (const LogSample& s : samples) values.push_back(c.value(s));
   }
   return columns;
 }

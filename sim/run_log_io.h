@@ -14,9 +14,9 @@
 namespace cosim {
 
 std::string timeseriesCsv(const RunLog& log);
-// timeseries.csv's numeric columns (all but `vehicle`) for log.vehicles[vehicle], as (name,
-// values) in the file's order and with its definitions (timeseriesCsv writes these same values);
-// empty for a vehicle index past the log's.
+// The numeric columns of timeseries.csv for log.vehicles[vehicle] (throws std::out_of_range past
+// the last vehicle), by header name in the file's order, one value per sample: the same column
+// definitions as the file (the vehicle's name, a text column, is left out).
 std::vector<std::pair<std::string, std::vector<double>>> timeseriesColumns(const RunLog& log,
                                                                            std::size_t vehicle);
 std::string pathCsv(const RunLog& log);

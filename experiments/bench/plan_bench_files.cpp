@@ -10,7 +10,7 @@
 
 #include "experiments/bench/ompl/ompl_planner_runs.h"
 #include "experiments/bench/ompl_benchmark_log.h"
-#include "core/output_files.h"
+#include "core/atomic_file.h"
 #include "experiments/reproduce/report_files.h"
 #include "render/plan_bench_chart.h"
 

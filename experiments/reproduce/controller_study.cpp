@@ -13,7 +13,7 @@
 #include <sstream>
 
 #include "control/figure_eight_reference.h"
-#include "core/output_files.h"
+#include "core/atomic_file.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "render/figures.h"

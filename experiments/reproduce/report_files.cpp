@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "core/output_files.h"
+#include "core/atomic_file.h"
 
 namespace cosim::reproduce {
 

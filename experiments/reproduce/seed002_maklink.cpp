@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "core/output_files.h"
+#include "core/atomic_file.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/seed002_maklink_map.h"

@@ -11,8 +11,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/json_reading.h"
 #include "run/run_pipeline.h"
 #include "experiments/reproduce/reproduction.h"
 
@@ -66,14 +68,8 @@ double planClearance(const std::filesystem::path& path_csv, const World& world) 
 
 // How the run ended ("goal", "max_time", "saturated", ...): metrics.json's end_reason.
 std::string endReason(const std::filesystem::path& metrics_json) {
-  std::ifstream in(metrics_json);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string s = text.str(), key = "\"end_reason\": \"";
-  const auto at = s.find(key);
-  if (at == std::string::npos) return "?";
-  const auto end = s.find('"', at + key.size());
-  return s.substr(at + key.size(), end - at - key.size());
+  const nlohmann::ordered_json metrics = readJsonFile(metrics_json);
+  return metrics.value("end_reason", std::string("?"));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/run_spread.h"

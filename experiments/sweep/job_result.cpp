@@ -2,9 +2,11 @@
 
 #include <sys/stat.h>
 #include <sys/wait.h>
-#include <yaml-cpp/yaml.h>
+#include <nlohmann/json.hpp>
 
-#include "core/output_files.h"
+#include "core/atomic_file.h"
+#include "core/input_error.h"
+#include "core/json_reading.h"
 #include "core/json_writer.h"
 
 namespace cosim {
@@ -64,20 +66,21 @@ std::optional<JobResult> readJobResult(const std::filesystem::path& job_dir) {
   std::error_code ec;
   if (!std::filesystem::exists(job_dir / "result.json", ec)) return std::nullopt;
   try {
-    // JSON is YAML; yaml-cpp reads it.
-    const YAML::Node n = YAML::LoadFile((job_dir / "result.json").string());
+    const nlohmann::ordered_json n = readJsonFile(job_dir / "result.json");
     JobResult r;
-    r.job = n["job"].as<std::size_t>();
-    r.fingerprint = n["fingerprint"].as<std::string>();
-    r.scenario = n["scenario"].as<std::string>();
-    r.status = n["status"].as<std::string>();
-    r.exit_code = n["exit_code"].as<int>();
-    r.signal = n["signal"].as<int>();
-    r.wall_time_s = n["wall_time_s"].as<double>();
-    if (n["program_build"]) r.program_build = n["program_build"].as<std::string>();
+    r.job = n.at("job").get<std::size_t>();
+    r.fingerprint = n.at("fingerprint").get<std::string>();
+    r.scenario = n.at("scenario").get<std::string>();
+    r.status = n.at("status").get<std::string>();
+    r.exit_code = n.at("exit_code").get<int>();
+    r.signal = n.at("signal").get<int>();
+    r.wall_time_s = n.at("wall_time_s").get<double>();
+    if (n.contains("program_build")) r.program_build = n.at("program_build").get<std::string>();
     return r;
-  } catch (const YAML::Exception&) {
-    return std::nullopt;
+  } catch (const InputError&) {
+    return std::nullopt;  // unreadable or not JSON
+  } catch (const nlohmann::ordered_json::exception&) {
+    return std::nullopt;  // a field missing or of the wrong type
   }
 }
 

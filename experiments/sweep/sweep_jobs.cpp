@@ -6,7 +6,8 @@
 #include <map>
 #include <sstream>
 
-#include "run/ground_run_pipeline.h"
+#include "run/scenario_checks.h"
+#include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "experiments/sweep/generated_scenario.h"
 #include "core/input_error.h"

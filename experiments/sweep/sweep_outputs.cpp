@@ -1,6 +1,6 @@
 #include "experiments/sweep/sweep_outputs.h"
 
-#include "core/output_files.h"
+#include "core/atomic_file.h"
 #include "experiments/sweep/sweep_results_table.h"
 #include "experiments/sweep/sweep_summary.h"
 #include "core/input_error.h"

@@ -1,47 +1,37 @@
 #include "experiments/sweep/sweep_results_table.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <map>
+#include <nlohmann/json.hpp>
 #include <set>
 
+#include "core/input_error.h"
+#include "core/json_flatten.h"
+#include "core/json_reading.h"
+#include "core/json_writer.h"
 #include "core/output_files.h"
 #include "experiments/sweep/job_result.h"
 #include "experiments/sweep/sweep_runner.h"
-#include "core/json_writer.h"
 
 namespace cosim {
 
 namespace {
 
-using Fields = std::vector<std::pair<std::string, std::string>>;
+using Fields = FlatJson;
 
-void flatten(const YAML::Node& n, const std::string& prefix, Fields& out) {
-  if (n.IsMap()) {
-    for (const auto& kv : n)
-      flatten(kv.second, prefix.empty() ? kv.first.Scalar() : prefix + "." + kv.first.Scalar(),
-              out);
-  } else if (n.IsSequence()) {
-    if (prefix == "vehicles" && n.size() == 1) return;
-    for (std::size_t i = 0; i < n.size(); ++i)
-      flatten(n[i], prefix + "[" + std::to_string(i) + "]", out);
-  } else if (n.IsScalar()) {
-    out.emplace_back(prefix, n.Scalar());
-  } else {
-    out.emplace_back(prefix, "");  // null (a non-finite number)
-  }
-}
-
+// A job's metrics.json as columns (key paths). A single vehicle's entry under "vehicles" repeats
+// the top-level metrics, so it gives no columns; a null (a non-finite number) is an empty cell.
 Fields readMetrics(const std::filesystem::path& file) {
-  Fields f;
   std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) return f;
+  if (!std::filesystem::exists(file, ec)) return {};
   try {
-    flatten(YAML::LoadFile(file.string()), "", f);
-  } catch (const YAML::Exception&) {
-    f.clear();  // unreadable: the row keeps its status, without metrics
+    nlohmann::ordered_json metrics = readJsonFile(file);
+    if (metrics.is_object() && metrics.contains("vehicles") && metrics["vehicles"].is_array() &&
+        metrics["vehicles"].size() == 1)
+      metrics.erase("vehicles");
+    return flattenJsonDocument(metrics, "");
+  } catch (const InputError&) {
+    return {};  // unreadable: the row keeps its status, without metrics
   }
-  return f;
 }
 
 }  // namespace

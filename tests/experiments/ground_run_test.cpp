@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "run/ground_run_pipeline.h"
+#include "run/run_pipeline.h"
 #include "core/input_error.h"
 #include "tests/experiments/cli_test_support.h"
 #include "tests/experiments/headless_run.h"
@@ -93,7 +93,7 @@ TEST(GroundNavigationRun, RnaRobotCrossesBetweenPatrollingCylindersWithoutTouchi
   std::filesystem::create_directories(request.out_dir);
   request.video = false;
   request.images = false;
-  const RunSummary r = executeGroundRun(s, request);
+  const RunSummary r = executeRun(s, request);
   const std::string metrics = test::slurp(request.out_dir / "metrics.json");
   std::filesystem::remove_all(request.out_dir);
   EXPECT_EQ(r.status, 0) << r.message;

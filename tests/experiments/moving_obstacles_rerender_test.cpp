@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "run/ground_run_pipeline.h"
+#include "run/run_pipeline.h"
 #include "core/input_error.h"
 #include "sim/moving_obstacle_motion.h"
 #include "sim/run_log.h"
@@ -53,7 +53,7 @@ TEST(MovingObstaclesRerender, RunFolderLogsEachObstacleWhereItMovedAndTheRerende
   request.out_dir = test::freshDir("moving-rerender");
   std::filesystem::create_directories(request.out_dir);
   request.video = false;
-  executeGroundRun(s, request);
+  executeRun(s, request);
   const auto& dir = request.out_dir;
   ASSERT_TRUE(std::filesystem::exists(dir / "moving_obstacles.csv"));
 

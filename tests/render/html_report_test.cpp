@@ -6,7 +6,6 @@
 #include <fstream>
 #include <sstream>
 
-#include "render/json_flatten.h"
 #include "render/run_outputs.h"
 #include "render_test_scene.h"
 
@@ -40,17 +39,6 @@ std::string dumpDom(const std::string& browser, const std::filesystem::path& pag
 }
 
 }  // namespace
-
-TEST(HtmlReport, FlattenedMetricsKeepDocumentOrderAndNesting) {
-  const auto f =
-      flattenJson(R"({"a": 1.5, "b": {"c": "x\"y"}, "v": [{"d": true}, {"d": null}], "e": {}})");
-  ASSERT_EQ(f.size(), 4u);
-  EXPECT_EQ(f[0], std::make_pair(std::string("a"), std::string("1.5")));
-  EXPECT_EQ(f[1], std::make_pair(std::string("b.c"), std::string("x\"y")));
-  EXPECT_EQ(f[2], std::make_pair(std::string("v[0].d"), std::string("true")));
-  EXPECT_EQ(f[3], std::make_pair(std::string("v[1].d"), std::string("null")));
-  EXPECT_THROW(flattenJson("{\"a\": "), std::runtime_error);
-}
 
 TEST(HtmlReport, RunReportLoadsEveryVideoAndFigureInHeadlessChromium) {
   const std::string browser = chromium();

@@ -1,0 +1,121 @@
+#include "run/quadrotor_plans.h"
+
+#include <cmath>
+
+#include "control/waypoint_reference.h"
+#include "planning/trajectory/minimum_snap_trajectory.h"
+#include "run/quadrotor_team_planning.h"
+#include "run/run_pipeline.h"
+#include "sim/model_error.h"
+#include "sim/trajectory_reference.h"
+
+namespace cosim {
+
+namespace {
+
+// A minimum-snap trajectory through the planned path, within the airframe's limits: speed and
+// acceleration from the scenario's trajectory section, thrust from the model (keeping 20 % of
+// the rotors' thrust for control).
+MinimumSnapResult fitMinimumSnap(const Scenario& s, const QuadrotorParams& q,
+                                 const VehiclePlan& plan, ParamSet& p) {
+  MinimumSnapOptions o;
+  o.limits.max_speed = p.getDouble("max_speed", 3.0, 0.01, 100.0);
+  o.limits.max_acceleration = p.getDouble("max_acceleration", 3.0, 0.01, 100.0);
+  o.limits.gravity = q.gravity;
+  o.limits.max_thrust_accel = 0.8 * 4.0 * q.max_thrust / q.mass;
+  o.time_penalty = p.getDouble("k_t", o.time_penalty, 0.0, 1e9);
+  o.optimize_times = p.getBool("optimize_times", o.optimize_times);
+  o.shortcut = p.getBool("shortcut", o.shortcut);
+  o.max_repair_rounds = p.getInt("max_repair_rounds", o.max_repair_rounds, 0, 100);
+  p.requireAllUsed("trajectory mode 'minimum_snap'");
+  o.validate();
+  // The curve must keep the vehicle's radius plus half the planner's margin clear: the other half
+  // is the budget for tracking error.
+  return MinimumSnapTrajectory(o).fit(plan.path, s.world, q.radius + 0.5 * s.planner_margin,
+                                      plan.via_indices);
+}
+
+// Each quadrotor its own path; the last failure, if any, is the group's.
+void planEachQuadrotor(const Scenario& s, const WorldModel& world,
+                       const std::vector<std::size_t>& vehicles, const RunRequest& request,
+                       const RunReporter& report, QuadrotorPlans& q) {
+  for (std::size_t v : vehicles) {
+    report.message("planning " + s.vehicles[v].name + " with " +
+                   (s.planner_name.empty() ? std::string("given waypoints") : s.planner_name));
+    const double radius = request.plan_as_point_mass ? 0.0 : world.vehicles()[v].params.radius;
+    q.plans.push_back(planVehicle(s, s.vehicles[v], radius, s.planner_params));
+    for (const auto& name : q.plans.back().ignored_params)
+      report.message("note: planner." + name + " does not apply to " + s.planner_name +
+                     " (ignored)");
+  }
+  for (const auto& p : q.plans) {
+    if (p.success) continue;
+    q.status = PlanStatus::NoPath;
+    q.failure = "no path found: " + p.message;
+  }
+  q.summary = summarizeSeparatePlans(q.plans);
+}
+
+// The team's paths and timed trajectories, planned jointly.
+void planQuadrotorTeam(const Scenario& s, const WorldModel& world,
+                       const std::vector<std::size_t>& vehicles, const RunRequest& request,
+                       const RunReporter& report, QuadrotorPlans& q) {
+  report.message("planning " + std::to_string(vehicles.size()) + " quadrotors as a team with " +
+                 s.planner_name);
+  QuadrotorTeamFlight flight = planQuadrotorTeamFlight(s, world, vehicles, request);
+  q.plans = std::move(flight.plans);
+  q.summary = summarizeSeparatePlans(q.plans);
+  if (!q.plans.empty()) q.summary.counters = q.plans.front().counters;  // the team's, once
+  if (!flight.success) {
+    q.status = PlanStatus::NoPath;
+    q.failure = flight.failure;
+    return;
+  }
+  for (std::size_t k = 0; k < vehicles.size(); ++k)
+    q.references.push_back(std::make_unique<TrajectoryReference>(
+        std::move(flight.trajectories[k]), s.vehicles[vehicles[k]].yaw_deg * M_PI / 180.0));
+}
+
+// The reference of quadrotor k planned alone: seed 003's waypoint switching or a minimum-snap
+// fit of its path (nullptr on failure, with q's status and failure set).
+std::unique_ptr<ReferenceSource> singleReference(const Scenario& s, const VehicleSpec& spec,
+                                                 std::size_t k, QuadrotorPlans& q) {
+  ParamSet traj = s.trajectory_params;
+  if (s.trajectory_mode == "waypoints") {
+    const double radius = traj.getDouble("switch_radius", 0.2, 0.01, 100.0);
+    traj.requireAllUsed("trajectory mode 'waypoints'");
+    return std::make_unique<WaypointReference>(q.plans[k].path.waypoints,
+                                               spec.yaw_deg * M_PI / 180.0, radius);
+  }
+  MinimumSnapResult fit = fitMinimumSnap(s, q.airframes[k], q.plans[k], traj);
+  if (!fit.success) {
+    q.status = PlanStatus::NoTrajectory;
+    q.failure = "no feasible trajectory: " + fit.message;
+    return nullptr;
+  }
+  q.plans[k].trajectory_counters = fit.counters;
+  return std::make_unique<TrajectoryReference>(std::move(fit.trajectory),
+                                               spec.yaw_deg * M_PI / 180.0);
+}
+
+}  // namespace
+
+QuadrotorPlans planQuadrotors(const Scenario& s, const WorldModel& world,
+                              const std::vector<std::size_t>& vehicles, Planning planning,
+                              const RunRequest& request, const RunReporter& report) {
+  QuadrotorPlans q;
+  for (std::size_t v : vehicles)
+    q.airframes.push_back(believedAirframe(world.vehicles()[v].params, s.model_error));
+  if (planning == Planning::Team) {
+    planQuadrotorTeam(s, world, vehicles, request, report, q);
+  } else {
+    planEachQuadrotor(s, world, vehicles, request, report, q);
+    for (std::size_t k = 0; k < vehicles.size() && q.status == PlanStatus::Ready; ++k)
+      q.references.push_back(singleReference(s, s.vehicles[vehicles[k]], k, q));
+  }
+  if (q.status != PlanStatus::Ready) q.references.clear();
+  if (!q.plans.empty()) q.trajectory_counters = q.plans.front().trajectory_counters;
+  return q;
+}
+
+}  // namespace cosim

@@ -1,0 +1,106 @@
+#include "run/run_evaluation.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "run/navigation_driver.h"
+#include "run/pooled_metrics.h"
+
+namespace cosim {
+
+namespace {
+
+// A robot's tracking error is against its timed plan (a time-parametrised reference); a
+// quadrotor's against its trajectory, or its path when it switches between waypoints.
+std::vector<FlightMetrics> eachVehicle(const Scenario& s, const RunSetup& setup,
+                                       const RunLog& log) {
+  const bool quadrotor_trajectory = setup.quadrotorSections(s).trajectory_mode != "waypoints";
+  std::vector<FlightMetrics> each;
+  for (std::size_t v = 0; v < log.vehicles.size(); ++v)
+    each.push_back(computeFlightMetrics(log.vehicles[v], s.world,
+                                        s.vehicles[v].ground || quadrotor_trajectory));
+  return each;
+}
+
+RobotSchedule robotSchedule(const RunSetup& setup, const RunPlan& plan, const RunLog& log) {
+  RobotSchedule s;
+  for (std::size_t k = 0; k < setup.robots.size(); ++k) {
+    const double arrival = log.vehicles[setup.robots[k]].arrival_time;
+    const double planned =
+        plan.drivable() && k < plan.robots.paths.size() ? plan.robots.paths[k].endTime() : -1.0;
+    s.planned_arrival_s.push_back(planned);
+    s.planned_makespan_s = std::max(s.planned_makespan_s, planned);
+    s.executed_makespan_s = std::max(s.executed_makespan_s, arrival);
+    s.sum_of_arrival_times_s += std::max(arrival, 0.0);
+  }
+  return s;
+}
+
+std::optional<UavSeparationMetrics> separation(const RunSetup& setup, const WorldModel& world,
+                                               const RunLog& log) {
+  if (setup.quadrotors.size() < 2) return std::nullopt;
+  std::vector<SeparationEllipsoid> ellipsoids;
+  for (std::size_t v : setup.quadrotors)
+    ellipsoids.push_back({world.vehicles()[v].params.separation_radius,
+                          world.vehicles()[v].params.separation_height});
+  return uavSeparationMetrics(log, setup.quadrotors, ellipsoids);
+}
+
+// Why the run failed its task, or "" if it did not: the plan's failure, else the simulation's
+// end, else a vehicle that missed its goal or touched something. A team plan with conflicts
+// fails the run whatever the physics made of it.
+std::string failureMessage(const RunPlan& plan, const RunMetrics& m) {
+  std::string why;
+  if (!plan.drivable())
+    why = plan.message;
+  else if (m.end == RunEnd::GaveUp)
+    why = "the navigator gave up" +
+          (plan.robots.navigator && !plan.robots.navigator->message().empty()
+               ? ": " + plan.robots.navigator->message()
+               : std::string());
+  else if (isFault(m.end))
+    why = faultMessage(m.end);
+  else if (m.end != RunEnd::Goal || !m.reached_goal)
+    why = "goal not reached within sim.max_time";
+  else if (m.collisions > 0)
+    why = "collision";
+  if (plan.status == PlanStatus::Conflicting) why = plan.message + (why.empty() ? "" : "; " + why);
+  return why;
+}
+
+void evaluateOutcome(const RunPlan& plan, const RunLog& log, RunMetrics& m) {
+  m.end = runEndOf(log.end_reason);
+  m.reached_goal = plan.drivable();
+  m.min_clearance_m = m.vehicles.empty() ? 0.0 : std::numeric_limits<double>::infinity();
+  for (const FlightMetrics& v : m.vehicles) {
+    m.reached_goal = m.reached_goal && v.reached_goal;
+    m.min_clearance_m = std::min(m.min_clearance_m, v.min_clearance_m);
+  }
+  m.collisions = m.contacts.total();
+  m.message = failureMessage(plan, m);
+  m.status = m.message.empty() ? 0 : 1;
+}
+
+}  // namespace
+
+RunMetrics evaluateRun(const Scenario& scenario, const RunSetup& setup, const WorldModel& world,
+                       const RunPlan& plan, const RunLog& log) {
+  RunMetrics m;
+  m.sim_speed_x = log.wall_time > 0 ? log.sim_time / log.wall_time : 0.0;
+  m.vehicles = eachVehicle(scenario, setup, log);
+  std::vector<bool> ground(log.vehicles.size());
+  for (std::size_t v = 0; v < ground.size(); ++v) ground[v] = scenario.vehicles[v].ground;
+  m.contacts = teamContacts(log, ground);
+  m.team = poolFlightMetrics(m.vehicles, log, setup.primary());
+  if (setup.ground()) {
+    m.uavs = poolFlightMetrics(m.vehicles, log, setup.quadrotors);
+    m.schedule = robotSchedule(setup, plan, log);
+  }
+  m.separation = separation(setup, world, log);
+  for (std::size_t v : setup.quadrotors)
+    m.longest_saturation_s = std::max(m.longest_saturation_s, longestSaturation(log.vehicles[v]));
+  evaluateOutcome(plan, log, m);
+  return m;
+}
+
+}  // namespace cosim

@@ -1,0 +1,79 @@
+#include "run/run_pilots.h"
+
+#include <cmath>
+
+#include "control/ground_feedback_linearization.h"
+#include "control/ground_velocity_tracker.h"
+#include "sim/controller_factory.h"
+
+namespace cosim {
+
+namespace {
+
+// A holonomic base tracks its timed path with the velocity tracker; a differential drive with
+// feedback linearization about a point ahead of its axle.
+std::unique_ptr<GroundController> makeGroundController(ParamSet& gains, const VehicleHandles& h) {
+  GroundMotionLimits limits;
+  limits.max_speed = h.drive.max_speed;
+  limits.max_yaw_rate = h.drive.max_yaw_rate;
+  limits.max_acceleration = gains.getDouble("max_acceleration", 1.0, 1e-3, 100.0);
+  limits.max_yaw_acceleration = gains.getDouble("max_yaw_acceleration", 4.0, 1e-3, 1000.0);
+  if (h.drive.kind == GroundDrive::Kind::Holonomic) {
+    GroundVelocityTrackerGains g;
+    g.k_position = gains.getDouble("k_position", g.k_position, 1e-3, 100.0);
+    g.k_yaw = gains.getDouble("k_yaw", g.k_yaw, 1e-3, 100.0);
+    return std::make_unique<GroundVelocityTracker>(limits, g);
+  }
+  GroundFeedbackLinearizationParams p;
+  p.b = gains.getDouble("b", p.b, 1e-3, 10.0);
+  p.k = gains.getDouble("k", p.k, 1e-3, 100.0);
+  p.wheel_separation = h.drive.wheel_separation;
+  return std::make_unique<GroundFeedbackLinearization>(limits, p);
+}
+
+void buildRobotPilots(const Scenario& s, const RunSetup& setup, const WorldModel& world,
+                      RobotPlans& plans, RunPilots& pilots, bool drivable) {
+  for (std::size_t k = 0; k < setup.robots.size(); ++k) {
+    ParamSet gains = s.controller_gains;
+    pilots.robot_controllers.push_back(
+        makeGroundController(gains, world.vehicles()[setup.robots[k]]));
+    gains.requireAllUsed("controller.gains (ground robots)");
+    if (!drivable) continue;
+    const VehicleSpec& spec = s.vehicles[setup.robots[k]];
+    GroundPilot& pilot = pilots.robots.emplace_back();
+    pilot.controller = pilots.robot_controllers.back().get();
+    pilot.path = &plans.paths[k];
+    pilot.yaw = spec.yaw_deg * M_PI / 180.0;
+    pilot.goal = floorPoint(planarPoint(spec.goal()));
+    for (const auto& p : plans.paths[k].points()) pilot.planned_path.push_back(floorPoint(p));
+  }
+}
+
+void buildQuadrotorPilots(const Scenario& s, const RunSetup& setup, QuadrotorPlans& plans,
+                          RunPilots& pilots, bool drivable) {
+  for (std::size_t k = 0; k < setup.quadrotors.size(); ++k) {
+    ParamSet gains = s.controller_gains;
+    pilots.quadrotor_controllers.push_back(makeFlightController(
+        s.controller_name, gains, plans.airframes[k], s.controller_drag_compensation));
+    if (!drivable) continue;
+    VehiclePilot& pilot = pilots.quadrotors.emplace_back();
+    pilot.believed_airframe = &plans.airframes[k];
+    pilot.controller = pilots.quadrotor_controllers.back().get();
+    pilot.reference = plans.references[k].get();
+    pilot.goal = s.vehicles[setup.quadrotors[k]].goal();
+    pilot.planned_path = plans.plans[k].path.waypoints;
+  }
+}
+
+}  // namespace
+
+RunPilots buildPilots(const Scenario& scenario, const RunSetup& setup, const WorldModel& world,
+                      RunPlan& plan) {
+  RunPilots pilots;
+  buildRobotPilots(scenario, setup, world, plan.robots, pilots, plan.drivable());
+  buildQuadrotorPilots(setup.quadrotorSections(scenario), setup, plan.quadrotors, pilots,
+                       plan.drivable());
+  return pilots;
+}
+
+}  // namespace cosim

@@ -1,0 +1,196 @@
+#include "sim/simulation_loop.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "sim/ground_vehicle_handles.h"
+#include "sim/moving_obstacle_motion.h"
+
+namespace cosim {
+
+namespace {
+
+// Which pilot drives each vehicle of the world: its index among the robots or the quadrotors.
+std::vector<std::size_t> pilotIndices(const WorldModel& world, std::size_t robots,
+                                      std::size_t quadrotors) {
+  const auto& vehicles = world.vehicles();
+  std::vector<std::size_t> pilot(vehicles.size());
+  std::size_t robot_count = 0, quadrotor_count = 0;
+  for (std::size_t v = 0; v < vehicles.size(); ++v)
+    pilot[v] = vehicles[v].ground ? robot_count++ : quadrotor_count++;
+  if (robot_count != robots || quadrotor_count != quadrotors)
+    throw std::invalid_argument("SimulationLoop: one pilot per ground robot and per quadrotor");
+  return pilot;
+}
+
+}  // namespace
+
+SimulationLoop::SimulationLoop(const WorldModel& world, const Scenario& scenario,
+                               std::vector<GroundPilot>& robots,
+                               std::vector<VehiclePilot>& quadrotors,
+                               const SimulationOptions& options)
+    : world_(world),
+      options_(options),
+      pilot_(pilotIndices(world, robots.size(), quadrotors.size())),
+      d_(mj_makeData(world.model())),
+      physics_(world, scenario, options.settings) {
+  const mjModel* m = world.model();
+  mjData* d = d_.get();
+  mj_resetData(m, d);
+  for (const auto& v : world.vehicles())
+    if (v.drive.planar_root) setPlanarPose(d, v, v.drive.planar_origin, v.drive.start_yaw);
+  physics_.startHovering(d);
+  if (options_.log_rate > 0.0)
+    controls_per_log_ = std::max(
+        1, static_cast<int>(std::ceil(1.0 / (options_.log_rate * physics_.controlDt()) - 1e-9)));
+
+  // Moving obstacles: mocap bodies placed from their trajectories.
+  if (!options_.obstacle_position)
+    options_.obstacle_position = [&scenario](std::size_t i, double t) {
+      return movingObstaclePosition(scenario.moving_obstacles[i], t);
+    };
+  for (std::size_t i = 0; i < scenario.moving_obstacles.size(); ++i) {
+    const int body = mj_name2id(m, mjOBJ_BODY, movingObstacleName(i).c_str());
+    mocap_.push_back(body >= 0 ? m->body_mocapid[body] : -1);
+    MovingObstacleLog& ol = log_.moving_obstacles.emplace_back();
+    ol.name = movingObstacleName(i);
+    ol.radius = movingObstacleFootprintRadius(scenario.moving_obstacles[i]);
+  }
+  placeObstacles(0.0);
+  mj_forward(m, d);
+
+  beginVehicles(scenario, robots, quadrotors);
+  states_.resize(robots.size());
+  if (physics_.maxSteps() <= 0) end("max_time");
+  physics_.startClock();
+}
+
+SimulationLoop::~SimulationLoop() = default;
+
+void SimulationLoop::beginVehicles(const Scenario& scenario, std::vector<GroundPilot>& robots,
+                                   std::vector<VehiclePilot>& quadrotors) {
+  const SimSettings& cfg = options_.settings;
+  const AerialStepRules rules(cfg, scenario.world, options_.aerial_hold_after_arrival,
+                              options_.max_saturated_time);
+  const AerialSensing sensing{scenario.sensors, scenario.estimator, cfg.seed};
+  const std::size_t expected_samples =
+      static_cast<std::size_t>(cfg.max_time / (controls_per_log_ * physics_.controlDt())) + 2;
+  const auto& vehicles = world_.vehicles();
+  for (std::size_t v = 0; v < vehicles.size(); ++v) {
+    if (vehicles[v].ground) {
+      GroundPilotStep& g = drives_.emplace_back(vehicles[v], v, robots[pilot_[v]],
+                                                cfg.goal_tolerance, options_.hold_after_arrival);
+      log_.vehicles.push_back(g.begin());
+    } else {
+      AerialPilotStep& f =
+          flights_.emplace_back(vehicles[v], quadrotors[pilot_[v]], rules, sensing, v);
+      log_.vehicles.push_back(f.begin(d_.get(), expected_samples));
+    }
+  }
+}
+
+void SimulationLoop::placeObstacles(double t) {
+  for (std::size_t i = 0; i < mocap_.size(); ++i) {
+    if (mocap_[i] < 0) continue;
+    const Eigen::Vector2d p = options_.obstacle_position(i, t);
+    d_->mocap_pos[3 * mocap_[i]] = p.x();
+    d_->mocap_pos[3 * mocap_[i] + 1] = p.y();
+  }
+}
+
+bool SimulationLoop::stepControl() {
+  if (done_) return false;
+  if (const char* reason = control()) return end(reason);
+  const long last =
+      std::min(physics_.stepsTaken() + physics_.stepsPerControl(), physics_.maxSteps());
+  while (physics_.stepsTaken() < last) {
+    placeObstacles(d_->time);
+    // (Wind, rotor drag and ground effect act on the quadrotors, also over the robots.)
+    if (const char* fault = physics_.step(d_.get(), log_)) return end(fault);
+  }
+  if (physics_.stepsTaken() >= physics_.maxSteps()) return end("max_time");
+  return true;
+}
+
+const char* SimulationLoop::control() {
+  if (options_.interrupt && options_.interrupt->load()) return "interrupted";
+  const mjData* d = d_.get();
+  const auto& vehicles = world_.vehicles();
+  for (std::size_t v = 0; v < vehicles.size(); ++v)
+    if (vehicles[v].ground) states_[pilot_[v]] = readPlanarState(d, vehicles[v]);
+  if (options_.before_control && !options_.before_control(d->time, states_)) return "gave_up";
+
+  const bool record = control_count_++ % controls_per_log_ == 0;
+  const double control_dt = physics_.controlDt();
+  bool all_done = true, diverged = false, saturated = false;
+  for (std::size_t v = 0; v < vehicles.size(); ++v) {
+    VehicleLog& vl = log_.vehicles[v];
+    if (vehicles[v].ground) {
+      const GroundPilotStep::Outcome o =
+          drives_[pilot_[v]].step(d, states_[pilot_[v]], physics_, control_dt, vl, record);
+      all_done = all_done && o.done;
+      diverged = diverged || o.diverged;
+    } else {
+      const AerialPilotStep::Outcome o =
+          flights_[pilot_[v]].step(d, physics_.plant(v), control_dt, vl, record);
+      all_done = all_done && o.done;
+      diverged = diverged || o.diverged;
+      saturated = saturated || o.saturated;
+    }
+  }
+  if (record)
+    for (std::size_t i = 0; i < mocap_.size(); ++i) {
+      const Eigen::Vector2d p = options_.obstacle_position(i, d->time);
+      log_.moving_obstacles[i].t.push_back(d->time);
+      log_.moving_obstacles[i].pos.push_back({p.x(), p.y(), 0.0});
+    }
+  if (diverged || saturated) return diverged ? "diverged" : "saturated";
+  if (all_done) return "goal";
+  return nullptr;
+}
+
+bool SimulationLoop::end(const char* reason) {
+  end_reason_ = reason;
+  done_ = true;
+  return false;
+}
+
+double SimulationLoop::time() const {
+  return d_ ? d_->time : end_time_;
+}
+
+RunLog SimulationLoop::finish() {
+  if (!d_) throw std::logic_error("SimulationLoop::finish called twice");
+  if (!done_) end("interrupted");
+  log_.end_reason = end_reason_;
+  physics_.finish(d_.get(), log_);
+  end_time_ = d_->time;
+  d_.reset();
+  return std::move(log_);
+}
+
+TrueVehicleState SimulationLoop::vehicleState(std::size_t v) const {
+  if (!d_) throw std::logic_error("SimulationLoop::vehicleState after finish");
+  const VehicleHandles& h = world_.vehicles().at(v);
+  const mjtNum* q = d_->qpos + h.qpos_adr;
+  const mjtNum* u = d_->qvel + h.qvel_adr;
+  TrueVehicleState s;
+  if (h.drive.planar_root) {  // slide x, slide y (from the start), hinge yaw; the body is level
+    const double z = world_.model()->body_pos[3 * h.body + 2];
+    s.position = {h.drive.planar_origin.x() + q[0], h.drive.planar_origin.y() + q[1], z};
+    s.velocity = {u[0], u[1], 0.0};
+    s.quaternion = {std::cos(0.5 * q[2]), 0.0, 0.0, std::sin(0.5 * q[2])};
+    s.angular_velocity = {0.0, 0.0, u[2]};
+    return s;
+  }
+  // Free joint: x y z qw qx qy qz; linear velocity in the world, angular in the body frame.
+  s.position = {q[0], q[1], q[2]};
+  s.velocity = {u[0], u[1], u[2]};
+  s.quaternion = {q[3], q[4], q[5], q[6]};
+  s.angular_velocity = {u[3], u[4], u[5]};
+  return s;
+}
+
+}  // namespace cosim
