@@ -7,5 +7,6 @@ namespace cosim::python {
 void bindInputError(pybind11::module_& m);  // cosim.InputError
 void bindRun(pybind11::module_& m);         // cosim.run, cosim.RunResult
 void bindPlan(pybind11::module_& m);        // cosim.plan, cosim.PlanResult
+void bindSimulation(pybind11::module_& m);  // cosim.Simulation
 
 }  // namespace cosim::python

@@ -2,6 +2,7 @@
 // CONTRACT.md's "Python" section: cosim.run, cosim.plan, cosim.Simulation, cosim.InputError.
 #include "python/bindings.h"
 #include "python/overrides.h"
+#include "python/unknown_vehicle_error.h"
 #include "sim/mujoco_messages.h"
 
 PYBIND11_MODULE(_cosim, m) {
@@ -14,6 +15,8 @@ PYBIND11_MODULE(_cosim, m) {
   m.attr("DEFAULT_SCENARIO") = cosim::python::defaultScenarioPath();
   m.attr("__version__") = std::string(COSIM_VERSION);
   cosim::python::bindInputError(m);
+  cosim::python::bindUnknownVehicleError(m);
   cosim::python::bindRun(m);
   cosim::python::bindPlan(m);
+  cosim::python::bindSimulation(m);
 }

@@ -3,6 +3,7 @@
 // log in memory.
 #include <pybind11/stl.h>
 
+#include <iostream>
 #include <optional>
 
 #include "core/input_error.h"
@@ -12,6 +13,7 @@
 #include "python/interrupt_guard.h"
 #include "python/overrides.h"
 #include "python/python_values.h"
+#include "python/unknown_vehicle_error.h"
 #include "run/run_files.h"
 #include "run/run_pipeline.h"
 #include "run/scenario_checks.h"
@@ -32,22 +34,12 @@ struct RunResult {
 
   // The vehicles whose rows `vehicle` asks for: all (None), one by name or by index.
   std::vector<std::size_t> vehiclesFor(const py::object& vehicle) const {
-    std::vector<std::size_t> chosen;
-    if (vehicle.is_none()) {
-      for (std::size_t v = 0; v < log.vehicles.size(); ++v) chosen.push_back(v);
-      return chosen;
-    }
-    std::string known;
-    for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
-      const bool named =
-          py::isinstance<py::str>(vehicle) && vehicle.cast<std::string>() == log.vehicles[v].name;
-      const bool indexed = py::isinstance<py::int_>(vehicle) && vehicle.cast<long>() >= 0 &&
-                           static_cast<std::size_t>(vehicle.cast<long>()) == v;
-      if (named || indexed) return {v};
-      known += (known.empty() ? "" : ", ") + log.vehicles[v].name;
-    }
-    throw py::value_error("no vehicle " + py::repr(vehicle).cast<std::string>() +
-                          " in this run (vehicles: " + known + ")");
+    std::vector<std::string> names;
+    for (const VehicleLog& v : log.vehicles) names.push_back(v.name);
+    if (!vehicle.is_none()) return {vehicleIndex(vehicle, names)};
+    std::vector<std::size_t> all(names.size());
+    for (std::size_t v = 0; v < all.size(); ++v) all[v] = v;
+    return all;
   }
 
   py::dict timeseries(const py::object& vehicle) const {
@@ -99,6 +91,10 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
     if (out_dir) request.out_dir = prepareOutputDir(*out_dir, "run");
     request.video = video;
     request.interrupt = &stopRequestFlag();
+    // Warnings as the program prints them; the rest of its progress lines stay unsaid.
+    request.observer = [](const RunEvent& e) {
+      if (e.kind == RunEventKind::Warning) std::cerr << "cosim: warning: " << e.text << "\n";
+    };
     try {
       summary = executeRun(s, request);
     } catch (const InputError& e) {

@@ -25,6 +25,8 @@ from ._cosim import (  # noqa: E402
     InputError,
     PlanResult,
     RunResult,
+    Simulation,
+    UnknownVehicleError,
     __version__,
     plan,
     run,
@@ -35,6 +37,8 @@ __all__ = [
     "InputError",
     "PlanResult",
     "RunResult",
+    "Simulation",
+    "UnknownVehicleError",
     "plan",
     "run",
 ]

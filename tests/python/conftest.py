@@ -32,3 +32,13 @@ def read_csv_rows(path):
 
 
 DEFAULT = cosim.DEFAULT_SCENARIO
+
+# Wall-clock figures: the only metrics that differ between two runs of the same scenario.
+WALL_CLOCK = {"wall_time_s", "sim_speed_x", "planning_time_ms"}
+
+
+def without_wall_clock(metrics):
+    m = {k: v for k, v in metrics.items() if k not in WALL_CLOCK}
+    m["trajectory_counters"] = {k: v for k, v in m["trajectory_counters"].items()
+                                if k != "time_ms"}
+    return m

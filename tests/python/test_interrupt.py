@@ -5,6 +5,8 @@ import subprocess
 import sys
 import time
 
+import pytest
+
 from conftest import DEFAULT
 
 # RRT* improves its path until its time limit: a plan that would take a minute.
@@ -12,9 +14,15 @@ LONG_PLAN = (f"cosim.plan({DEFAULT!r}, planner='rrt_star', "
              "overrides={'planner.time_limit': 60})")
 
 
-def test_sigint_during_a_long_plan_raises_keyboard_interrupt_within_3_s():
+@pytest.mark.parametrize("call", [
+    LONG_PLAN,
+    # Simulation plans in its constructor, as cosim.run does.
+    f"cosim.Simulation({DEFAULT!r}, overrides={{'planner.name': 'rrt_star', "
+    "'planner.time_limit': 60})",
+])
+def test_sigint_during_a_long_plan_raises_keyboard_interrupt_within_3_s(call):
     p = subprocess.Popen(
-        [sys.executable, "-c", f"import cosim; print('planning', flush=True); {LONG_PLAN}"],
+        [sys.executable, "-c", f"import cosim; print('planning', flush=True); {call}"],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=dict(os.environ))
     assert p.stdout.readline() == "planning\n"
     time.sleep(1.0)

@@ -7,10 +7,8 @@ import numpy as np
 import pytest
 
 import cosim
-from conftest import DEFAULT, read_csv_rows
+from conftest import DEFAULT, read_csv_rows, without_wall_clock
 
-# Wall-clock figures: the only metrics that differ between two runs of the same scenario.
-WALL_CLOCK = {"wall_time_s", "sim_speed_x", "planning_time_ms"}
 OVERRIDES = {"sim.max_time": 60}  # the default flight lands at 30.2 s
 
 
@@ -28,13 +26,6 @@ def cli_run(cosim_binary, tmp_path_factory):
     assert p.returncode == 0, p.stderr
     with open(out / "metrics.json") as f:
         return out, json.load(f)
-
-
-def without_wall_clock(metrics):
-    m = {k: v for k, v in metrics.items() if k not in WALL_CLOCK}
-    m["trajectory_counters"] = {k: v for k, v in m["trajectory_counters"].items()
-                                if k != "time_ms"}
-    return m
 
 
 def test_run_of_the_default_scenario_reaches_the_goal(python_run):
