@@ -92,3 +92,12 @@ def test_a_failed_task_is_status_1_with_the_programs_message():
     assert r.message == "goal not reached within sim.max_time"
     assert r.metrics["reached_goal"] is False
     assert r.timeseries()["t"][-1] == pytest.approx(10.0, abs=0.01)
+
+
+def test_run_with_out_and_video_renders_video_mp4(tmp_path):
+    # A small time-lapse: the flight's 30 s in 3 s of 160x120 video.
+    r = cosim.run(DEFAULT, overrides={"render.width": 160, "render.height": 120,
+                                      "render.speed": 10}, out=tmp_path, video=True)
+    assert r.status == 0
+    assert (tmp_path / "video.mp4").stat().st_size > 1000
+    assert (tmp_path / "metrics.json").exists()
