@@ -3,12 +3,12 @@
 
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
+#include "cli/planner_list.h"
 #include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "run/scenario_checks.h"
 #include "run/scenario_planning.h"
 #include "core/input_error.h"
-#include "planning/planner_registry.h"
 #include "core/stop_request.h"
 #include "core/json_writer.h"
 #include "sim/world_model.h"
@@ -19,7 +19,9 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
   auto* cmd = app.add_subcommand(
       "plan",
       "Plan the first vehicle's path in a scenario's world, without physics. Writes path.csv and\n"
-      "plan.json (success, length_m, time_ms, counters, planner, params). Exit 1 if no path.");
+      "plan.json (success, status, length_m, time_ms, counters, planner, params). Exit 1 if no\n"
+      "path or interrupted. `cosim plan --list` lists every planner with its parameters (name,\n"
+      "default, valid values, what it does).");
   struct Args {
     std::string scenario, planner, out;
     std::vector<std::string> sets;
@@ -30,11 +32,11 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--planner", a->planner, "planner name (overrides planner.name)");
   cmd->add_option("--out", a->out, "output folder (default: a new folder under out/)");
   cmd->add_option("--set", a->sets, "override a scenario key, e.g. --set planner.resolution=0.25");
-  cmd->add_flag("--list", a->list, "list the planners and exit");
+  cmd->add_flag("--list", a->list,
+                "list every planner with its parameters (default, valid values, meaning) and exit");
   cmd->callback([a, &ctx] {
     if (a->list) {
-      for (const auto& e : PlannerRegistry::instance().entries())
-        std::cout << e.name << "\t" << e.family << "\t" << e.summary << "\n";
+      std::cout << plannerListText();
       return;
     }
     if (a->scenario.empty()) throw InputError("command line", "plan", "a scenario file is required");
@@ -60,7 +62,9 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     const WorldModel world = WorldModel::build(s);
     const VehiclePlan plan = planVehicle(s, s.vehicles.front(), world.vehicles().front().params.radius,
                                          s.planner_params);
-    if (stopRequested()) {  // the planner stopped early: its outcome is no result
+    // A planner ended by the stop request says so; a request that came after it returned is an
+    // interrupt all the same.
+    if (plan.status == PlannerStatus::Stopped || stopRequested()) {
       std::cerr << "cosim: interrupted; " << dir.string() << " holds no plan\n";
       ctx.status = 1;
       return;
@@ -73,6 +77,7 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     }
     JsonObject j;
     j.add("success", plan.success)
+        .add("status", toString(plan.status))
         .add("length_m", plan.success ? plan.path.length() : 0.0)
         .add("time_ms", plan.time_ms)
         .add("waypoints", plan.path.size())

@@ -17,7 +17,28 @@ std::string formatNumber(double v) {
   out << v;
   return out.str();
 }
+
+// "[lo, hi]", ">= lo", "<= hi" or "any": a bound at the type's extreme (the getters' defaults)
+// is no bound.
+template <class T>
+std::string rangeText(T lo, T hi, T lowest, T highest, std::string (*format)(T)) {
+  // (appended piecewise: GCC 12 warns falsely on "..." + std::string, -Wrestrict)
+  std::string text;
+  if (lo <= lowest && hi >= highest) return "any";
+  if (hi >= highest) return text.append(">= ").append(format(lo));
+  if (lo <= lowest) return text.append("<= ").append(format(hi));
+  return text.append("[").append(format(lo)).append(", ").append(format(hi)).append("]");
+}
+std::string formatInt(long v) {
+  return std::to_string(v);
+}
 }  // namespace
+
+void ParamSet::declare(ParamDeclaration declaration) {
+  for (const ParamDeclaration& d : declarations_)
+    if (d.name == declaration.name) return;  // the first ask declares it
+  declarations_.push_back(std::move(declaration));
+}
 
 void ParamSet::set(const std::string& name, const std::string& value, const std::string& place) {
   values_[name] = Entry{value, place};
@@ -25,8 +46,8 @@ void ParamSet::set(const std::string& name, const std::string& value, const std:
 
 void ParamSet::fail(const std::string& name, const std::string& problem) const {
   auto it = values_.find(name);
-  std::string place = (it != values_.end() && !it->second.place.empty()) ? it->second.place
-                                                                         : "parameter " + name;
+  std::string place =
+      (it != values_.end() && !it->second.place.empty()) ? it->second.place : "parameter " + name;
   throw InputError(file_, place, problem);
 }
 
@@ -37,6 +58,7 @@ const ParamSet::Entry* ParamSet::find(const std::string& name) {
 }
 
 double ParamSet::getDouble(const std::string& name, double fallback, double lo, double hi) {
+  declare({name, "number", formatNumber(fallback), rangeText(lo, hi, -1e300, 1e300, formatNumber)});
   double v = fallback;
   if (const Entry* e = find(name)) {
     char* end = nullptr;
@@ -52,6 +74,8 @@ double ParamSet::getDouble(const std::string& name, double fallback, double lo, 
 }
 
 int ParamSet::getInt(const std::string& name, int fallback, int lo, int hi) {
+  declare({name, "integer", std::to_string(fallback),
+           rangeText<long>(lo, hi, -2147483647L, 2147483647L, formatInt)});
   long v = fallback;
   if (const Entry* e = find(name)) {
     char* end = nullptr;
@@ -67,6 +91,7 @@ int ParamSet::getInt(const std::string& name, int fallback, int lo, int hi) {
 }
 
 bool ParamSet::getBool(const std::string& name, bool fallback) {
+  declare({name, "bool", fallback ? "true" : "false", "true|false"});
   bool v = fallback;
   if (const Entry* e = find(name)) {
     std::string s = e->value;
@@ -84,6 +109,9 @@ bool ParamSet::getBool(const std::string& name, bool fallback) {
 
 std::string ParamSet::getString(const std::string& name, const std::string& fallback,
                                 const std::vector<std::string>& allowed) {
+  std::string choices;
+  for (const auto& a : allowed) choices += (choices.empty() ? "" : "|") + a;
+  declare({name, "text", fallback, allowed.empty() ? "any" : choices});
   std::string v = fallback;
   if (const Entry* e = find(name)) v = e->value;
   if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {

@@ -8,6 +8,17 @@
 
 namespace cosim {
 
+// What a consumer declared when it asked for a parameter: its type, default and valid values.
+// A planner built from an empty ParamSet declares every parameter it reads, so the list of a
+// planner's parameters (`cosim plan --list`) comes from the very calls that read them, with the
+// defaults they really use.
+struct ParamDeclaration {
+  std::string name;
+  std::string type;           // "number", "integer", "bool" or "text"
+  std::string default_value;  // as effective() would show it
+  std::string range;          // "[0.01, 100]", ">= 1", "true|false", "fixed|dynamic", "any"
+};
+
 class ParamSet {
  public:
   ParamSet() = default;
@@ -34,6 +45,8 @@ class ParamSet {
 
   // Every parameter asked for, with the value in force (set or default), for plan.json.
   const std::map<std::string, std::string>& effective() const { return effective_; }
+  // Every parameter asked for, in the order first asked, as declared by that first ask.
+  const std::vector<ParamDeclaration>& declarations() const { return declarations_; }
   const std::string& file() const { return file_; }
 
  private:
@@ -43,11 +56,13 @@ class ParamSet {
   };
   [[noreturn]] void fail(const std::string& name, const std::string& problem) const;
   const Entry* find(const std::string& name);
+  void declare(ParamDeclaration declaration);
 
   std::string file_;
   std::map<std::string, Entry> values_;
   std::map<std::string, bool> used_;
   std::map<std::string, std::string> effective_;
+  std::vector<ParamDeclaration> declarations_;
 };
 
 }  // namespace cosim

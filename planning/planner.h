@@ -8,6 +8,7 @@
 #include <string>
 
 #include "planning/path.h"
+#include "planning/planner_status.h"
 #include "planning/world/world.h"
 
 namespace cosim {
@@ -26,7 +27,8 @@ struct PlanningProblem {
 };
 
 struct PlanResult {
-  bool success = false;
+  bool success = false;  // status == ExactSolution
+  PlannerStatus status = PlannerStatus::Unknown;
   Path path;
   double time_ms = 0.0;
   // Planner-specific counters, e.g. expansions, los_checks, iterations, nodes.

@@ -110,6 +110,12 @@ const std::vector<std::string>& allPlannerParameterNames() {
   return names;
 }
 
+std::vector<ParamDeclaration> declaredParameters(const PlannerEntry& entry) {
+  ParamSet probe("probe");
+  entry.make(probe);
+  return probe.declarations();
+}
+
 std::unique_ptr<Planner> makePlanner(const std::string& name, ParamSet& params,
                                      const std::string& place, std::vector<std::string>* ignored) {
   auto planner = findOrThrow(name, params, place, false).make(params);

@@ -53,4 +53,8 @@ std::unique_ptr<Planner> makePlanner(const std::string& name, ParamSet& params,
 // Every parameter name some registered planner reads.
 const std::vector<std::string>& allPlannerParameterNames();
 
+// The parameters `entry`'s planner reads, in the order it reads them, with the defaults and
+// ranges it declares when built from an empty set (so they are the values it really uses).
+std::vector<ParamDeclaration> declaredParameters(const PlannerEntry& entry);
+
 }  // namespace cosim

@@ -12,6 +12,7 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, do
   plan.inflation = vehicle_radius + scenario.planner_margin;
   if (scenario.planner_name.empty()) {
     plan.success = true;
+    plan.status = PlannerStatus::ExactSolution;
     plan.path.waypoints.push_back(vehicle.start);
     for (const auto& w : vehicle.waypoints) {
       plan.path.waypoints.push_back(w);
@@ -47,6 +48,7 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, do
     for (const auto& [k, v] : r.counters) plan.counters[k] += v;
     if (!r.success || r.path.empty()) {
       plan.success = false;
+      plan.status = r.status;
       plan.message = "no path from waypoint " + std::to_string(i) + " to " + std::to_string(i + 1) +
                      (r.message.empty() ? "" : ": " + r.message);
       return plan;
@@ -58,6 +60,7 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, do
     from = vehicle.waypoints[i];
   }
   plan.success = true;
+  plan.status = PlannerStatus::ExactSolution;
   return plan;
 }
 

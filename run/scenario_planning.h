@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "planning/path.h"
+#include "planning/planner_status.h"
 #include "sim/scenario.h"
 
 namespace cosim {
@@ -21,6 +22,7 @@ struct VehiclePlan {
   std::map<std::string, double> counters;     // summed over segments
   std::map<std::string, std::string> params;  // the planner's parameters in force
   std::string message;
+  PlannerStatus status = PlannerStatus::Unknown;  // the failing segment's, else ExactSolution
   double inflation = 0.0;  // vehicle radius + margin the planner kept clear
   std::map<std::string, double> trajectory_counters;  // from the minimum-snap fit, if any
   std::vector<std::string> ignored_params;            // taken by other planners, not by this one

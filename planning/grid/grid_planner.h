@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "planning/grid/occupancy_grid.h"
+#include "planning/planner_status.h"
 
 namespace cosim {
 
@@ -46,7 +47,8 @@ struct GridQuery {
 };
 
 struct GridPlanResult {
-  bool success = false;
+  bool success = false;  // status == ExactSolution
+  PlannerStatus status = PlannerStatus::Unknown;
   std::vector<Cell> cells;  // start ... goal; any-angle planners return only the turning cells
   double length = 0.0;      // in cell units (Euclidean between consecutive cells)
   double time_ms = 0.0;

@@ -1,5 +1,7 @@
 #include "planning/grid/grid_search_outcome.h"
 
+#include <tuple>
+
 namespace cosim {
 
 namespace {
@@ -11,19 +13,24 @@ std::string cellText(const Cell& c) {
 }  // namespace
 
 namespace {
-std::string gridQueryProblem(const GridQuery& q) {
-  if (q.grid == nullptr) return "no grid given";
-  if (!q.grid->inside(q.start)) return "start cell " + cellText(q.start) + " is outside the grid";
-  if (!q.grid->inside(q.goal)) return "goal cell " + cellText(q.goal) + " is outside the grid";
-  if (q.grid->blocked(q.start)) return "start cell " + cellText(q.start) + " is blocked";
-  if (q.grid->blocked(q.goal)) return "goal cell " + cellText(q.goal) + " is blocked";
-  return "";
+// The status and message of a query that cannot be searched; status Unknown if it can be.
+std::pair<PlannerStatus, std::string> gridQueryProblem(const GridQuery& q) {
+  if (q.grid == nullptr) return {PlannerStatus::InvalidProblem, "no grid given"};
+  if (!q.grid->inside(q.start))
+    return {PlannerStatus::InvalidStart, "start cell " + cellText(q.start) + " is outside the grid"};
+  if (!q.grid->inside(q.goal))
+    return {PlannerStatus::InvalidGoal, "goal cell " + cellText(q.goal) + " is outside the grid"};
+  if (q.grid->blocked(q.start))
+    return {PlannerStatus::InvalidStart, "start cell " + cellText(q.start) + " is blocked"};
+  if (q.grid->blocked(q.goal))
+    return {PlannerStatus::InvalidGoal, "goal cell " + cellText(q.goal) + " is blocked"};
+  return {PlannerStatus::Unknown, ""};
 }
 }  // namespace
 
 bool gridQueryRejected(const GridQuery& query, GridPlanResult& result) {
   result = GridPlanResult();
-  result.message = gridQueryProblem(query);
+  std::tie(result.status, result.message) = gridQueryProblem(query);
   return !result.message.empty();
 }
 
@@ -40,8 +47,13 @@ GridPlanResult gridSearchResult(const GridSearchSpace& space,
       r.cells.push_back(space.cellOf(*it));
     r.length = gridPathLength(r.cells);
     r.success = true;
+    r.status = searchStatus(true, clock, PlannerStatus::NoSolution);
+  } else if (end == GridSearchEnd::TimeLimit) {
+    r.status = expiredStatus(clock);
+    r.message = "time limit";
   } else {
-    r.message = end == GridSearchEnd::TimeLimit ? "time limit" : "no path";
+    r.status = PlannerStatus::NoSolution;
+    r.message = "no path";
   }
   r.time_ms = clock.elapsedMs();
   return r;

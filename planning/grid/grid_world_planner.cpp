@@ -51,6 +51,8 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
   for (const auto& [which, p, c] : {std::tuple("start", problem.start, query.start),
                                     std::tuple("goal", problem.goal, query.goal)})
     if (grid.blocked(c)) {
+      result.status = std::string(which) == "start" ? PlannerStatus::InvalidStart
+                                                    : PlannerStatus::InvalidGoal;
       result.message =
           explainBlockedEnd(*problem.world, grid, which, p, problem.inflation, problem.planar);
       return finish();
@@ -67,6 +69,8 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
   for (const auto& [which, p, centre] : {std::tuple("start", problem.start, start_centre),
                                          std::tuple("goal", problem.goal, goal_centre)})
     if (!joined(p, centre)) {
+      result.status = std::string(which) == "start" ? PlannerStatus::InvalidStart
+                                                    : PlannerStatus::InvalidGoal;
       result.message = std::string(which) +
                        " cannot reach the centre of its cell in a straight "
                        "line at resolution " +
@@ -78,6 +82,7 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
   GridPlanResult g = planner_->solveGrid(query);
   for (const auto& [k, v] : g.counters) result.counters[k] = v;
   result.success = g.success;
+  result.status = g.status;
   if (!g.success)
     result.message =
         explainNoGridPath(*problem.world, grid, query.start, query.goal, problem.inflation,

@@ -242,6 +242,7 @@ MapfResult ConflictBasedSearch::solve(const MapfQuery& query) {
   for (int a = 0; a < n; ++a) {
     if (deadline.expired()) {
       result.message = "time limit reached";
+      result.status = expiredStatus(deadline);
       result.time_ms = deadline.elapsedMs();
       return result;
     }
@@ -278,8 +279,10 @@ MapfResult ConflictBasedSearch::solve(const MapfQuery& query) {
     budget_hit = budget_hit || plan.out_of_budget;
     return plan;
   };
-  const auto finish = [&](const std::string& message) {
+  // gave_up: why the search ended without a solution when neither the deadline nor a stop did.
+  const auto finish = [&](const std::string& message, PlannerStatus gave_up) {
     result.message = message;
+    result.status = searchStatus(result.success, deadline, gave_up);
     result.counters["ct_nodes"] = static_cast<double>(tree.size());
     result.counters["expansions"] = static_cast<double>(expansions);
     result.counters["low_level_calls"] = static_cast<double>(low_level_calls);
@@ -290,11 +293,12 @@ MapfResult ConflictBasedSearch::solve(const MapfQuery& query) {
 
   tree[0].paths.resize(n);
   for (int a = 0; a < n; ++a) {
-    if (deadline.expired()) return finish("time limit reached");
+    if (deadline.expired()) return finish("time limit reached", PlannerStatus::Timeout);
     const SpaceTimePlan plan = replan(a, AgentConstraints(), tree[0].paths);
     if (!plan.found)
       return finish(budget_hit ? "time limit reached"
-                               : "goal of agent " + std::to_string(a) + " is unreachable");
+                               : "goal of agent " + std::to_string(a) + " is unreachable",
+                    budget_hit ? PlannerStatus::LimitReached : PlannerStatus::NoSolution);
     tree[0].paths[a] = std::make_shared<const IdPath>(plan.cells);
     tree[0].cost += pathCost(plan.cells);
   }
@@ -305,6 +309,7 @@ MapfResult ConflictBasedSearch::solve(const MapfQuery& query) {
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
   open.emplace(tree[0].cost, tree[0].conflicts, 0);
   std::string failure = "no solution (constraint tree exhausted)";
+  PlannerStatus gave_up = PlannerStatus::NoSolution;
   // Cardinal conflicts first (Boyarski et al., "ICBS: Improved Conflict-Based Search", IJCAI
   // 2015): a conflict is cardinal for an agent when all its optimal paths under its constraints
   // pass through it (MDD width 1 there, or the agent is already parked on the cell), so splitting
@@ -350,6 +355,7 @@ MapfResult ConflictBasedSearch::solve(const MapfQuery& query) {
     }
     if (static_cast<long>(tree.size()) + 2 > options_.max_nodes) {
       failure = "constraint-tree node limit (max_nodes) reached";
+      gave_up = PlannerStatus::LimitReached;
       break;
     }
     const Conflict conflict = choose(id, conflicts);
@@ -394,9 +400,11 @@ MapfResult ConflictBasedSearch::solve(const MapfQuery& query) {
       tree.push_back(std::move(child));
     }
   }
-  if (!result.success && budget_hit && failure.rfind("no solution", 0) == 0)
+  if (!result.success && budget_hit && failure.rfind("no solution", 0) == 0) {
     failure = "low-level search limit reached";
-  return finish(failure);
+    gave_up = PlannerStatus::LimitReached;
+  }
+  return finish(failure, gave_up);
 }
 
 }  // namespace cosim

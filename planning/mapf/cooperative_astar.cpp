@@ -21,6 +21,7 @@ MapfResult CooperativeAStar::solve(const MapfQuery& query) {
   for (int a = 0; a < n; ++a) {
     if (deadline.expired()) {
       result.message = "time limit reached";
+      result.status = expiredStatus(deadline);
       result.time_ms = deadline.elapsedMs();
       return result;
     }
@@ -63,6 +64,7 @@ MapfResult CooperativeAStar::solve(const MapfQuery& query) {
     }
     if (failed < 0) {
       result.success = true;
+      result.status = searchStatus(true, deadline, PlannerStatus::NoSolution);
       for (const auto& p : plans) result.paths.push_back(grid.toCells(p));
       break;
     }
@@ -73,6 +75,8 @@ MapfResult CooperativeAStar::solve(const MapfQuery& query) {
                                            std::to_string(failed)
                                      : "no route for agent " + std::to_string(failed) +
                                            " around the higher-priority agents";
+      result.status = searchStatus(
+          false, deadline, out_of_budget ? PlannerStatus::LimitReached : PlannerStatus::NoSolution);
       break;
     }
     priority[failed] = *std::max_element(priority.begin(), priority.end()) + 1;

@@ -23,6 +23,7 @@ MapfResult IndependentAStar::solve(const MapfQuery& query) {
       result.message = deadline.expired()
                            ? "time limit reached"
                            : "goal of agent " + std::to_string(a) + " is unreachable";
+      result.status = deadline.expired() ? expiredStatus(deadline) : PlannerStatus::NoSolution;
       result.paths.clear();
       break;
     }
@@ -31,6 +32,7 @@ MapfResult IndependentAStar::solve(const MapfQuery& query) {
   if (result.message.empty()) {
     const MapfValidation check = validateMapfSolution(inst, result.paths);
     result.success = check.valid();
+    result.status = searchStatus(result.success, deadline, PlannerStatus::ApproximateSolution);
     if (!result.success)
       result.message = std::to_string(check.conflicts.size()) + " conflicts between the paths";
   }

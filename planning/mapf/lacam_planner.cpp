@@ -12,6 +12,21 @@ MapfResult LacamPlanner::solve(const MapfQuery& query) {
   MapfResult result;
   result.success = out.status == LacamOutcome::Status::kSolved;
   result.message = out.message;
+  switch (out.status) {
+    case LacamOutcome::Status::kSolved:
+      result.status = searchStatus(true, deadline, PlannerStatus::NoSolution);
+      break;
+    case LacamOutcome::Status::kNoSolution:
+    case LacamOutcome::Status::kUnreachable:
+      result.status = PlannerStatus::NoSolution;
+      break;
+    case LacamOutcome::Status::kTimeLimit:
+      result.status = expiredStatus(deadline);
+      break;
+    case LacamOutcome::Status::kMemoryLimit:
+      result.status = PlannerStatus::LimitReached;
+      break;
+  }
   if (result.success) {
     result.paths = pathsOfConfigurations(g.graph, out.configurations, n);
     // The first solution's sum of costs (arrival times), for the anytime report.

@@ -30,7 +30,9 @@ MapfResult LocalRepairAStar::solve(const MapfQuery& query) {
     const SpatialAStarResult path = spatialAStar(grid, request);
     expansions += path.expansions;
     if (path.cells.empty()) {
-      result.message = "goal of agent " + std::to_string(a) + " is unreachable";
+      result.status = searchStatus(false, deadline, PlannerStatus::NoSolution);
+      result.message = deadline.expired() ? "time limit reached"
+                                          : "goal of agent " + std::to_string(a) + " is unreachable";
       result.time_ms = deadline.elapsedMs();
       return result;
     }

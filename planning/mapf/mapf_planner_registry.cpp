@@ -97,6 +97,12 @@ const std::vector<MapfPlannerEntry>& mapfPlanners() {
   return entries;
 }
 
+std::vector<ParamDeclaration> declaredParameters(const MapfPlannerEntry& entry) {
+  ParamSet probe("probe");
+  entry.make(probe);
+  return probe.declarations();
+}
+
 bool isMapfPlanner(const std::string& name) {
   for (const auto& e : mapfPlanners())
     if (e.name == name) return true;

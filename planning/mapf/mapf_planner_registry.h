@@ -27,6 +27,9 @@ const std::vector<MapfPlannerEntry>& mapfPlanners();
 // Whether `name` is one of mapfPlanners().
 bool isMapfPlanner(const std::string& name);
 
+// The parameters `entry`'s planner reads, as declared when it is built from an empty set.
+std::vector<ParamDeclaration> declaredParameters(const MapfPlannerEntry& entry);
+
 // Throws InputError for an unknown name (place names where it came from, e.g. "--planner") or
 // unknown/invalid parameters.
 std::unique_ptr<MapfPlanner> makeMapfPlanner(const std::string& name, ParamSet& params,

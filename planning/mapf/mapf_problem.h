@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "planning/grid/occupancy_grid.h"
+#include "planning/planner_status.h"
 
 namespace cosim {
 
@@ -39,7 +40,8 @@ struct MapfQuery {
 using MapfPath = std::vector<Cell>;
 
 struct MapfResult {
-  bool success = false;
+  bool success = false;  // status == ExactSolution
+  PlannerStatus status = PlannerStatus::Unknown;
   // On success, a solution; on failure, whatever the planner had (possibly empty or conflicting;
   // `cosim mapf` reports its conflicts but never calls it a solution).
   std::vector<MapfPath> paths;

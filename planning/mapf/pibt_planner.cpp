@@ -24,7 +24,10 @@ MapfResult PibtPlanner::solve(const MapfQuery& query) {
   };
   const GoalDistanceTable distance(g.graph, g.goals);
   const std::string unreachable = checkGoalsReachable(distance, g.starts, deadline);
-  if (!unreachable.empty()) return finish(unreachable);
+  if (!unreachable.empty()) {
+    result.status = searchStatus(false, deadline, PlannerStatus::NoSolution);
+    return finish(unreachable);
+  }
 
   // Priorities as LaCAM's reference code starts them (d_i(start) / N), then PIBT's: +1 per step
   // off the goal, back to the fractional part (a fixed tie-breaker) on it.
@@ -36,6 +39,7 @@ MapfResult PibtPlanner::solve(const MapfQuery& query) {
   PibtStep step(g.graph, distance, g.goals, options_.swap);
   SplitMix64 rng(query.seed);
   std::vector<int> next(n);
+  PlannerStatus gave_up = PlannerStatus::ApproximateSolution;  // the paths so far, off the goals
   while (configurations.back() != g.goals) {
     const int t = static_cast<int>(configurations.size()) - 1;
     if (t >= max_steps) {
@@ -53,6 +57,7 @@ MapfResult PibtPlanner::solve(const MapfQuery& query) {
     // Without fixed moves every agent can at least stay, so a step does not fail.
     if (!step.next(configurations.back(), order, {}, rng, next)) {
       result.message = "PIBT found no move at t=" + std::to_string(t);
+      gave_up = PlannerStatus::NoSolution;
       break;
     }
     configurations.push_back(next);
@@ -61,6 +66,7 @@ MapfResult PibtPlanner::solve(const MapfQuery& query) {
           next[i] != g.goals[i] ? priority[i] + 1.0f : priority[i] - std::floor(priority[i]);
   }
   result.success = result.message.empty();
+  result.status = searchStatus(result.success, deadline, gave_up);
   // On failure the paths so far (not a solution: they end off the goals).
   result.paths = pathsOfConfigurations(g.graph, configurations, n);
   result.counters["steps"] = static_cast<double>(configurations.size() - 1);

@@ -85,6 +85,7 @@ MapfResult PotentialField::solve(const MapfQuery& query) {
     if (arbiter.commitStep() == 0) {
       result.message =
           "robots stuck in local minima of the potential at step " + std::to_string(step);
+      result.status = searchStatus(false, deadline, PlannerStatus::ApproximateSolution);
       break;
     }
   }

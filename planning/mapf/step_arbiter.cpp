@@ -62,13 +62,17 @@ bool StepArbiter::finished(const std::vector<int>& goals, int max_steps, const S
                            MapfResult& result) const {
   if (position_ == goals) {
     result.success = true;
+    result.status = searchStatus(true, deadline, PlannerStatus::NoSolution);
     return true;
   }
   const int steps = history_.empty() ? 0 : static_cast<int>(history_[0].size()) - 1;
-  if (steps >= max_steps)
+  if (steps >= max_steps) {
     result.message = "not all agents arrived within " + std::to_string(max_steps) + " steps";
-  else if (deadline.expired())
+    result.status = searchStatus(false, deadline, PlannerStatus::ApproximateSolution);
+  } else if (deadline.expired()) {
     result.message = "time limit reached";
+    result.status = expiredStatus(deadline);
+  }
   return !result.message.empty();
 }
 

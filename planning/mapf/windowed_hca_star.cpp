@@ -25,6 +25,7 @@ MapfResult WindowedHcaStar::solve(const MapfQuery& query) {
   for (int a = 0; a < n; ++a) {
     if (deadline.expired()) {
       result.message = "time limit reached";
+      result.status = expiredStatus(deadline);
       result.time_ms = deadline.elapsedMs();
       return result;
     }
@@ -34,7 +35,10 @@ MapfResult WindowedHcaStar::solve(const MapfQuery& query) {
         std::make_unique<ReverseResumableAStar>(grid, goal[a], position[a], &deadline));
     executed[a].push_back(position[a]);
     if (distance[a]->distance(position[a]) >= GoalDistance::kUnreachable) {
-      result.message = "goal of agent " + std::to_string(a) + " is unreachable";
+      // (a distance search cut short by the deadline finds nothing either)
+      result.status = searchStatus(false, deadline, PlannerStatus::NoSolution);
+      result.message = deadline.expired() ? "time limit reached"
+                                          : "goal of agent " + std::to_string(a) + " is unreachable";
       result.time_ms = deadline.elapsedMs();
       return result;
     }
@@ -45,6 +49,7 @@ MapfResult WindowedHcaStar::solve(const MapfQuery& query) {
   std::vector<int> priority(n, 0);
   long expansions = 0, rounds = 0, retries = 0;
   int t0 = 0;
+  PlannerStatus gave_up = PlannerStatus::NoSolution;  // why the loop ended without a solution
   while (result.message.empty()) {
     if (position == goal) {
       result.success = true;
@@ -52,6 +57,7 @@ MapfResult WindowedHcaStar::solve(const MapfQuery& query) {
     }
     if (t0 >= max_steps) {
       result.message = "not all agents arrived within " + std::to_string(max_steps) + " steps";
+      gave_up = PlannerStatus::ApproximateSolution;
       break;
     }
     if (deadline.expired()) {
@@ -117,6 +123,7 @@ MapfResult WindowedHcaStar::solve(const MapfQuery& query) {
     }
     t0 += steps;
   }
+  result.status = searchStatus(result.success, deadline, gave_up);
   for (int a = 0; a < n; ++a) {
     MapfPath path = grid.toCells(executed[a]);
     if (result.success) trimWaitsAtEnd(path);

@@ -15,6 +15,8 @@ NavigationRun runNavigation(Navigator& navigator, const NavigationWorld& world, 
   NavigationRun run;
   if (grid.blocked(start.x, start.y) || grid.blocked(goal.x, goal.y)) {
     run.message = grid.blocked(start.x, start.y) ? "start cell is blocked" : "goal cell is blocked";
+    run.status = grid.blocked(start.x, start.y) ? PlannerStatus::InvalidStart
+                                                : PlannerStatus::InvalidGoal;
     return run;
   }
   navigator.reset(world, start, goal, seed);
@@ -29,6 +31,7 @@ NavigationRun runNavigation(Navigator& navigator, const NavigationWorld& world, 
   while (!(at.x == goal.x && at.y == goal.y)) {
     if (decisions >= max_decisions || deadline.expired()) {
       run.message = deadline.expired() ? "time limit" : "decision limit reached";
+      run.status = deadline.expired() ? expiredStatus(deadline) : PlannerStatus::LimitReached;
       break;
     }
     NavigationDecision d = navigator.decide(at, t);
@@ -38,11 +41,13 @@ NavigationRun runNavigation(Navigator& navigator, const NavigationWorld& world, 
     run.max_plan_ms = std::max(run.max_plan_ms, d.plan_ms);
     if (d.give_up) {
       run.message = d.note.empty() ? "navigator gave up" : d.note;
+      run.status = PlannerStatus::NoSolution;
       break;
     }
     const int dx = d.next.x - at.x, dy = d.next.y - at.y;
     const bool wait = dx == 0 && dy == 0;
     if (std::abs(dx) > 1 || std::abs(dy) > 1 || grid.blocked(d.next.x, d.next.y, 0)) {
+      run.status = PlannerStatus::NoSolution;  // a navigator's fault, reported as no path
       run.message =
           "illegal move to (" + std::to_string(d.next.x) + ", " + std::to_string(d.next.y) + ")";
       break;
@@ -63,6 +68,7 @@ NavigationRun runNavigation(Navigator& navigator, const NavigationWorld& world, 
     if (limits.record_decisions) run.decisions.push_back(std::move(d));
   }
   run.reached = at.x == goal.x && at.y == goal.y;
+  if (run.reached) run.status = searchStatus(true, deadline, PlannerStatus::NoSolution);
   run.travel_time = t;
   run.mean_plan_ms = decisions > 0 ? plan_ms_sum / static_cast<double>(decisions) : 0.0;
   return run;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "planning/navigation/navigation_world.h"
+#include "planning/planner_status.h"
 
 namespace cosim {
 
@@ -48,6 +49,7 @@ struct NavigationRun {
   int collisions = 0;  // moves or waits during which the robot overlapped an obstacle
   double mean_plan_ms = 0.0, max_plan_ms = 0.0;  // per decision
   std::string message;                           // why the goal was not reached
+  PlannerStatus status = PlannerStatus::Unknown;  // ExactSolution when reached
   std::vector<NavigationDecision> decisions;     // when limits.record_decisions
 };
 

@@ -9,6 +9,7 @@ GridPlanResult NavigatorGridPlanner::solveGrid(const GridQuery& query) {
   GridPlanResult result;
   const OccupancyGrid& g = *query.grid;
   if (query.start.z != query.goal.z) {
+    result.status = PlannerStatus::InvalidProblem;
     result.message = "2D navigator: start and goal must lie on the same grid layer";
     return result;
   }
@@ -23,6 +24,7 @@ GridPlanResult NavigatorGridPlanner::solveGrid(const GridQuery& query) {
                                           {query.goal.x, query.goal.y, 0}, limits, query.seed);
   result.success = run.reached;
   result.message = run.message;
+  result.status = run.status;
   for (const Cell& c : run.cells) result.cells.push_back({c.x, c.y, query.start.z});
   result.length = run.reached ? run.length : 0.0;
   result.counters["steps"] = run.steps;

@@ -67,7 +67,7 @@ std::vector<std::uint32_t> shortestRoute(const Roadmap& map, const NearestNeighb
 
 PlanResult Prm::solve(const PlanningProblem& problem) {
   SamplingContext ctx(problem);
-  if (!ctx.invalid().empty()) return ctx.reject(ctx.invalid());
+  if (!ctx.invalid().empty()) return ctx.reject();
   const SamplingOptions& o = options_.common;
   NearestNeighborIndex nodes(initialCapacity(o));
   Roadmap map;

@@ -8,7 +8,7 @@ namespace cosim {
 
 PlanResult Rrt::solve(const PlanningProblem& problem) {
   SamplingContext ctx(problem);
-  if (!ctx.invalid().empty()) return ctx.reject(ctx.invalid());
+  if (!ctx.invalid().empty()) return ctx.reject();
   const SamplingOptions& o = options_;
   SamplingTree tree(initialCapacity(o), o.linear_scan);
   std::uint32_t goal_node = SamplingTree::kNone;

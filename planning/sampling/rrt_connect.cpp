@@ -8,7 +8,7 @@ namespace cosim {
 
 PlanResult RrtConnect::solve(const PlanningProblem& problem) {
   SamplingContext ctx(problem);
-  if (!ctx.invalid().empty()) return ctx.reject(ctx.invalid());
+  if (!ctx.invalid().empty()) return ctx.reject();
   const SamplingOptions& o = options_;
   const std::size_t capacity = initialCapacity(o) / 2 + 2;
   SamplingTree from_start(capacity), from_goal(capacity);

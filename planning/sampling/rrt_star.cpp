@@ -57,7 +57,7 @@ std::string RrtStar::name() const {
 
 PlanResult RrtStar::solve(const PlanningProblem& problem) {
   SamplingContext ctx(problem);
-  if (!ctx.invalid().empty()) return ctx.reject(ctx.invalid());
+  if (!ctx.invalid().empty()) return ctx.reject();
   const SamplingOptions& o = options_.common;
   const bool fixed_nodes = options_.max_tree_nodes > 0;
   SamplingTree tree(initialCapacity(o), o.linear_scan);

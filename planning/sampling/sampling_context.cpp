@@ -32,16 +32,22 @@ SamplingContext::SamplingContext(const PlanningProblem& problem)
   if (problem.planar) goal_.z() = start_.z();
   char inflated[64];
   std::snprintf(inflated, sizeof inflated, " (obstacles inflated by %g m)", problem.inflation);
-  if (!problem.world)
+  if (!problem.world) {
     invalid_ = "no world given";
-  else if (!world_.insideBounds(start_))
+    invalid_status_ = PlannerStatus::InvalidProblem;
+  } else if (!world_.insideBounds(start_)) {
     invalid_ = describe("start", start_) + " is outside the world bounds";
-  else if (!world_.insideBounds(goal_))
+    invalid_status_ = PlannerStatus::InvalidStart;
+  } else if (!world_.insideBounds(goal_)) {
     invalid_ = describe("goal", goal_) + " is outside the world bounds";
-  else if (!world_.pointFree(start_))
+    invalid_status_ = PlannerStatus::InvalidGoal;
+  } else if (!world_.pointFree(start_)) {
     invalid_ = describe("start", start_) + " is inside an obstacle" + inflated;
-  else if (!world_.pointFree(goal_))
+    invalid_status_ = PlannerStatus::InvalidStart;
+  } else if (!world_.pointFree(goal_)) {
     invalid_ = describe("goal", goal_) + " is inside an obstacle" + inflated;
+    invalid_status_ = PlannerStatus::InvalidGoal;
+  }
 }
 
 Eigen::Vector3d SamplingContext::sample(double goal_bias) {
@@ -72,9 +78,10 @@ bool SamplingContext::shouldStop(const SamplingOptions& o, std::size_t generated
   return o.mode == 1 || deadline_.elapsedMs() >= 1000.0 * o.improve_time_s;
 }
 
-PlanResult SamplingContext::reject(const std::string& why) {
+PlanResult SamplingContext::reject() const {
   PlanResult result;
-  result.message = why;
+  result.message = invalid_;
+  result.status = invalid_status_;
   result.counters["collision_checks"] = collision_checks_;
   result.time_ms = deadline_.elapsedMs();
   return result;
@@ -82,6 +89,7 @@ PlanResult SamplingContext::reject(const std::string& why) {
 
 PlanResult SamplingContext::finish(PlanResult result, const SamplingOptions& o) {
   result.success = !result.path.empty();
+  result.status = searchStatus(result.success, deadline_, PlannerStatus::LimitReached);
   if (result.success) {
     result.message.clear();
     if (o.shortcut) {

@@ -80,8 +80,8 @@ class SamplingContext {
   // path means failure: the message then says what stopped the search (the time limit or
   // max_nodes) after how many nodes, and the inflation the obstacles were grown by.
   PlanResult finish(PlanResult result, const SamplingOptions& o);
-  // A failure before any search: `why` is the message (start or goal invalid).
-  PlanResult reject(const std::string& why);
+  // A failure before any search: invalid() is the message (start or goal invalid).
+  PlanResult reject() const;
 
  private:
   CollisionWorld world_;
@@ -91,6 +91,7 @@ class SamplingContext {
   Eigen::Vector3d start_, goal_;
   double time_limit_s_;
   std::string invalid_;
+  PlannerStatus invalid_status_ = PlannerStatus::Unknown;
   double collision_checks_ = 0;
 };
 

@@ -21,12 +21,14 @@ AcsMaklinkResult optimiseMaklinkRoute(const MaklinkGraph& graph, const Eigen::Ve
   if (!graph.pointFree(start) || !graph.pointFree(goal)) {
     out.message = std::string(graph.pointFree(start) ? "goal" : "start") +
                   " is inside a grown obstacle or outside the walls";
+    out.status = graph.pointFree(start) ? PlannerStatus::InvalidGoal : PlannerStatus::InvalidStart;
     out.time_ms = deadline.elapsedMs();
     return out;
   }
   const MaklinkRoute route = graph.shortestRoute(start, goal);
   if (!route.found) {
     out.message = "goal unreachable: no route in the MAKLINK graph";
+    out.status = PlannerStatus::NoSolution;
     out.time_ms = deadline.elapsedMs();
     return out;
   }
@@ -140,10 +142,12 @@ AcsMaklinkResult optimiseMaklinkRoute(const MaklinkGraph& graph, const Eigen::Ve
 
   if (!std::isfinite(best_length)) {
     out.message = "no collision-free tour over the offsets (time limit?)";
+    out.status = searchStatus(false, deadline, PlannerStatus::NoSolution);
     out.time_ms = deadline.elapsedMs();
     return out;
   }
   out.success = true;
+  out.status = searchStatus(true, deadline, PlannerStatus::NoSolution);
   out.length = best_length;
   out.path.push_back(start);
   for (int i = 0; i < d; ++i) {
@@ -166,6 +170,7 @@ PlanResult AcsMaklink::solve(const PlanningProblem& problem) {
                            &deadline);
   if (!graph.complete()) {
     result.message = "time limit reached while building the MAKLINK graph";
+    result.status = expiredStatus(deadline);
     result.time_ms = deadline.elapsedMs();
     return result;
   }
@@ -178,6 +183,7 @@ PlanResult AcsMaklink::solve(const PlanningProblem& problem) {
   result.counters["best_iteration"] = r.best_iteration;
   result.counters["dijkstra_length_m"] = r.dijkstra_length;
   result.message = r.message;
+  result.status = r.status;
   if (r.success) {
     for (const Eigen::Vector2d& q : r.path) result.path.waypoints.push_back({q.x(), q.y(), z});
     const Eigen::Vector3d top = result.path.waypoints.back();
@@ -191,6 +197,7 @@ PlanResult AcsMaklink::solve(const PlanningProblem& problem) {
           result.message =
               "acs_maklink plans at the start's height; the vertical climb to the "
               "goal's height is blocked";
+          result.status = PlannerStatus::InvalidGoal;
           result.path.waypoints.clear();
           result.time_ms = deadline.elapsedMs();
           return result;

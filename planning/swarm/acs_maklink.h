@@ -41,6 +41,7 @@ struct AcsMaklinkParams {
 
 struct AcsMaklinkResult {
   bool success = false;
+  PlannerStatus status = PlannerStatus::Unknown;
   std::string message;
   std::vector<Eigen::Vector2d> path;  // S, P1(h1), ..., Pd(hd), T
   std::vector<double> offsets;        // h1* ... hd*

@@ -76,14 +76,18 @@ std::optional<AntGrid> antGridForQuery(const GridQuery& query, bool conditional_
                   "%.3g m grid (start in z %.3g-%.3g m, goal in z %.3g-%.3g m)",
                   g.cellSize(), start_z - half, start_z + half, goal_z - half, goal_z + half);
     result.message = heights;
+    result.status = PlannerStatus::InvalidProblem;
     return std::nullopt;
   }
   if (g.blocked(query.start) || g.blocked(query.goal)) {
     result.message = g.blocked(query.start) ? "start cell is blocked" : "goal cell is blocked";
+    result.status =
+        g.blocked(query.start) ? PlannerStatus::InvalidStart : PlannerStatus::InvalidGoal;
     return std::nullopt;
   }
   if (query.start == query.goal) {
     result.success = true;
+    result.status = PlannerStatus::ExactSolution;
     result.cells = {query.start};
     return std::nullopt;
   }

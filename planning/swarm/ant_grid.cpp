@@ -42,7 +42,7 @@ double AntGrid::turnCost(double previous_angle, bool has_previous, double move_a
 
 GridPlanResult AntGrid::solveGrid(const GridQuery& query) {
   LayerWalkSearch search(query, p_.directions);
-  if (!search.layer().error.empty()) return search.failure(search.layer().error);
+  if (!search.layer().error.empty()) return search.rejected();
   const OccupancyGrid& grid = search.grid();
   const ExtendedNeighbourhood& moves = search.moves();
   const PathShortcut shortcut(grid, moves);

@@ -58,7 +58,7 @@ double dist(const Cell& a, const Cell& b) {
 
 GridPlanResult GeneticAlgorithm::solveGrid(const GridQuery& query) {
   LayerWalkSearch search(query, p_.directions);
-  if (!search.layer().error.empty()) return search.failure(search.layer().error);
+  if (!search.layer().error.empty()) return search.rejected();
   const OccupancyGrid& grid = search.grid();
   const ExtendedNeighbourhood& moves = search.moves();
   const PathShortcut shortcut(grid, moves);
@@ -94,7 +94,8 @@ GridPlanResult GeneticAlgorithm::solveGrid(const GridQuery& query) {
   }
   if (search.unreachable()) return search.result("", 0);  // "goal unreachable from start"
   if (population.empty())
-    return search.failure("time limit reached before the first chromosome was built");
+    return search.failure("time limit reached before the first chromosome was built",
+                          expiredStatus(search.deadline()));
 
   auto bestOf = [](const std::vector<Chromosome>& pop) {
     std::size_t b = 0;

@@ -16,17 +16,19 @@ bool LayerWalkSearch::offer(const std::vector<Cell>& path, double length, int it
   return true;
 }
 
-GridPlanResult LayerWalkSearch::failure(const std::string& message) const {
+GridPlanResult LayerWalkSearch::failure(const std::string& message, PlannerStatus status) const {
   GridPlanResult result;
   result.message = message;
+  result.status = status;
   result.counters["expansions"] = static_cast<double>(walker_.steps());
   result.time_ms = deadline_.elapsedMs();
   return result;
 }
 
 GridPlanResult LayerWalkSearch::result(const std::string& no_path, int iterations) const {
-  if (unreachable()) return failure("goal unreachable from start");
-  GridPlanResult result = failure(best_.empty() ? no_path : "");
+  if (unreachable()) return failure("goal unreachable from start", PlannerStatus::NoSolution);
+  GridPlanResult result = failure(best_.empty() ? no_path : "",
+                                  searchStatus(!best_.empty(), deadline_, PlannerStatus::LimitReached));
   result.counters["iterations"] = iterations;
   result.counters["best_iteration"] = best_iteration_;
   if (!best_.empty()) {

@@ -21,7 +21,7 @@ namespace cosim {
 class LayerWalkSearch {
  public:
   // The query's time limit starts now. A non-empty layer().error means the query cannot be
-  // planned: return failure(layer().error).
+  // planned: return rejected().
   LayerWalkSearch(const GridQuery& query, int directions);
   // The walker refers to this object's layer and moves.
   LayerWalkSearch(const LayerWalkSearch&) = delete;
@@ -51,8 +51,10 @@ class LayerWalkSearch {
   double bestLength() const { return best_length_; }
   int bestIteration() const { return best_iteration_; }
 
-  // A failure with its reason and the walk steps made so far.
-  GridPlanResult failure(const std::string& message) const;
+  // A failure with its reason and status, and the walk steps made so far.
+  GridPlanResult failure(const std::string& message, PlannerStatus status) const;
+  // The failure of a query whose layer cannot be planned (layer().error).
+  GridPlanResult rejected() const { return failure(layer_.error, layer_.error_status); }
   // The ending: "goal unreachable from start" if a walk proved it; else the best path (lifted to
   // the query's grid) or, if there is none, the failure no_path, with the counters iterations,
   // best_iteration and expansions (walk steps).

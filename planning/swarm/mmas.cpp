@@ -43,7 +43,7 @@ class LazyTrails {
 
 GridPlanResult Mmas::solveGrid(const GridQuery& query) {
   LayerWalkSearch search(query, p_.directions);
-  if (!search.layer().error.empty()) return search.failure(search.layer().error);
+  if (!search.layer().error.empty()) return search.rejected();
   const OccupancyGrid& grid = search.grid();
   const ExtendedNeighbourhood& moves = search.moves();
   const int D = moves.directions();

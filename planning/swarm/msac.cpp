@@ -266,6 +266,7 @@ GridPlanResult Msac::solveGrid(const GridQuery& query) {
     result.message =
         "MSAC needs 1..127 ants per group (the uint8 tabu table), MAX >= 1 and "
         "tabu_version 1..3";
+    result.status = PlannerStatus::InvalidProblem;
     return result;
   }
   const std::optional<AntGrid> ant_grid = antGridForQuery(query, p_.conditional_diagonal, result);
@@ -277,6 +278,7 @@ GridPlanResult Msac::solveGrid(const GridQuery& query) {
   MsacSearch search(p_, grid, start, goal, query.seed);
   const std::vector<int> best = search.run(deadline, s_max, result);
   result.success = !best.empty();
+  result.status = searchStatus(result.success, deadline, PlannerStatus::LimitReached);
   if (result.success) {
     result.cells = grid.toCells(best);
     result.length = grid.pathLength(best);

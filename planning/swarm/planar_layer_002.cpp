@@ -12,6 +12,7 @@ PlanarLayer planarLayerFor(const GridQuery& query) {
   if (g.blocked(s) || g.blocked(t)) {
     out.error =
         std::string(g.blocked(s) ? "start" : "goal") + " cell is blocked or outside the grid";
+    out.error_status = g.blocked(s) ? PlannerStatus::InvalidStart : PlannerStatus::InvalidGoal;
     return out;
   }
   out.layer = s.z;
@@ -33,11 +34,15 @@ PlanarLayer planarLayerFor(const GridQuery& query) {
                     "goal's; the goal's column is blocked at z %.3g m",
                     g.cellCenter(s).z(), g.cellCenter({t.x, t.y, z}).z());
       out.error = where;
+      out.error_status = PlannerStatus::InvalidGoal;
       return out;
     }
     out.climb.push_back({t.x, t.y, z});
   }
-  if (out.grid.blocked(out.goal)) out.error = "the goal's column is blocked on the start's layer";
+  if (out.grid.blocked(out.goal)) {
+    out.error = "the goal's column is blocked on the start's layer";
+    out.error_status = PlannerStatus::InvalidGoal;
+  }
   return out;
 }
 

@@ -16,6 +16,7 @@ struct PlanarLayer {
   int layer = 0;            // z of the layer in the query's grid
   std::vector<Cell> climb;  // cells after the layer's goal, up or down to the real goal
   std::string error;        // non-empty: the query cannot be planned (reason)
+  PlannerStatus error_status = PlannerStatus::Unknown;  // with an error: InvalidStart or InvalidGoal
 };
 
 PlanarLayer planarLayerFor(const GridQuery& query);

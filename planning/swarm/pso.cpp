@@ -17,13 +17,14 @@ constexpr std::size_t kMaxStateFloats = std::size_t(1) << 27;  // 512 MiB
 
 GridPlanResult Pso::solveGrid(const GridQuery& query) {
   LayerWalkSearch search(query, p_.directions);
-  if (!search.layer().error.empty()) return search.failure(search.layer().error);
+  if (!search.layer().error.empty()) return search.rejected();
   const OccupancyGrid& grid = search.grid();
   const std::size_t cells = grid.cellCount();
   const std::size_t P = static_cast<std::size_t>(p_.particles);
   if (3 * P * cells > kMaxStateFloats)
     return search.failure("grid too large for pso (" + std::to_string(cells) + " cells x " +
-                          std::to_string(P) + " particles)");
+                          std::to_string(P) + " particles)",
+                          PlannerStatus::InvalidProblem);
   const ExtendedNeighbourhood& moves = search.moves();
   std::mt19937_64 rng(query.seed);
   const Cell goal = search.layer().goal;

@@ -163,6 +163,7 @@ GridPlanResult Saco::solveGrid(const GridQuery& query) {
   const int start = grid.index(query.start), goal = grid.index(query.goal);
   if (!reachable(grid, start, goal)) {
     result.message = "goal is not reachable from the start";
+    result.status = PlannerStatus::NoSolution;
     result.time_ms = deadline.elapsedMs();
     return result;
   }
@@ -216,6 +217,7 @@ GridPlanResult Saco::solveGrid(const GridQuery& query) {
   result.counters["failed_walks"] = failed;
   result.counters["expansions"] = static_cast<double>(colony.steps());
   result.success = !best.empty();
+  result.status = searchStatus(result.success, deadline, PlannerStatus::LimitReached);
   if (result.success) {
     result.cells = grid.toCells(best);
     result.length = best_length;

@@ -108,6 +108,7 @@ TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& plan
   plan.counters["mapf_ms"] = r.time_ms;
   const MapfValidation check = validateMapfSolution(instance, r.paths);
   if (!r.success || !check.problems.empty() || !check.conflicts.empty()) {
+    plan.status = r.success ? PlannerStatus::InvalidSolution : r.status;
     plan.message =
         "no team plan on the grid: " +
         (!r.message.empty()        ? r.message
@@ -137,11 +138,13 @@ TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& plan
   plan.counters["planned_min_separation"] = smooth.min_separation;
   plan.time_ms = msSince(start);
   if (!smooth.success) {
+    plan.status = smooth.status;
     plan.message = "no team trajectories: " + smooth.message;
     return plan;
   }
   plan.trajectories = std::move(smooth.trajectories);
   plan.success = true;
+  plan.status = r.status;
   return plan;
 }
 

@@ -44,6 +44,7 @@ struct TeamPlanningProblem {
 
 struct TeamPlan {
   bool success = false;
+  PlannerStatus status = PlannerStatus::Unknown;  // the MAPF search's, then the smoothing's
   std::string message;  // why not, on failure
   // Per agent: its position at every step (start, cell centres, goal) and its trajectory.
   std::vector<std::vector<Eigen::Vector3d>> points;

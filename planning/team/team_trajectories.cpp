@@ -66,6 +66,7 @@ TeamTrajectories smoothTeamPaths(const std::vector<TeamMember>& team, const Worl
   for (std::size_t i = 0; i < n; ++i) {
     if (team[i].points.empty()) {
       out.message = "an agent has no path";
+      out.status = PlannerStatus::InvalidProblem;
       return out;
     }
     stops[i].assign(team[i].points.size(), 0);
@@ -132,6 +133,7 @@ TeamTrajectories smoothTeamPaths(const std::vector<TeamMember>& team, const Worl
     if (std::none_of(changed.begin(), changed.end(), [](char c) { return c; })) {
       // Nothing more to repair: what is still violated, the grid plan itself violates.
       out.success = out.min_separation >= o.min_separation && out.min_clearance >= 0.0;
+      out.status = out.success ? PlannerStatus::ExactSolution : PlannerStatus::NoSolution;
       if (!out.success)
         out.message = "the grid plan itself comes closer than the separation (minimum " +
                       std::to_string(out.min_separation) + ") or the clearance";
@@ -143,6 +145,7 @@ TeamTrajectories smoothTeamPaths(const std::vector<TeamMember>& team, const Worl
   }
   out.message = "the separation could not be kept within " + std::to_string(o.max_repair_rounds) +
                 " repair rounds";
+  out.status = PlannerStatus::LimitReached;
   return out;
 }
 

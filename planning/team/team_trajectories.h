@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "planning/planner_status.h"
 #include "planning/team/separation_ellipsoid.h"
 #include "planning/trajectory/piecewise_polynomial_trajectory.h"
 #include "planning/world/world.h"
@@ -42,6 +43,7 @@ struct TeamTrajectoryOptions {
 
 struct TeamTrajectories {
   bool success = false;
+  PlannerStatus status = PlannerStatus::Unknown;
   std::string message;                                              // why not, on failure
   std::vector<PiecewisePolynomialTrajectory> trajectories;          // one per member
   double min_separation = std::numeric_limits<double>::infinity();  // at the checked instants

@@ -87,11 +87,13 @@ std::vector<Eigen::Vector3d> MinimumSnapTrajectory::thinWaypoints(
 MinimumSnapResult MinimumSnapTrajectory::fitImpl(const Path& path, const World* world,
                                                  double inflation,
                                                  const std::vector<std::size_t>& via) const {
-  const StopToken clock(1e9);  // only to report time_ms
+  // No time limit (a fit is bounded by its rounds and evaluations), but a stop request ends it.
+  const StopToken clock(1e9);
   MinimumSnapResult result;
   result.counters["input_waypoints"] = static_cast<double>(path.size());
   if (path.empty()) {
     result.message = "empty path: nothing to fit";
+    result.status = PlannerStatus::InvalidProblem;
     return result;
   }
 
@@ -105,6 +107,7 @@ MinimumSnapResult MinimumSnapTrajectory::fitImpl(const Path& path, const World* 
     result.trajectory = PiecewisePolynomialTrajectory({hold});
     result.waypoints.waypoints = waypoints;
     result.success = true;
+    result.status = PlannerStatus::ExactSolution;
     result.counters["time_ms"] = clock.elapsedMs();
     return result;
   }
@@ -124,8 +127,8 @@ MinimumSnapResult MinimumSnapTrajectory::fitImpl(const Path& path, const World* 
     const MinimumSnapClosedForm fit(waypoints);
     if (durations.empty()) durations = distanceProportionalTimes(fit, options_.time_penalty);
     if (options_.optimize_times) {
-      TimeAllocationResult allocation =
-          optimizeSegmentTimes(fit, durations, options_.time_penalty, options_.max_evaluations);
+      TimeAllocationResult allocation = optimizeSegmentTimes(
+          fit, durations, options_.time_penalty, options_.max_evaluations, &clock);
       durations = std::move(allocation.durations);
       evaluations += allocation.evaluations;
     }
@@ -142,11 +145,18 @@ MinimumSnapResult MinimumSnapTrajectory::fitImpl(const Path& path, const World* 
 
     const std::vector<InflatedWorld::Collision> collisions =
         checker ? checker->collisions(result.trajectory) : std::vector<InflatedWorld::Collision>{};
+    if (clock.stopRequested()) {
+      result.status = PlannerStatus::Stopped;
+      result.message = "stopped";
+      break;
+    }
     if (collisions.empty()) {
       result.success = true;
+      result.status = PlannerStatus::ExactSolution;
       break;
     }
     if (round >= options_.max_repair_rounds) {
+      result.status = PlannerStatus::LimitReached;
       const InflatedWorld::Collision& c = collisions.front();
       const bool segment_blocked =
           !checker->segmentClear(waypoints[c.piece], waypoints[c.piece + 1]);

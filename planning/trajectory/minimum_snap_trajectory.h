@@ -13,6 +13,7 @@
 #include <string>
 
 #include "planning/path.h"
+#include "planning/planner_status.h"
 #include "planning/trajectory/piecewise_polynomial_trajectory.h"
 #include "planning/trajectory/trajectory_limits.h"
 #include "planning/world/world.h"
@@ -42,6 +43,9 @@ struct MinimumSnapOptions {
 
 struct MinimumSnapResult {
   bool success = false;
+  // ExactSolution, LimitReached (still colliding after max_repair_rounds), InvalidProblem (an
+  // empty path) or Stopped (a stop request, core/stop_request.h, ended the fit).
+  PlannerStatus status = PlannerStatus::Unknown;
   PiecewisePolynomialTrajectory trajectory;  // also on failure: the last attempt, for display
   Path waypoints;                            // the waypoints it passes through, in order
   std::string message;                       // why it failed; empty on success

@@ -11,11 +11,14 @@ struct Objective {
   const MinimumSnapClosedForm* fit;
   double time_penalty;
   double normaliser;  // the initial cost: NLopt's tolerances then act on a number near 1
+  const StopToken* stop;
   int evaluations = 0;
   std::vector<double> T, dJ;
 
   // x_i = log T_i; f = J(T) + k_T sum T; df/dx_i = (dJ/dT_i + k_T) T_i.
   double operator()(const std::vector<double>& x, std::vector<double>& grad) {
+    // NLopt's C++ wrapper turns this into force_stop; optimize() then throws it back to us.
+    if (stop != nullptr && stop->expired()) throw nlopt::forced_stop();
     ++evaluations;
     for (std::size_t i = 0; i < x.size(); ++i) T[i] = std::exp(x[i]);
     const double J = fit->cost(T, grad.empty() ? nullptr : &dJ);
@@ -48,13 +51,13 @@ std::vector<double> distanceProportionalTimes(const MinimumSnapClosedForm& fit,
 
 TimeAllocationResult optimizeSegmentTimes(const MinimumSnapClosedForm& fit,
                                           const std::vector<double>& initial, double time_penalty,
-                                          int max_evaluations) {
+                                          int max_evaluations, const StopToken* stop) {
   TimeAllocationResult result;
   result.durations = initial;
   result.initial_cost = result.final_cost = totalCost(fit, initial, time_penalty);
   const std::size_t n = initial.size();
 
-  Objective objective{&fit, time_penalty,           result.initial_cost,
+  Objective objective{&fit, time_penalty,           result.initial_cost, stop,
                       0,    std::vector<double>(n), std::vector<double>(n)};
   nlopt::opt optimizer(nlopt::LD_LBFGS, static_cast<unsigned>(n));
   optimizer.set_min_objective(&Objective::call, &objective);
@@ -67,6 +70,9 @@ TimeAllocationResult optimizeSegmentTimes(const MinimumSnapClosedForm& fit,
     optimizer.optimize(x, value);
   } catch (const nlopt::roundoff_limited&) {
     // Converged as far as floating point allows; x holds the best point found.
+  } catch (const nlopt::forced_stop&) {
+    // Stopped by the token; x holds the best point found so far.
+    result.stopped = true;
   } catch (const std::runtime_error&) {
     // NLopt's generic failure: keep the initial durations rather than a half-made step.
     result.evaluations = objective.evaluations;

@@ -10,6 +10,7 @@
 // which a uniform time scaling against the vehicle's limits may then override.
 #include <vector>
 
+#include "core/stop_token.h"
 #include "planning/trajectory/minimum_snap_closed_form.h"
 
 namespace cosim {
@@ -19,6 +20,7 @@ struct TimeAllocationResult {
   double initial_cost = 0.0;  // J + k_T sum T at the start point
   double final_cost = 0.0;    // the same at the returned durations
   int evaluations = 0;        // cost and gradient evaluations
+  bool stopped = false;       // the stop token expired: NLopt was stopped (force_stop)
 };
 
 // Durations proportional to segment length, at the common pace that minimises J + k_T sum T
@@ -27,9 +29,11 @@ std::vector<double> distanceProportionalTimes(const MinimumSnapClosedForm& fit,
                                               double time_penalty);
 
 // Starts from `initial` and stops after `max_evaluations` or when the cost changes by less than
-// a relative 1e-6 (the result is never worse than `initial`).
+// a relative 1e-6 (the result is never worse than `initial`). With `stop`, NLopt is also stopped
+// (force_stop) at the first cost evaluation after it expired: the durations are then the best
+// found so far.
 TimeAllocationResult optimizeSegmentTimes(const MinimumSnapClosedForm& fit,
                                           const std::vector<double>& initial, double time_penalty,
-                                          int max_evaluations);
+                                          int max_evaluations, const StopToken* stop = nullptr);
 
 }  // namespace cosim

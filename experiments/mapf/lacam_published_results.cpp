@@ -1,9 +1,9 @@
-#include "cli/lacam_published_results.h"
+#include "experiments/mapf/lacam_published_results.h"
 
 #include <algorithm>
 #include <array>
 
-namespace cosim::cli {
+namespace cosim {
 
 namespace {
 
@@ -68,4 +68,4 @@ std::string lacamStarPublishedMarkdown(const std::string& map_name) {
   return md;
 }
 
-}  // namespace cosim::cli
+}  // namespace cosim
