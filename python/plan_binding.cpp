@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include "core/input_error.h"
+#include "planning/planner_status.h"
 #include "python/bindings.h"
 #include "python/interrupt_guard.h"
 #include "python/overrides.h"
@@ -19,6 +20,7 @@ namespace {
 
 struct PlanResult {
   bool success = false;
+  std::string status;  // plan.json's: how the search ended (planning/planner_status.h)
   double length_m = 0.0;
   double time_ms = 0.0;
   py::array_t<double> path;
@@ -59,11 +61,13 @@ PlanResult plan(const py::object& scenario, const py::object& planner,
   // The planner stopped early: its outcome is no result.
   if (guard.finish()) {
     p = VehiclePlan();
+    p.status = PlannerStatus::Stopped;
     p.message = "interrupted";
   }
 
   PlanResult r;
   r.success = p.success;
+  r.status = toString(p.status);
   r.length_m = p.success ? p.path.length() : 0.0;
   r.time_ms = p.time_ms;
   r.path = pointsArray(p.path.waypoints);
@@ -80,6 +84,9 @@ PlanResult plan(const py::object& scenario, const py::object& planner,
 void bindPlan(py::module_& m) {
   py::class_<PlanResult>(m, "PlanResult", "What cosim.plan returns (plan.json's fields).")
       .def_readonly("success", &PlanResult::success)
+      .def_readonly("status", &PlanResult::status,
+                    "how the search ended: exact_solution, timeout, no_solution, "
+                    "limit_reached, invalid_start, ... (plan.json's status)")
       .def_readonly("length_m", &PlanResult::length_m, "path length, m (0 without a path)")
       .def_readonly("time_ms", &PlanResult::time_ms, "planning time, ms")
       .def_readonly("path", &PlanResult::path, "waypoints, an (N, 3) NumPy array, metres")

@@ -29,6 +29,7 @@ def test_plan_equals_the_programs_plan_json(cosim_binary, tmp_path):
     with open(tmp_path / "plan.json") as f:
         plan_json = json.load(f)
     assert p.length_m == pytest.approx(plan_json["length_m"], rel=1e-9)
+    assert p.status == plan_json["status"] == "exact_solution"
     assert p.counters == plan_json["counters"]
     assert p.params == plan_json["params"]
     assert len(p.path) == plan_json["waypoints"]
