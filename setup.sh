@@ -18,6 +18,8 @@ PACKAGES=(
   libompl-dev libboost-graph-dev libnanoflann-dev   # peers for the benchmarks, k-d tree
   gnuplot-nox                         # figures
   chromium                            # the HTML report test opens the report headless
+  pybind11-dev python3-dev python3-numpy   # the Python module (build/python, `import cosim`)
+  python3-pytest python3-matplotlib        # its tests and examples
 )
 
 missing=()
@@ -40,9 +42,10 @@ case "${1:-build}" in
   *) echo "usage: $0 [run|test|build]" >&2; exit 2 ;;
 esac
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-# `run` builds only the program it runs (not the test suite); `test` and `build` build everything.
+# `run` builds only the program it runs and the Python module (not the test suite); `test` and
+# `build` build everything.
 case "${1:-build}" in
-  run)  cmake --build build -j"$JOBS" --target cosim
+  run)  cmake --build build -j"$JOBS" --target cosim _cosim
         build/cosim run --out out/default ;;
   test) cmake --build build -j"$JOBS"
         ctest --test-dir build --output-on-failure -j"$JOBS" ;;

@@ -171,6 +171,14 @@ RunLog SimulationLoop::finish() {
   return std::move(log_);
 }
 
+RunLog SimulationLoop::snapshot() const {
+  if (!d_) throw std::logic_error("SimulationLoop::snapshot after finish");
+  RunLog log = log_;
+  log.end_reason = end_reason_;
+  physics_.finish(d_.get(), log);
+  return log;
+}
+
 TrueVehicleState SimulationLoop::vehicleState(std::size_t v) const {
   if (!d_) throw std::logic_error("SimulationLoop::vehicleState after finish");
   const VehicleHandles& h = world_.vehicles().at(v);

@@ -86,6 +86,10 @@ class SimulationLoop {
   // The run's log, with the wall time, simulated time and physics steps. Callable once; frees
   // the mjData. A run that has not ended ends "interrupted".
   RunLog finish();
+  // The log so far, as finish() would return it at this moment (end_reason: endReason(), empty
+  // while the run goes on), without ending the run: for a front end's metrics mid-flight. A copy
+  // of every sample. Throws std::logic_error after finish.
+  RunLog snapshot() const;
 
   const mjData* data() const { return d_.get(); }      // nullptr after finish
   TrueVehicleState vehicleState(std::size_t v) const;  // v: the vehicle's index in the world

@@ -179,5 +179,27 @@ TEST(SimulationLoop, FinishBeforeTheEndIsAnInterruptedRunOfTheStepsTaken) {
   EXPECT_THROW(loop.finish(), std::logic_error);
 }
 
+TEST(SimulationLoop, SnapshotIsTheLogSoFarAndTheRunGoesOn) {
+  const Scenario s = test::singleVehicleScenario({0, 0, 2}, {0, 0, 2}, 5.0);
+  OneQuadrotor q(s);
+  SimulationLoop loop(q.world, s, q.no_robots, q.pilots, flightSimulationOptions(flightOptions(s)));
+  for (int n = 0; n < 25; ++n) ASSERT_TRUE(loop.stepControl());
+  const RunLog early = loop.snapshot();
+  EXPECT_EQ(early.end_reason, "");  // still running
+  EXPECT_EQ(early.physics_steps, 50);
+  EXPECT_EQ(early.vehicles[0].samples.size(), 25u);
+  EXPECT_NEAR(early.sim_time, 0.05, 1e-12);
+  EXPECT_GT(early.wall_time, 0.0);
+
+  for (int n = 0; n < 10; ++n) ASSERT_TRUE(loop.stepControl());
+  const RunLog log = loop.finish();
+  EXPECT_EQ(log.physics_steps, 70);
+  ASSERT_EQ(log.vehicles[0].samples.size(), 35u);
+  // The snapshot's samples are the first of the finished log, unchanged.
+  EXPECT_EQ(log.vehicles[0].samples[24].t, early.vehicles[0].samples[24].t);
+  EXPECT_EQ(log.vehicles[0].samples[24].pos, early.vehicles[0].samples[24].pos);
+  EXPECT_THROW(loop.snapshot(), std::logic_error);
+}
+
 }  // namespace
 }  // namespace cosim

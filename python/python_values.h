@@ -1,0 +1,29 @@
+#pragma once
+// The library's values as Python's: JSON text as dicts (metrics.json's exact content), points as
+// (N, 3) NumPy arrays, vectors and quaternions as 1-D arrays, a vehicle state as a dict.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
+#include <vector>
+
+#include "control/flight_controller.h"
+
+namespace cosim::python {
+
+// json.loads(text).
+pybind11::object jsonValue(const std::string& text);
+
+pybind11::array_t<double> vectorArray(const std::vector<double>& values);
+pybind11::array_t<double> vectorArray(const Eigen::VectorXd& values);
+// One row per point: shape (N, 3), also for N = 0.
+pybind11::array_t<double> pointsArray(const std::vector<Eigen::Vector3d>& points);
+// (w, x, y, z), as MuJoCo and timeseries.csv order them.
+pybind11::array_t<double> quaternionArray(const Eigen::Quaterniond& q);
+
+// {"time", "position", "velocity", "quaternion" (w, x, y, z), "angular_velocity" (body frame)}.
+pybind11::dict stateDict(double time, const VehicleState& state);
+
+}  // namespace cosim::python

@@ -1,0 +1,77 @@
+"""Ctrl-C stops a long call promptly with KeyboardInterrupt, and the module works on after it."""
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import pytest
+
+from conftest import DEFAULT
+
+# RRT* improves its path until its time limit: a plan that would take a minute.
+LONG_PLAN = (f"cosim.plan({DEFAULT!r}, planner='rrt_star', "
+             "overrides={'planner.time_limit': 60})")
+
+
+@pytest.mark.parametrize("call", [
+    LONG_PLAN,
+    # Simulation plans in its constructor, as cosim.run does.
+    f"cosim.Simulation({DEFAULT!r}, overrides={{'planner.name': 'rrt_star', "
+    "'planner.time_limit': 60})",
+])
+def test_sigint_during_a_long_plan_raises_keyboard_interrupt_within_3_s(call):
+    p = subprocess.Popen(
+        [sys.executable, "-c", f"import cosim; print('planning', flush=True); {call}"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=dict(os.environ))
+    assert p.stdout.readline() == "planning\n"
+    time.sleep(1.0)
+    assert p.poll() is None, "the plan should still be running"
+    sent = time.monotonic()
+    p.send_signal(signal.SIGINT)
+    try:
+        _, stderr = p.communicate(timeout=3)
+    finally:
+        p.kill()
+    assert time.monotonic() - sent < 3
+    assert "Traceback" in stderr and stderr.rstrip().endswith("KeyboardInterrupt")
+    assert p.returncode != 0
+
+
+def test_after_an_interrupt_the_next_call_runs_normally():
+    code = f"""
+import os, signal, threading, cosim
+threading.Timer(1.0, os.kill, (os.getpid(), signal.SIGINT)).start()
+try:
+    {LONG_PLAN}
+    print('not interrupted')
+except KeyboardInterrupt:
+    print('interrupted')
+p = cosim.plan({DEFAULT!r}, planner='theta_star')
+print('then', p.success, round(p.length_m, 3))
+"""
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=30,
+                       env=dict(os.environ))
+    assert p.returncode == 0, p.stderr
+    # 44.153 m: the default scenario's Theta* path (metrics.json's planned_length_m).
+    assert p.stdout.splitlines() == ["interrupted", "then True 44.153"]
+
+
+def test_sigint_during_a_run_raises_keyboard_interrupt_and_leaves_no_metrics(tmp_path):
+    # A slow flight: 0.1 ms physics steps, rendering a video afterwards.
+    code = (f"import cosim; print('running', flush=True); cosim.run({DEFAULT!r}, "
+            f"overrides={{'sim.timestep': 0.0001}}, out={str(tmp_path)!r}, video=True)")
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, env=dict(os.environ))
+    assert p.stdout.readline() == "running\n"
+    time.sleep(1.0)
+    assert p.poll() is None
+    sent = time.monotonic()
+    p.send_signal(signal.SIGINT)
+    try:
+        _, stderr = p.communicate(timeout=3)
+    finally:
+        p.kill()
+    assert time.monotonic() - sent < 3
+    assert stderr.rstrip().endswith("KeyboardInterrupt")
+    assert not (tmp_path / "metrics.json").exists()
