@@ -131,7 +131,10 @@ void checkYamlStructure(const YAML::Node& root, const std::string& file) {
     ++top.next;
     // `top` is not used after visit(), which may grow `path`.
     if (top.node.IsSequence()) {
-      visit(child, "[" + std::to_string(top.index++) + "]");
+      // Built piecewise: GCC 12 warns falsely (-Wrestrict) on "[" + std::string temporary.
+      std::string index = std::to_string(top.index++);
+      index.insert(index.begin(), '[');
+      visit(child, index + "]");
       continue;
     }
     const YAML::Node key = child.first;

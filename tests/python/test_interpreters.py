@@ -27,3 +27,14 @@ def test_import_cosim_and_numpy(python):
                        env=dict(os.environ))
     assert p.returncode == 0, p.stderr
     assert p.stdout == "3\n"
+
+
+@pytest.mark.parametrize("python", INTERPRETERS)
+def test_a_script_may_import_numpy_before_cosim(python):
+    # build/python/sitecustomize.py borrows Debian's NumPy at start-up when the interpreter has
+    # none, so a script's usual `import numpy as np` first line works too.
+    code = "import numpy as np\nimport cosim\nprint(np.zeros(3).shape, cosim.DEFAULT_SCENARIO != '')"
+    p = subprocess.run([python, "-c", code], capture_output=True, text=True, timeout=60,
+                       env=dict(os.environ))
+    assert p.returncode == 0, p.stderr
+    assert p.stdout == "(3,) True\n"
