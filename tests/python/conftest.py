@@ -4,7 +4,9 @@ COSIM_BINARY names the built `cosim` program: tests compare the module with it o
 """
 import csv
 import os
+import signal
 import subprocess
+import time
 import sys
 
 import pytest
@@ -23,6 +25,24 @@ def run_python(code, timeout=120, **kwargs):
     """Runs `code` in a fresh interpreter (this one) with this PYTHONPATH; returns the process."""
     return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           timeout=timeout, env=dict(os.environ), **kwargs)
+
+
+def interrupt_after_marker(code, marker, wait=1.0):
+    """Starts `code` in a fresh interpreter, waits for it to print `marker` (a line), lets it work
+    `wait` s more, sends SIGINT and waits up to 3 s for it to end. Returns (seconds from SIGINT to
+    the end, stderr, exit status)."""
+    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
+                         stderr=subprocess.PIPE, text=True, env=dict(os.environ))
+    assert p.stdout.readline() == marker + "\n"
+    time.sleep(wait)
+    assert p.poll() is None, "the call should still be running"
+    sent = time.monotonic()
+    p.send_signal(signal.SIGINT)
+    try:
+        _, stderr = p.communicate(timeout=3)
+    finally:
+        p.kill()
+    return time.monotonic() - sent, stderr, p.returncode
 
 
 def read_csv_rows(path):

@@ -1,13 +1,11 @@
 """Ctrl-C stops a long call promptly with KeyboardInterrupt, and the module works on after it."""
 import os
-import signal
 import subprocess
 import sys
-import time
 
 import pytest
 
-from conftest import DEFAULT
+from conftest import DEFAULT, interrupt_after_marker
 
 # RRT* improves its path until its time limit: a plan that would take a minute.
 LONG_PLAN = (f"cosim.plan({DEFAULT!r}, planner='rrt_star', "
@@ -21,21 +19,11 @@ LONG_PLAN = (f"cosim.plan({DEFAULT!r}, planner='rrt_star', "
     "'planner.time_limit': 60})",
 ])
 def test_sigint_during_a_long_plan_raises_keyboard_interrupt_within_3_s(call):
-    p = subprocess.Popen(
-        [sys.executable, "-c", f"import cosim; print('planning', flush=True); {call}"],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=dict(os.environ))
-    assert p.stdout.readline() == "planning\n"
-    time.sleep(1.0)
-    assert p.poll() is None, "the plan should still be running"
-    sent = time.monotonic()
-    p.send_signal(signal.SIGINT)
-    try:
-        _, stderr = p.communicate(timeout=3)
-    finally:
-        p.kill()
-    assert time.monotonic() - sent < 3
+    elapsed, stderr, status = interrupt_after_marker(
+        f"import cosim; print('planning', flush=True); {call}", "planning")
+    assert elapsed < 3
     assert "Traceback" in stderr and stderr.rstrip().endswith("KeyboardInterrupt")
-    assert p.returncode != 0
+    assert status != 0
 
 
 def test_after_an_interrupt_the_next_call_runs_normally():
@@ -61,17 +49,7 @@ def test_sigint_during_a_run_raises_keyboard_interrupt_and_leaves_no_metrics(tmp
     # A slow flight: 0.1 ms physics steps, rendering a video afterwards.
     code = (f"import cosim; print('running', flush=True); cosim.run({DEFAULT!r}, "
             f"overrides={{'sim.timestep': 0.0001}}, out={str(tmp_path)!r}, video=True)")
-    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, env=dict(os.environ))
-    assert p.stdout.readline() == "running\n"
-    time.sleep(1.0)
-    assert p.poll() is None
-    sent = time.monotonic()
-    p.send_signal(signal.SIGINT)
-    try:
-        _, stderr = p.communicate(timeout=3)
-    finally:
-        p.kill()
-    assert time.monotonic() - sent < 3
+    elapsed, stderr, _ = interrupt_after_marker(code, "running")
+    assert elapsed < 3
     assert stderr.rstrip().endswith("KeyboardInterrupt")
     assert not (tmp_path / "metrics.json").exists()

@@ -1,24 +1,17 @@
 """cosim.Simulation: the flight of cosim.run, stepped from Python, with controllers in Python."""
+
 import os
-import signal
-import subprocess
 import sys
-import time
 
 import numpy as np
 import pytest
 
 import cosim
-from conftest import DEFAULT, without_wall_clock
+from conftest import DEFAULT, interrupt_after_marker, without_wall_clock
 
-
-def rotation(q):
-    w, x, y, z = q
-    return np.array([
-        [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-        [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-        [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
-    ])
+# The quaternion-to-matrix conversion of the PD example (one definition for both).
+sys.path.insert(0, os.path.join(os.path.dirname(__file__), "..", "..", "examples"))
+from pd_controller import rotation  # noqa: E402
 
 
 def hover_pd(sim, name, point, kp=6.0, kd=4.5, k_att=120.0, k_rate=22.0):
@@ -169,16 +162,6 @@ sim.set_controller("uav1", lambda state, reference: hover)
 print("stepping", flush=True)
 sim.step_until(3600)
 """
-    p = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE,
-                         stderr=subprocess.PIPE, text=True, env=dict(os.environ))
-    assert p.stdout.readline() == "stepping\n"
-    time.sleep(1.0)
-    assert p.poll() is None
-    sent = time.monotonic()
-    p.send_signal(signal.SIGINT)
-    try:
-        _, stderr = p.communicate(timeout=3)
-    finally:
-        p.kill()
-    assert time.monotonic() - sent < 3
+    elapsed, stderr, _ = interrupt_after_marker(code, "stepping")
+    assert elapsed < 3
     assert stderr.rstrip().endswith("KeyboardInterrupt")
