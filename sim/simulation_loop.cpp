@@ -182,18 +182,18 @@ RunLog SimulationLoop::snapshot() const {
 TrueVehicleState SimulationLoop::vehicleState(std::size_t v) const {
   if (!d_) throw std::logic_error("SimulationLoop::vehicleState after finish");
   const VehicleHandles& h = world_.vehicles().at(v);
-  const mjtNum* q = d_->qpos + h.qpos_adr;
-  const mjtNum* u = d_->qvel + h.qvel_adr;
   TrueVehicleState s;
-  if (h.drive.planar_root) {  // slide x, slide y (from the start), hinge yaw; the body is level
-    const double z = world_.model()->body_pos[3 * h.body + 2];
-    s.position = {h.drive.planar_origin.x() + q[0], h.drive.planar_origin.y() + q[1], z};
-    s.velocity = {u[0], u[1], 0.0};
-    s.quaternion = {std::cos(0.5 * q[2]), 0.0, 0.0, std::sin(0.5 * q[2])};
-    s.angular_velocity = {0.0, 0.0, u[2]};
+  if (h.drive.planar_root) {  // the robots' own reader; the body is level, at its fixed height
+    const PlanarState p = readPlanarState(d_.get(), h);
+    s.position = {p.position.x(), p.position.y(), world_.model()->body_pos[3 * h.body + 2]};
+    s.velocity = {p.velocity.x(), p.velocity.y(), 0.0};
+    s.quaternion = {std::cos(0.5 * p.yaw), 0.0, 0.0, std::sin(0.5 * p.yaw)};
+    s.angular_velocity = {0.0, 0.0, p.yaw_rate};
     return s;
   }
   // Free joint: x y z qw qx qy qz; linear velocity in the world, angular in the body frame.
+  const mjtNum* q = d_->qpos + h.qpos_adr;
+  const mjtNum* u = d_->qvel + h.qvel_adr;
   s.position = {q[0], q[1], q[2]};
   s.velocity = {u[0], u[1], u[2]};
   s.quaternion = {q[3], q[4], q[5], q[6]};
