@@ -11,7 +11,6 @@
 #include "core/input_error.h"
 #include "core/stop_request.h"
 #include "core/json_writer.h"
-#include "sim/world_model.h"
 
 namespace cosim::cli {
 
@@ -45,23 +44,9 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     // their checks (scenario_checks.h).
     checkOutputDir(a->out);
     if (!a->out.empty()) removeStaleResults(a->out, {"plan.json", "path.csv"});
-    std::vector<std::string> overrides = a->sets;
-    if (!a->planner.empty()) overrides.push_back("planner.name=" + a->planner);
-    Scenario s = [&] {
-      try {
-        return loadCheckedScenario(a->scenario, overrides, PlannerUse::FirstVehicle);
-      } catch (const InputError& e) {  // a planner named by --planner: say so, not --set
-        if (a->planner.empty() ||
-            e.place() != "--set planner.name=" + a->planner + ", key planner.name")
-          throw;
-        throw InputError(e.file(), "--planner " + a->planner, e.problem());
-      }
-    }();
+    const Scenario s = loadScenarioForPlan(a->scenario, a->sets, a->planner);
     const auto dir = prepareOutputDir(a->out, "plan");
-    // The vehicle's size comes from its model: compose the world to read it.
-    const WorldModel world = WorldModel::build(s);
-    const VehiclePlan plan = planVehicle(s, s.vehicles.front(), world.vehicles().front().params.radius,
-                                         s.planner_params);
+    const VehiclePlan plan = planFirstVehicle(s);
     // A planner ended by the stop request says so; a request that came after it returned is an
     // interrupt all the same.
     if (plan.status == PlannerStatus::Stopped || stopRequested()) {

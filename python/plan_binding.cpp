@@ -2,7 +2,6 @@
 // scenario's world, without physics.
 #include <pybind11/stl.h>
 
-#include "core/input_error.h"
 #include "planning/planner_status.h"
 #include "python/bindings.h"
 #include "python/interrupt_guard.h"
@@ -10,7 +9,6 @@
 #include "python/python_values.h"
 #include "run/scenario_checks.h"
 #include "run/scenario_planning.h"
-#include "sim/world_model.h"
 
 namespace py = pybind11;
 
@@ -33,29 +31,17 @@ struct PlanResult {
 PlanResult plan(const py::object& scenario, const py::object& planner,
                 const py::object& overrides) {
   const std::string path = scenarioPath(scenario);
-  std::vector<std::string> sets = overrideAssignments(overrides);
+  const std::vector<std::string> sets = overrideAssignments(overrides);
   const std::string planner_name = planner.is_none() ? "" : planner.cast<std::string>();
-  if (!planner_name.empty()) sets.push_back("planner.name=" + planner_name);
 
   InterruptGuard guard;
   VehiclePlan p;
   std::string used_planner;
   {
     py::gil_scoped_release release;
-    const Scenario s = [&] {
-      try {
-        return loadCheckedScenario(path, sets, PlannerUse::FirstVehicle);
-      } catch (const InputError& e) {  // a planner named by the argument: say so, as cosim plan
-        if (planner_name.empty() ||
-            e.place() != "--set planner.name=" + planner_name + ", key planner.name")
-          throw;
-        throw InputError(e.file(), "--planner " + planner_name, e.problem());
-      }
-    }();
-    // The vehicle's size comes from its model: compose the world to read it.
-    const WorldModel world = WorldModel::build(s);
-    p = planVehicle(s, s.vehicles.front(), world.vehicles().front().params.radius,
-                    s.planner_params);
+    // An error about the planner argument names it as cosim plan names --planner.
+    const Scenario s = loadScenarioForPlan(path, sets, planner_name);
+    p = planFirstVehicle(s);
     used_planner = s.planner_name;
   }
   // The planner stopped early: its outcome is no result.

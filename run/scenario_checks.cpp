@@ -103,4 +103,17 @@ Scenario loadCheckedScenario(const std::string& path, const std::vector<std::str
   return scenario;
 }
 
+Scenario loadScenarioForPlan(const std::string& path, std::vector<std::string> overrides,
+                             const std::string& planner) {
+  if (planner.empty()) return loadCheckedScenario(path, overrides, PlannerUse::FirstVehicle);
+  const std::string assignment = "planner.name=" + planner;
+  overrides.push_back(assignment);
+  try {
+    return loadCheckedScenario(path, overrides, PlannerUse::FirstVehicle);
+  } catch (const InputError& e) {
+    if (e.place() != "--set " + assignment + ", key planner.name") throw;
+    throw InputError(e.file(), "--planner " + planner, e.problem());
+  }
+}
+
 }  // namespace cosim

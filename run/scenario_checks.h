@@ -25,6 +25,12 @@ void checkRunPlanners(const Scenario& scenario);
 Scenario loadCheckedScenario(const std::string& path, const std::vector<std::string>& overrides,
                              PlannerUse use);
 
+// loadCheckedScenario for a first-vehicle plan (`cosim plan`, Python's cosim.plan) with `planner`,
+// when not empty, as planner.name: an error about that planner names the place `--planner NAME`,
+// where the user gave it, not the --set assignment it becomes.
+Scenario loadScenarioForPlan(const std::string& path, std::vector<std::string> overrides,
+                             const std::string& planner);
+
 // "line 7, key planner.name" for the dotted `key` of a scenario file, or the --set assignment
 // that gave it ("--set planner.name=cbs, key planner.name"), or "key KEY" if neither.
 std::string scenarioKeyPlace(const std::string& path, const std::vector<std::string>& overrides,

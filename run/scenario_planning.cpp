@@ -3,6 +3,7 @@
 #include "core/stop_token.h"
 #include "core/input_error.h"
 #include "planning/planner_registry.h"
+#include "sim/world_model.h"
 
 namespace cosim {
 
@@ -62,6 +63,12 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, do
   plan.success = true;
   plan.status = PlannerStatus::ExactSolution;
   return plan;
+}
+
+VehiclePlan planFirstVehicle(const Scenario& scenario) {
+  const WorldModel world = WorldModel::build(scenario);
+  return planVehicle(scenario, scenario.vehicles.front(), world.vehicles().front().params.radius,
+                     scenario.planner_params);
 }
 
 }  // namespace cosim

@@ -39,4 +39,8 @@ struct VehiclePlan {
 VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, double vehicle_radius,
                         ParamSet planner_params);
 
+// The first vehicle's plan in the scenario's world (`cosim plan`, Python's cosim.plan), its size
+// from its model (the world is composed to read it).
+VehiclePlan planFirstVehicle(const Scenario& scenario);
+
 }  // namespace cosim
