@@ -6,7 +6,6 @@
 #include <string>
 #include <vector>
 
-#include "core/atomic_file.h"  // writeFileAtomically, how every file in these folders is written
 #include "core/csv_text.h"     // csvField, for the CSV files the commands write
 
 namespace cosim {
