@@ -20,5 +20,6 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx);
 void addSweepCommand(CLI::App& app, CommandContext& ctx);
 void addExportMjcfCommand(CLI::App& app, CommandContext& ctx);
 void addPlanBenchCommand(CLI::App& app, CommandContext& ctx);
+void addCompareRealCommand(CLI::App& app, CommandContext& ctx);
 
 }  // namespace cosim::cli

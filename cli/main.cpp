@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   cosim::cli::addSweepCommand(app, ctx);
   cosim::cli::addExportMjcfCommand(app, ctx);
   cosim::cli::addPlanBenchCommand(app, ctx);
+  cosim::cli::addCompareRealCommand(app, ctx);
 
   try {
     app.parse(argc, argv);
