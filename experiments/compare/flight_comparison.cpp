@@ -79,8 +79,12 @@ FlightComparison compareFlights(const RunFlight& run, const FlightLog& log,
                          " samples, too few to compare");
   AlignmentProblem pr;
   pr.s = c.t;
-  c.start_offset_fitted = options.start_offset == StartOffset::Fit ||
-                          (options.start_offset == StartOffset::Auto && run.relative_reference);
+  // A log with a reference is placed by it, and two references of one file differ in time and,
+  // at most, in frame: the frame is fitted too (unless told not to), or a frame offset would
+  // pull the time offset. It does not enter the real error (position minus its own reference).
+  c.start_offset_fitted =
+      options.start_offset == StartOffset::Fit ||
+      (options.start_offset == StartOffset::Auto && (run.relative_reference || log.hasReference()));
   pr.fit_translation = c.start_offset_fitted;
   if (log.hasReference()) {
     pr.log = &log.reference;

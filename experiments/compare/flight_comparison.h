@@ -11,7 +11,7 @@
 //   reference the fit would absorb the real vehicle's lag into the offset and understate its
 //   error.
 //   The translation (start offset) is fitted when the run flew its reference relative to the
-//   vehicle's start (StartOffset::Auto), always (Fit) or never (None).
+//   vehicle's start or the log has a reference (StartOffset::Auto), always (Fit) or never (None).
 // Errors: a log with a reference, |position - its reference| at the aligned times; without one,
 // |position - start offset - run reference|. The simulated error is |flown - run reference|.
 #include <Eigen/Core>

@@ -2,6 +2,7 @@
 // written as a "real" log 0.7 s late (and moved, and padded, and broken), compared back.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -11,6 +12,15 @@
 
 namespace cosim::test {
 namespace {
+
+// compare.json's start_offset_m (NaN if it is not there).
+Eigen::Vector3d startOffset(const std::string& json) {
+  const auto at = json.find("\"start_offset_m\": [");
+  Eigen::Vector3d d = Eigen::Vector3d::Constant(std::nan(""));
+  if (at != std::string::npos)
+    std::sscanf(json.c_str() + at + 19, "%lf, %lf, %lf", &d[0], &d[1], &d[2]);
+  return d;
+}
 
 // An 8 s minimum-snap flight through three waypoints of the Crazyflie-class quadrotor in an
 // empty room.
@@ -43,21 +53,28 @@ class CompareReal : public ::testing::Test {
   }
 
   // The flown path as a CSV log: t + delay, position + shift; `pad` seconds of standing still
-  // before and after.
+  // before and after; with `reference`, the run's reference (moved the same way) as ref_ columns.
   static std::filesystem::path writeLog(const std::string& name, double delay,
-                                        const Eigen::Vector3d& shift, double pad = 0.0) {
+                                        const Eigen::Vector3d& shift, double pad = 0.0,
+                                        bool reference = false) {
     const auto path = *dir_ / name;
     std::ofstream out(path);
-    out << "t,x,y,z\n";
-    char row[160];
-    const auto put = [&](double t, const Eigen::Vector3d& p) {
-      std::snprintf(row, sizeof row, "%.9g,%.9g,%.9g,%.9g\n", t, p.x(), p.y(), p.z());
+    out << (reference ? "t,x,y,z,ref_x,ref_y,ref_z\n" : "t,x,y,z\n");
+    char row[240];
+    const auto put = [&](double t, const LogSample& s) {
+      const Eigen::Vector3d p = s.pos + shift, r = s.ref_pos + shift;
+      std::snprintf(row, sizeof row, "%.9g,%.9g,%.9g,%.9g", t + delay, p.x(), p.y(), p.z());
       out << row;
+      if (reference) {
+        std::snprintf(row, sizeof row, ",%.9g,%.9g,%.9g", r.x(), r.y(), r.z());
+        out << row;
+      }
+      out << "\n";
     };
     const LogSample &first = samples_->front(), &last = samples_->back();
-    for (double t = first.t - pad; t < first.t - 1e-9; t += 0.01) put(t + delay, first.pos + shift);
-    for (const LogSample& s : *samples_) put(s.t + delay, s.pos + shift);
-    for (double t = last.t + 0.01; t <= last.t + pad; t += 0.01) put(t + delay, last.pos + shift);
+    for (double t = first.t - pad; t < first.t - 1e-9; t += 0.01) put(t, first);
+    for (const LogSample& s : *samples_) put(s.t, s);
+    for (double t = last.t + 0.01; t <= last.t + pad; t += 0.01) put(t, last);
     return path;
   }
 
@@ -99,13 +116,57 @@ TEST_F(CompareReal, PaddedAndMovedLogIsPlacedInTimeAndSpace) {
   EXPECT_NEAR(jsonNumber(json, "time_offset_s"), 2.7, 0.02);
   EXPECT_NEAR(jsonNumber(json, "ratio"), 1.0, 0.02);
   EXPECT_TRUE(jsonTrue(json, "start_offset_fitted"));
-  const auto at = json.find("\"start_offset_m\": [");
-  ASSERT_NE(at, std::string::npos);
-  double d[3];
-  ASSERT_EQ(std::sscanf(json.c_str() + at + 19, "%lf, %lf, %lf", &d[0], &d[1], &d[2]), 3);
-  EXPECT_NEAR(d[0], 0.4, 1e-3);
-  EXPECT_NEAR(d[1], -0.3, 1e-3);
-  EXPECT_NEAR(d[2], 0.2, 1e-3);
+  EXPECT_NEAR((startOffset(json) - shift).norm(), 0.0, 1e-3) << json;
+}
+
+TEST_F(CompareReal, RelativeReferenceFitsTheStartOffsetByItself) {
+  // The run folder as a run of a reference flown relative to the start would leave it: only
+  // vehicles[i].reference.relative of its scenario.yaml is read.
+  const auto run = *dir_ / "run", relative = *dir_ / "relative-run";
+  std::filesystem::create_directories(relative);
+  std::filesystem::copy_file(run / "timeseries.csv", relative / "timeseries.csv");
+  std::ofstream(relative / "scenario.yaml")
+      << "vehicles:\n  - name: cf\n    model: cf2\n    start: [1, 1, 1]\n"
+      << "    reference: {file: figure8.csv, timescale: 1.0, relative: true}\n";
+  const CommandResult r =
+      runCosim("compare-real " + relative.string() + " " +
+               writeLog("relative.csv", 0.7, Eigen::Vector3d(-0.25, 0.5, 0.0)).string() +
+               " --out " + (*dir_ / "cmp-relative").string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string json = slurp(*dir_ / "cmp-relative" / "compare.json");
+  EXPECT_TRUE(jsonTrue(json, "relative_reference"));
+  EXPECT_TRUE(jsonTrue(json, "start_offset_fitted"));
+  EXPECT_NEAR(jsonNumber(json, "time_offset_s"), 0.7, 0.02);
+  EXPECT_NEAR(jsonNumber(json, "ratio"), 1.0, 0.02);
+  EXPECT_NEAR((startOffset(json) - Eigen::Vector3d(-0.25, 0.5, 0.0)).norm(), 0.0, 1e-3) << json;
+}
+
+TEST_F(CompareReal, AligningToTheReferenceAbsorbsTheVehiclesLag) {
+  // Matched to the reference instead of the simulated flight, the fitted offset takes up the
+  // vehicle's lag behind its reference, and the "real" error comes out below the simulated one.
+  const CommandResult r =
+      compare(writeLog("late.csv", 0.7, Eigen::Vector3d::Zero()), "--align-to reference");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string json = result();
+  std::printf("aligned to the reference: ratio %.4f, offset %.5f s\n", jsonNumber(json, "ratio"),
+              jsonNumber(json, "time_offset_s"));
+  EXPECT_LT(jsonNumber(json, "ratio"), 0.99);
+  EXPECT_LT(jsonNumber(json, "time_offset_s"), 0.7);
+  EXPECT_NEAR(jsonNumber(json, "time_offset_s"), 0.7, 0.01);
+}
+
+TEST_F(CompareReal, ALogWithItsReferenceIsPlacedByItAndMeasuredAgainstIt) {
+  // Moved by 0.3 m with its reference: the real error is the position against the log's own
+  // reference, so the move does not count (against the run's reference it would be 0.3 m).
+  const Eigen::Vector3d shift(0.3, 0.0, 0.0);
+  const CommandResult r = compare(writeLog("with-ref.csv", 1.9, shift, 1.0, true));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string json = result();
+  EXPECT_NE(json.find("\"alignment\": \"the log's reference against the run's reference\""),
+            std::string::npos);
+  EXPECT_NEAR(jsonNumber(json, "time_offset_s"), 1.9, 0.002);
+  EXPECT_NEAR(jsonNumber(json, "ratio"), 1.0, 0.02);
+  EXPECT_NEAR((startOffset(json) - shift).norm(), 0.0, 1e-3) << json;
 }
 
 TEST_F(CompareReal, BadLogsAndRunFoldersAreExitTwoNamingTheFile) {

@@ -53,7 +53,7 @@ TEST(UsdLogReader, ReadsHeaderAndEveryValueTypeOfBothVersions) {
     EXPECT_EQ(log.eventTypes()[0].records, 20u);
     EXPECT_EQ(log.eventTypes()[1].records, 10u);
     EXPECT_EQ(log.eventTypes()[2].value_bytes, 1u + 1 + 2 + 2 + 4 + 4 + 8 + 8 + 2 + 8);
-    EXPECT_EQ(log.eventTypes()[2].variables[8].offset, 28u);
+    EXPECT_EQ(log.eventTypes()[2].variables[8].offset, 30u);  // 1+1+2+2+4+4+8+8 bytes before it
     const UsdSeries pos = log.series(0, {"locSrv.x", "locSrv.z"});
     ASSERT_EQ(pos.t.size(), 20u);
     EXPECT_DOUBLE_EQ(pos.t[3], 1.03);
