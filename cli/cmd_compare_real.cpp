@@ -96,8 +96,8 @@ void addCompareRealCommand(CLI::App& app, CommandContext& ctx) {
                   "or to the run's reference")
       ->check(CLI::IsMember({"flown", "reference"}));
   cmd->add_option("--start-offset", a->start_offset,
-                  "fit a start position offset: auto (when the run's reference is relative), "
-                  "fit, none")
+                  "fit a start position offset: auto (when the run's reference is relative or "
+                  "the log has a reference), fit, none")
       ->check(CLI::IsMember({"auto", "fit", "none"}));
   auto* time_offset = cmd->add_option("--time-offset", a->time_offset,
                                       "log time minus run time in s, instead of fitting it")

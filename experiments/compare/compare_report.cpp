@@ -33,6 +33,12 @@ std::string fixed(double v, int digits) {
   return buf;
 }
 
+std::string significant(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.3g", v);
+  return buf;
+}
+
 }  // namespace
 
 std::string compareJson(const CompareInputs& in, const FlightComparison& c) {
@@ -87,7 +93,7 @@ std::string compareMarkdown(const CompareInputs& in, const FlightComparison& c) 
             : std::string(in.run->relative_reference
                               ? "not fitted (as asked)"
                               : "not fitted (the run's reference is absolute)"))
-    << ". Least squares of " << c.alignment << "; residual RMS " << fixed(c.alignment_rms_m, 4)
+    << ". Least squares of " << c.alignment << "; residual RMS " << significant(c.alignment_rms_m)
     << " m.\n\n"
     << "Figure: `compare.png` (`compare.svg`): both flown paths over the reference from above, "
        "and the error over time, real beside simulated.\n";

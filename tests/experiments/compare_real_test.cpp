@@ -169,6 +169,29 @@ TEST_F(CompareReal, ALogWithItsReferenceIsPlacedByItAndMeasuredAgainstIt) {
   EXPECT_NEAR((startOffset(json) - shift).norm(), 0.0, 1e-3) << json;
 }
 
+TEST_F(CompareReal, AUsdLogOfTheFlightIsReadAndPlacedLikeTheCsv) {
+  // The flight as the uSD-card deck would log it at 500 Hz: locSrv (single precision) in the
+  // fixed-frequency event, the clock counting from power-on (12.3 s before the run began).
+  UsdLogWriter w(2);
+  w.addType({0xFFFF,
+             "fixedFrequency",
+             {"pm.vbat(f)", "locSrv.x(f)", "locSrv.y(f)", "locSrv.z(f)", "locSrv.qw(e)"}});
+  for (const LogSample& s : *samples_)
+    w.record(0xFFFF, 12.3 + s.t,
+             UsdLogWriter::f32(3.9f) + UsdLogWriter::f32(static_cast<float>(s.pos.x())) +
+                 UsdLogWriter::f32(static_cast<float>(s.pos.y())) +
+                 UsdLogWriter::f32(static_cast<float>(s.pos.z())) +
+                 UsdLogWriter::integer(0x3C00, 2));
+  std::ofstream(*dir_ / "flight.bin", std::ios::binary) << w.bytes();
+  const CommandResult r = compare(*dir_ / "flight.bin");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string json = result();
+  EXPECT_NE(json.find("\"log_format\": \"Crazyflie uSD log version 2\""), std::string::npos);
+  EXPECT_NE(json.find("locSrv.x,locSrv.y,locSrv.z (event fixedFrequency)"), std::string::npos);
+  EXPECT_NEAR(jsonNumber(json, "time_offset_s"), 12.3, 0.002);
+  EXPECT_NEAR(jsonNumber(json, "ratio"), 1.0, 0.02);
+}
+
 TEST_F(CompareReal, BadLogsAndRunFoldersAreExitTwoNamingTheFile) {
   // A uSD log whose CRC is wrong.
   UsdLogWriter w(2);
