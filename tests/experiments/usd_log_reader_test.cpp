@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/input_error.h"
 #include "experiments/compare/flight_log.h"
 #include "tests/experiments/usd_log_writer.h"
@@ -142,6 +144,20 @@ TEST(UsdLogReader, BrokenLogsAreInputErrorsNamingTheByte) {
   for (double t : {0.1, 0.2, 0.15}) back.record(1, t, W::f32(1) + W::f32(1) + W::f32(1));
   EXPECT_NE(errorOf(back.bytes()).find("time goes back"), std::string::npos);
   EXPECT_NE(errorOf(std::string("\xBC\x02", 2)).find("too short"), std::string::npos);
+  W future(3);
+  future.addType({1, "fixedFrequency", {"locSrv.x(f)"}});
+  EXPECT_NE(errorOf(future.bytes()).find("byte 1: unsupported uSD log version 3"),
+            std::string::npos);
+  W nan(2);
+  nan.addType({1, "fixedFrequency", {"locSrv.x(f)", "locSrv.y(f)", "locSrv.z(f)"}});
+  for (int k = 0; k < 12; ++k)
+    nan.record(1, 0.01 * k, W::f32(1) + W::f32(k == 4 ? std::nanf("") : 1.0f) + W::f32(1));
+  // Header: 5 bytes, id 2, "fixedFrequency\0" 15, count 2, three "locSrv.?(f)\0" of 12 = 60;
+  // records of 2 + 8 + 12 = 22 bytes: the fifth starts at 60 + 4 * 22 = 148.
+  EXPECT_NE(
+      errorOf(nan.bytes()).find("byte 148: not a finite number in locSrv.x,locSrv.y,locSrv.z"),
+      std::string::npos)
+      << errorOf(nan.bytes());
 }
 
 }  // namespace
