@@ -10,7 +10,9 @@ namespace cosim {
 
 const std::vector<std::string> kRunResultNames = {
     "metrics.json", "index.html", "timeseries.csv", "path.csv", "moving_obstacles.csv",
-    "final.png",    "video*.mp4", "figures",        "frames_*"};
+    "final.png",    "video*.mp4", "figures",        "frames_*",
+    // A comparison with a real flight (cosim compare-real) was of the run this one replaces.
+    "compare.*"};
 
 void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario,
                       const RunLog& log) {

@@ -192,6 +192,21 @@ TEST_F(CompareReal, AUsdLogOfTheFlightIsReadAndPlacedLikeTheCsv) {
   EXPECT_NEAR(jsonNumber(json, "ratio"), 1.0, 0.02);
 }
 
+TEST_F(CompareReal, WritesIntoTheRunFolderByDefaultAndARerunThereClearsIt) {
+  const auto run = *dir_ / "rerun";
+  const std::string again = "run " + (*dir_ / "flight.yaml").string() + " --out " + run.string() +
+                            " --no-video --no-images --quiet";
+  ASSERT_EQ(runCosim(again).status, 0);
+  const auto log = writeLog("late-again.csv", 0.7, Eigen::Vector3d::Zero());
+  ASSERT_EQ(runCosim("compare-real " + run.string() + " " + log.string()).status, 0);
+  for (const char* f : {"compare.json", "compare.md", "compare.png", "compare.svg"})
+    EXPECT_TRUE(std::filesystem::is_regular_file(run / f)) << f;
+  // A new run in the folder: the comparison was of the old one.
+  ASSERT_EQ(runCosim(again).status, 0);
+  for (const char* f : {"compare.json", "compare.md", "compare.png", "compare.svg"})
+    EXPECT_FALSE(std::filesystem::exists(run / f)) << f;
+}
+
 TEST_F(CompareReal, BadLogsAndRunFoldersAreExitTwoNamingTheFile) {
   // A uSD log whose CRC is wrong.
   UsdLogWriter w(2);
