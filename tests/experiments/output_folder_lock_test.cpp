@@ -23,18 +23,18 @@ const char* kScenario =
     "world: {bounds: {min: [0, 0, 0], max: [20, 20, 6]},\n"
     "        obstacles: [{type: box, pos: [10, 10, 3], size: [2, 8, 6]}]}\n"
     "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [18, 18, 1]}]\n"
-    "planner: {name: astar, resolution: 0.5}\n";
+    "planner: {name: astar, resolution: 0.5}\n"
+    // A slow flight: still in the air while the second command starts.
+    "trajectory: {mode: minimum_snap, max_speed: 0.05, max_acceleration: 3.0}\n";
 
 TEST(OutputFolderLock, ASecondRunIntoTheFolderOfARunningOneExitsTwoNamingItsPid) {
   const fs::path dir = freshDir("lock-run");
   fs::create_directories(dir);
   std::ofstream(dir / "s.yaml") << kScenario;
   const fs::path out = dir / "run", err = dir / "err";
-  // A slow flight: still in the air when the second run starts.
-  const pid_t first =
-      spawnCosim({"run", (dir / "s.yaml").string(), "--no-video", "--out", out.string(), "--set",
-                  "sim.max_time=600", "--set", "trajectory.max_speed=0.05"},
-                 err);
+  const pid_t first = spawnCosim({"run", (dir / "s.yaml").string(), "--no-video", "--out",
+                                  out.string(), "--set", "sim.max_time=600"},
+                                 err);
   ASSERT_GT(first, 0);
   ASSERT_TRUE(waitForText(err, "cosim: flying", std::chrono::seconds(120))) << slurp(err);
 
@@ -52,8 +52,9 @@ TEST(OutputFolderLock, ASecondRunIntoTheFolderOfARunningOneExitsTwoNamingItsPid)
   EXPECT_FALSE(fs::exists(out / "metrics.json"));
   EXPECT_FALSE(fs::exists(out / ".cosim.lock"));  // the holder removed it as it let go
 
-  const CommandResult third = runCosim("run " + (dir / "s.yaml").string() +
-                                       " --no-video --no-images --quiet --out " + out.string());
+  const CommandResult third = runCosim(
+      "run " + (dir / "s.yaml").string() +
+      " --no-video --no-images --quiet --set trajectory.max_speed=3 --out " + out.string());
   EXPECT_EQ(third.status, 0) << third.err;
   EXPECT_TRUE(fs::exists(out / "metrics.json"));
   fs::remove_all(dir);
@@ -64,17 +65,17 @@ TEST(OutputFolderLock, ALockLeftByAKilledRunDoesNotBlockTheNextOne) {
   fs::create_directories(dir);
   std::ofstream(dir / "s.yaml") << kScenario;
   const fs::path out = dir / "run", err = dir / "err";
-  const pid_t first =
-      spawnCosim({"run", (dir / "s.yaml").string(), "--no-video", "--out", out.string(), "--set",
-                  "sim.max_time=600", "--set", "trajectory.max_speed=0.05"},
-                 err);
+  const pid_t first = spawnCosim({"run", (dir / "s.yaml").string(), "--no-video", "--out",
+                                  out.string(), "--set", "sim.max_time=600"},
+                                 err);
   ASSERT_GT(first, 0);
   ASSERT_TRUE(waitForText(err, "cosim: flying", std::chrono::seconds(120))) << slurp(err);
   kill(first, SIGKILL);
   EXPECT_EQ(waitExitWithin(first, std::chrono::seconds(30)), -1);
   EXPECT_TRUE(fs::exists(out / ".cosim.lock"));  // left behind, but no longer locked
-  const CommandResult next = runCosim("run " + (dir / "s.yaml").string() +
-                                      " --no-video --no-images --quiet --out " + out.string());
+  const CommandResult next = runCosim(
+      "run " + (dir / "s.yaml").string() +
+      " --no-video --no-images --quiet --set trajectory.max_speed=3 --out " + out.string());
   EXPECT_EQ(next.status, 0) << next.err;
   fs::remove_all(dir);
 }
@@ -84,8 +85,7 @@ TEST(OutputFolderLock, ALockLeftByAKilledRunDoesNotBlockTheNextOne) {
 TEST(OutputFolderLock, ASecondSweepIntoTheFolderOfARunningOneExitsTwo) {
   const fs::path dir = freshDir("lock-sweep");
   fs::create_directories(dir);
-  std::ofstream(dir / "s.yaml") << kScenario
-                                << "sim: {max_time: 600}\ntrajectory: {max_speed: 0.05}\n";
+  std::ofstream(dir / "s.yaml") << kScenario << "sim: {max_time: 600}\n";
   std::ofstream(dir / "sweep.yaml") << "scenarios: [s.yaml]\nvary: {sim.seed: [1, 2]}\n"
                                        "output: {video: false}\n";
   const fs::path out = dir / "out", err = dir / "err";
