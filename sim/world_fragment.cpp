@@ -67,13 +67,14 @@ class FragmentChecker {
       fail(
           section,
           "<" + name + "> is not allowed in a world fragment (asset, default, worldbody, contact)");
-    // Every element below, without recursion (tinyxml2 bounds the depth at 100 anyway).
+    // Every element below, in document order (the budget is passed at the element that a
+    // reader of the file would count to), without recursion (tinyxml2 bounds the depth at 100).
     std::vector<XMLElement*> open = {section};
     while (!open.empty()) {
       XMLElement* e = open.back();
       open.pop_back();
       checkElement(e);
-      for (XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+      for (XMLElement* c = e->LastChildElement(); c; c = c->PreviousSiblingElement())
         open.push_back(c);
     }
   }
