@@ -15,6 +15,7 @@
 #include "cli/command.h"
 #include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "core/output_files.h"
 #include "sim/world_model.h"
 
 namespace cosim::cli {
@@ -34,14 +35,14 @@ void addExportMjcfCommand(CLI::App& app, CommandContext& ctx) {
                   "output file (default: <scenario name>.xml in the current folder)");
   cmd->add_option("--set", a->sets, "override a scenario key, e.g. --set render.width=1920");
   cmd->callback([a, &ctx] {
-    const Scenario s = loadScenario(a->scenario, a->sets);
     const std::filesystem::path out =
         a->out.empty()
             ? std::filesystem::path(std::filesystem::path(a->scenario).stem().string() + ".xml")
             : std::filesystem::path(a->out);
+    // Before any work: a folder, a FIFO or a device there, or no folder to write into.
+    checkOutputPath(out, a->out.empty() ? "output file" : "--out");
+    const Scenario s = loadScenario(a->scenario, a->sets);
     const std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
-    if (!std::filesystem::is_directory(dir))
-      throw InputError("command line", "--out", "no such folder: " + dir.string());
     const WorldModel world = WorldModel::build(s);  // compiles it: MuJoCo keeps its last XML
     // MuJoCo writes the file itself: into a temporary name, then read back and written in place
     // atomically like every other output.

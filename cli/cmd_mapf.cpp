@@ -101,7 +101,7 @@ void addMapfCommand(CLI::App& app, CommandContext& ctx) {
       ->check(CLI::IsMember({4, 8}));
   cmd->add_option("--time-limit", a->time_limit, "seconds per planner run (default 60)")
       ->check(numberIn(0.001, 3600.0));
-  cmd->add_option("--seed", a->seed, "random seed (LRA* noise)");
+  cmd->add_option("--seed", a->seed, "random seed (LRA* noise)")->check(seedNumber());
   cmd->add_option("--block", a->blocks, "extra obstacle cell X,Y (column,row; repeatable)");
   cmd->add_flag("--execute", a->execute,
                 "drive the plan with ground robots in MuJoCo; files in DIR/execution/");

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
@@ -25,13 +26,31 @@ std::string readText(const std::filesystem::path& p) {
   return readInputFile(p.string(), kMaxScenarioFileBytes, "file of a run folder");
 }
 
-// The original scenario path recorded in run.json (relative paths in the scenario resolve there).
-std::string recordedScenarioFile(const std::filesystem::path& dir) {
+// What run.json recorded: the original scenario path (relative paths in the scenario resolve
+// there) and, in runs of this version on, what the logs hold.
+struct RecordedRun {
+  std::string scenario_file;
+  std::optional<std::size_t> timeseries_rows, path_rows;
+  bool diverged = false;
+};
+
+RecordedRun recordedRun(const std::filesystem::path& dir) {
   const std::string file = (dir / "run.json").string();
   const nlohmann::ordered_json json = parseJsonText(readText(dir / "run.json"), file);
   if (!json.is_object() || !json.contains("scenario_file") || !json["scenario_file"].is_string())
     throw InputError(file, "scenario_file", "missing");
-  return json["scenario_file"].get<std::string>();
+  RecordedRun r;
+  r.scenario_file = json["scenario_file"].get<std::string>();
+  const auto count = [&](const char* key) -> std::optional<std::size_t> {
+    if (!json.contains(key)) return std::nullopt;
+    if (!json[key].is_number_unsigned()) throw InputError(file, key, "not a row count");
+    return json[key].get<std::size_t>();
+  };
+  r.timeseries_rows = count("timeseries_rows");
+  r.path_rows = count("path_rows");
+  const std::string end = json.value("end_reason", std::string());
+  r.diverged = end == "diverged" || end == "unstable";
+  return r;
 }
 
 // What the run could have logged: the scenario bounds the log it is re-rendered from.
@@ -88,7 +107,8 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
     const std::atomic<bool>& interrupt = installInterruptFlag();
     const std::filesystem::path dir = a->dir;
     const std::string yaml = readText(dir / "scenario.yaml");
-    Scenario s = parseScenario(yaml, recordedScenarioFile(dir));
+    const RecordedRun recorded = recordedRun(dir);
+    Scenario s = parseScenario(yaml, recorded.scenario_file);
     if (!a->camera.empty()) {
       try {
         cameraKind(a->camera);
@@ -116,7 +136,10 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
     RunLog log;
     // The time series first: it names the vehicles, and a single vehicle's path.csv has no
     // vehicle column (its rows belong to the first vehicle).
-    const LogBounds bounds = logBoundsFor(s);
+    LogBounds bounds = logBoundsFor(s);
+    bounds.timeseries_rows = recorded.timeseries_rows;
+    bounds.path_rows = recorded.path_rows;
+    bounds.non_finite_allowed = recorded.diverged;
     readTimeseriesCsv((dir / "timeseries.csv").string(), log, bounds);
     readPathCsv((dir / "path.csv").string(), log, bounds);
     // Where the moving obstacles were (without it they would stand at their start); runs

@@ -80,7 +80,8 @@ void addReproduceCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("name", args->name, "which experiment (see --list)");
   cmd->add_option("--runs", args->runs, "repetitions per configuration (default: the seed's)")
       ->check(wholeNumberIn(0, 1000000000));
-  cmd->add_option("--seed", args->seed, "base random seed (run i uses seed + i)");
+  cmd->add_option("--seed", args->seed, "base random seed (run i uses seed + i)")
+      ->check(seedNumber());
   cmd->add_option("--out", args->out, "output folder (default: a new folder under out/)");
   cmd->add_flag("--quick", args->quick, "a small version, for smoke tests");
   cmd->add_flag("--list", args->list, "list the available experiments");

@@ -1,12 +1,14 @@
 // cosim run [SCENARIO.yaml]: plan, fly, evaluate and render one scenario.
 #include <unistd.h>
 
+#include <filesystem>
 #include <iostream>
 
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
 #include "cli/run_console.h"
+#include "core/output_dir_lock.h"
 #include "core/output_files.h"
 #include "run/run_files.h"
 #include "run/run_pipeline.h"
@@ -57,6 +59,10 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     const std::atomic<bool>& interrupt = installInterruptFlag();
     RunRequest request;
     checkOutputDir(a->out);
+    // The folder is this run's alone until it ends (core/output_dir_lock.h): locked before its
+    // earlier results go, or as soon as it is made.
+    OutputDirLock lock;
+    if (!a->out.empty() && std::filesystem::is_directory(a->out)) lock.acquire(a->out, "--out");
     if (!a->out.empty()) removeStaleResults(a->out, kRunResultNames);
     const std::string path = a->scenario.empty() ? defaultScenarioPath() : a->scenario;
     std::vector<std::string> overrides = a->sets;
@@ -64,6 +70,7 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     if (a->video_speed > 0) overrides.push_back("render.speed=" + std::to_string(a->video_speed));
     Scenario scenario = loadCheckedScenario(path, overrides, PlannerUse::Run);
     request.out_dir = prepareOutputDir(a->out, "run");
+    lock.acquire(request.out_dir, "--out");
     request.video = !a->no_video;
     request.images = !a->no_images;
     request.interrupt = &interrupt;

@@ -11,6 +11,7 @@
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
 #include "core/atomic_file.h"
+#include "core/output_dir_lock.h"
 #include "core/output_files.h"
 #include "experiments/sweep/sweep_jobs.h"
 #include "experiments/sweep/sweep_outputs.h"
@@ -76,6 +77,17 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
         a->shard, [](const char* name) -> const char* { return std::getenv(name); });
     const std::filesystem::path out =
         prepareOutputDir(a->out.empty() ? "out/sweep-" + spec.name : a->out, "sweep");
+    // One sweep at a time in the folder: its shards together (each shard once), or the whole
+    // sweep or a merge alone (core/output_dir_lock.h). Each job's `cosim run` locks its own
+    // job folder as well.
+    OutputDirLock sweep_lock, shard_lock;
+    const bool sharded = !shard.whole() && !a->merge_only;
+    sweep_lock.acquire(out, "--out",
+                       sharded ? OutputDirLock::Mode::Shared : OutputDirLock::Mode::Exclusive);
+    if (sharded)
+      shard_lock.acquire(out, "--out", OutputDirLock::Mode::Exclusive,
+                         ".cosim-shard-" + std::to_string(shard.index) + "-of-" +
+                             std::to_string(shard.count) + ".lock");
     const std::vector<SweepJob> jobs = expandSweepJobs(spec, out);
     // A copy of the sweep file beside its results (same text from every shard).
     const std::string text = fileText(spec.file);

@@ -17,7 +17,11 @@ const std::atomic<bool>& installInterruptFlag() {
     struct sigaction sa {};
     sa.sa_handler = onSignal;
     sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, nullptr);
+    // A shell starts background jobs with SIGINT ignored so that Ctrl-C reaches only the
+    // foreground one (POSIX, Shell Command Language 2.11): an inherited SIG_IGN stays.
+    struct sigaction inherited {};
+    if (sigaction(SIGINT, nullptr, &inherited) != 0 || inherited.sa_handler != SIG_IGN)
+      sigaction(SIGINT, &sa, nullptr);
     sigaction(SIGTERM, &sa, nullptr);
     return true;
   }();

@@ -45,4 +45,18 @@ CLI::Validator wholeNumberIn(long lo, long hi) {
       "whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
 }
 
+CLI::Validator seedNumber() {
+  return CLI::Validator(
+      [](std::string& input) -> std::string {
+        const bool digits = !input.empty() && input.size() <= 20 &&
+                            input.find_first_not_of("0123456789") == std::string::npos;
+        errno = 0;
+        if (digits) std::strtoull(input.c_str(), nullptr, 10);
+        if (!digits || errno == ERANGE)
+          return "must be a whole number from 0 to 18446744073709551615, got '" + input + "'";
+        return "";
+      },
+      "whole number in [0, 2^64 - 1]");
+}
+
 }  // namespace cosim::cli

@@ -11,4 +11,8 @@ CLI::Validator numberIn(double lo, double hi);
 // A whole number in [lo, hi].
 CLI::Validator wholeNumberIn(long lo, long hi);
 
+// A random seed: a whole number from 0 to 2^64 - 1 written in decimal digits only. CLI11 itself
+// reads "-1" into an unsigned integer as 2^64 - 1 and "1e23" as whatever the cast makes of it.
+CLI::Validator seedNumber();
+
 }  // namespace cosim::cli

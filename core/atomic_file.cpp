@@ -1,12 +1,14 @@
 #include "core/atomic_file.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
 
+#include "core/input_error.h"
 #include "core/temporary_name.h"
 
 namespace cosim {
@@ -57,9 +59,32 @@ bool flushFolder(const std::filesystem::path& dir) {
   return flushPath(dir, /*folder=*/true);
 }
 
+// Refuses to rename anything over a special file.
+void refuseSpecialTarget(const std::filesystem::path& target) {
+  if (const std::string kind = specialFileKind(target); !kind.empty())
+    throw InputError(target.string(), "", notRegularProblem(kind));
+}
+
 }  // namespace
 
+std::string specialFileKind(const std::filesystem::path& path) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0) return "";
+  if (S_ISFIFO(st.st_mode)) return "a FIFO";
+  if (S_ISCHR(st.st_mode)) return "a character device";
+  if (S_ISBLK(st.st_mode)) return "a block device";
+  if (S_ISSOCK(st.st_mode)) return "a socket";
+  return "";
+}
+
+std::string notRegularProblem(const std::string& kind) {
+  return "is " + kind +
+         ", not a regular file: cosim writes its outputs as new regular files and would replace "
+         "it; name a file instead";
+}
+
 void writeFileAtomically(const std::filesystem::path& path, const std::string& content) {
+  refuseSpecialTarget(path);
   const std::filesystem::path tmp = temporaryNameFor(path, ".tmp");
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) failWriting(path, std::strerror(errno));
@@ -90,6 +115,8 @@ void writeFileAtomically(const std::filesystem::path& path, const std::string& c
 }
 
 void moveIntoPlace(const std::filesystem::path& written, const std::filesystem::path& target) {
+  if (!specialFileKind(target).empty()) removeQuietly(written);
+  refuseSpecialTarget(target);
   std::error_code ec;
   const bool folder = std::filesystem::is_directory(written, ec);
   if (!(folder ? flushFolder(written) : flushPath(written, /*folder=*/false))) {

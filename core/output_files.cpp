@@ -5,6 +5,7 @@
 #include <chrono>
 #include <ctime>
 
+#include "core/atomic_file.h"
 #include "core/input_error.h"
 
 namespace cosim {
@@ -57,6 +58,8 @@ void checkOutputPath(const std::filesystem::path& path, const std::string& optio
   std::error_code ec;
   if (!folder && std::filesystem::is_directory(path, ec))
     throw InputError(path.string(), option, "is a folder; give a file name");
+  if (const std::string kind = specialFileKind(path); !kind.empty())
+    throw InputError(path.string(), option, notRegularProblem(kind));
   if (folder && std::filesystem::exists(path, ec) && !std::filesystem::is_directory(path, ec))
     throw InputError(path.string(), option, "exists and is not a folder");
   const std::filesystem::path parent =

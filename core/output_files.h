@@ -21,7 +21,8 @@ void checkOutputDir(const std::string& dir);
 
 // Checks, before any work, that a file (or, with `folder`, a folder of frames) can be written at
 // `path`: its parent folder exists and is writable, its name fits the file system (255 bytes)
-// and it is not an existing folder (a file), or not an existing file (a folder). Throws
+// and it is not an existing folder (a file), or not an existing file (a folder), nor a FIFO, a
+// device or a socket (core/atomic_file.h would replace it: never done). Throws
 // InputError(path, option, problem).
 void checkOutputPath(const std::filesystem::path& path, const std::string& option,
                      bool folder = false);

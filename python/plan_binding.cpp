@@ -32,6 +32,9 @@ PlanResult plan(const py::object& scenario, const py::object& planner,
                 const py::object& overrides) {
   const std::string path = scenarioPath(scenario);
   const std::vector<std::string> sets = overrideAssignments(overrides);
+  if (!planner.is_none() && !py::isinstance<py::str>(planner))
+    throw py::type_error("planner: a planner name (str) or None is needed, not " +
+                         typeName(planner));
   const std::string planner_name = planner.is_none() ? "" : planner.cast<std::string>();
 
   InterruptGuard guard;

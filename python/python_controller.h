@@ -33,6 +33,8 @@ class PythonController final : public FlightController {
   // cannot unwind mid-step.
   ControlOutput update(const VehicleState& state, const FlatReference& ref, double dt) override;
 
+  // What it calls (for the garbage collector's traversal).
+  const pybind11::function& function() const { return fn_; }
   // The error of the last update, once (nullptr if none).
   std::exception_ptr takeError();
 

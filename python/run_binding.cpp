@@ -3,10 +3,12 @@
 // log in memory.
 #include <pybind11/stl.h>
 
+#include <filesystem>
 #include <iostream>
 #include <optional>
 
 #include "core/input_error.h"
+#include "core/output_dir_lock.h"
 #include "core/output_files.h"
 #include "core/stop_request.h"
 #include "python/bindings.h"
@@ -74,7 +76,7 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
   const std::string path = scenarioPath(scenario);
   const std::vector<std::string> sets = overrideAssignments(overrides);
   std::optional<std::string> out_dir;
-  if (!out.is_none()) out_dir = py::module_::import("os").attr("fspath")(out).cast<std::string>();
+  if (!out.is_none()) out_dir = pathArgument(out, "out");
 
   InterruptGuard guard;
   RunRequest request;
@@ -83,12 +85,19 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
     py::gil_scoped_release release;
     // As `cosim run` does (cli/cmd_run.cpp): the folder loses an earlier run's results first,
     // and is made only once the scenario passed its checks.
+    // The folder is this run's alone until it ends (core/output_dir_lock.h).
+    OutputDirLock lock;
     if (out_dir) {
       checkOutputDir(*out_dir);
+      if (!out_dir->empty() && std::filesystem::is_directory(*out_dir))
+        lock.acquire(*out_dir, "out");
       if (!out_dir->empty()) removeStaleResults(*out_dir, kRunResultNames);
     }
     Scenario s = loadCheckedScenario(path, sets, PlannerUse::Run);
-    if (out_dir) request.out_dir = prepareOutputDir(*out_dir, "run");
+    if (out_dir) {
+      request.out_dir = prepareOutputDir(*out_dir, "run");
+      lock.acquire(request.out_dir, "out");
+    }
     request.video = video;
     request.interrupt = &stopRequestFlag();
     // Warnings as the program prints them; the rest of its progress lines stay unsaid.

@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <stdexcept>
 
 #include "python/bindings.h"
 #include "python/interrupt_guard.h"
@@ -86,38 +87,82 @@ class Simulation {
 
   void setController(const py::object& vehicle, const py::object& fn) {
     const std::size_t v = index(vehicle);
-    if (fn.is_none()) {
-      sim_->setController(v, nullptr);
-      python_controllers_.erase(v);
-      return;
+    std::unique_ptr<PythonController> controller;  // none: the built-in one
+    if (!fn.is_none()) {
+      if (!PyCallable_Check(fn.ptr()))
+        throw py::type_error("set_controller: fn must be callable as fn(state, reference)");
+      controller = std::make_unique<PythonController>(
+          py::reinterpret_borrow<py::function>(fn), [this] { return sim_->time(); },
+          sim_->believedAirframe(v), sim_->vehicleNames()[v]);
     }
-    if (!PyCallable_Check(fn.ptr()))
-      throw py::type_error("set_controller: fn must be callable as fn(state, reference)");
-    auto controller = std::make_unique<PythonController>(
-        py::reinterpret_borrow<py::function>(fn), [this] { return sim_->time(); },
-        sim_->believedAirframe(v), sim_->vehicleNames()[v]);
-    sim_->setController(v, controller.get());
-    python_controllers_[v] = std::move(controller);
+    // Inside a controller callback the running controller must outlive its call, and the
+    // period under way keeps the controllers it began with: the swap waits for its end.
+    if (stepping_)
+      pending_[v] = std::move(controller);
+    else
+      install(v, std::move(controller));
   }
 
   void step(long n) {
+    notStepping("step()");
     notClosed();
     if (n < 0) throw py::value_error("step(n): n must be >= 0 control periods");
     for (long i = 0; i < n && !sim_->done(); ++i) stepOnce();
   }
 
   void stepUntil(double t) {
+    notStepping("step_until()");
     notClosed();
     // Whole control periods: the first control instant at or after t (within rounding).
     while (!sim_->done() && sim_->time() < t - 1e-9) stepOnce();
   }
 
   py::object metrics() const { return jsonValue(sim_->metricsJson().str()); }
-  void close() { sim_->close(); }
+  void close() {
+    notStepping("close()");  // the loop under way would run on freed data
+    sim_->close();
+  }
+
+  // Python's cyclic garbage collector: a controller function that refers to its own Simulation
+  // forms a cycle only the collector can break (custom_type_setup in bindSimulation).
+  int traverse(visitproc visit, void* arg) const {
+    for (const auto& [v, controller] : python_controllers_) Py_VISIT(controller->function().ptr());
+    for (const auto& [v, controller] : pending_)
+      if (controller) Py_VISIT(controller->function().ptr());
+    return 0;
+  }
+  void clear() {
+    pending_.clear();
+    for (const auto& [v, controller] : python_controllers_) sim_->setController(v, nullptr);
+    // Moved out first: dropping a function may run Python code that comes back here.
+    auto dropped = std::move(python_controllers_);
+    python_controllers_.clear();
+  }
 
  private:
   std::size_t index(const py::object& vehicle) const {
     return vehicleIndex(vehicle, sim_->vehicleNames());
+  }
+
+  void notStepping(const char* call) const {
+    if (stepping_)
+      throw std::runtime_error(std::string(call) +
+                               " inside a controller callback: the simulation is in the middle "
+                               "of a control period; call it after step() returns");
+  }
+
+  void install(std::size_t v, std::unique_ptr<PythonController> controller) {
+    sim_->setController(v, controller.get());
+    if (controller)
+      python_controllers_[v] = std::move(controller);
+    else
+      python_controllers_.erase(v);
+  }
+
+  void installPending() {
+    auto pending = std::move(pending_);
+    pending_.clear();
+    for (auto& [v, controller] : pending) install(v, std::move(controller));
   }
 
   void notClosed() const {
@@ -127,19 +172,65 @@ class Simulation {
   // One control period; Ctrl-C and a Python controller's exception surface after it.
   void stepOnce() {
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
-    sim_->stepControl();
+    installPending();
+    {
+      stepping_ = true;
+      struct Done {
+        bool& flag;
+        ~Done() { flag = false; }
+      } done{stepping_};
+      sim_->stepControl();
+    }
+    std::exception_ptr error;
     for (auto& [v, controller] : python_controllers_)
-      if (std::exception_ptr error = controller->takeError()) std::rethrow_exception(error);
+      if (std::exception_ptr e = controller->takeError(); e && !error) error = e;
+    installPending();  // set_controller inside a callback: from the next period
+    if (error) std::rethrow_exception(error);
   }
 
   std::unique_ptr<SteppedSimulation> sim_;
   std::map<std::size_t, std::unique_ptr<PythonController>> python_controllers_;
+  // set_controller calls made inside a callback, installed once the period ends (nullptr: the
+  // built-in controller back).
+  std::map<std::size_t, std::unique_ptr<PythonController>> pending_;
+  bool stepping_ = false;  // a control period is under way (its callbacks are running)
 };
+
+// The collector's hooks for Simulation (pybind11's custom_type_setup). An instance whose
+// __init__ failed holds no Simulation: nothing to visit.
+Simulation* simulationOf(PyObject* self) {
+  auto* inst = reinterpret_cast<py::detail::instance*>(self);
+  const py::detail::value_and_holder vh = inst->get_value_and_holder();
+  return vh.holder_constructed() ? vh.holder<std::unique_ptr<Simulation>>().get() : nullptr;
+}
+
+void enableGarbageCollection(PyHeapTypeObject* heap_type) {
+  PyTypeObject* type = &heap_type->ht_type;
+  type->tp_flags |= Py_TPFLAGS_HAVE_GC;
+  // Untracked before the C++ object goes: its destructor drops Python functions, which may run
+  // the collector, which must not traverse a half-destroyed Simulation.
+  type->tp_dealloc = [](PyObject* self) {
+    PyObject_GC_UnTrack(self);
+    py::detail::pybind11_object_dealloc(self);
+  };
+  type->tp_traverse = [](PyObject* self, visitproc visit, void* arg) {
+#if PY_VERSION_HEX >= 0x03090000
+    Py_VISIT(Py_TYPE(self));  // a heap type's instances own a reference to it
+#endif
+    const Simulation* sim = simulationOf(self);
+    return sim ? sim->traverse(visit, arg) : 0;
+  };
+  type->tp_clear = [](PyObject* self) {
+    if (Simulation* sim = simulationOf(self)) sim->clear();
+    return 0;
+  };
+}
 
 }  // namespace
 
 void bindSimulation(py::module_& m) {
-  py::class_<Simulation>(m, "Simulation", R"(A scenario's flight, stepped from Python.
+  py::class_<Simulation>(m, "Simulation", py::custom_type_setup(enableGarbageCollection),
+                         R"(A scenario's flight, stepped from Python.
 
 Simulation(scenario=None, overrides=None) plans and prepares the flight as cosim.run does (the
 same planner, trajectory, controller, sensors and disturbances) and stops before the first
@@ -181,20 +272,23 @@ state() returns; reference: dict of position, velocity, acceleration (world fram
 from the vehicle's reference trajectory. It returns the 4 rotor thrusts in N (a sequence or an
 array of shape (4,), in the order of airframe()'s rotors), clamped to [min_thrust, max_thrust].
 A wrong shape raises ValueError from step(); so does any exception fn raises (that control
-period keeps the previous command). fn=None puts the built-in controller back.
+period keeps the previous command). fn=None puts the built-in controller back. Called inside a
+controller callback, the change takes effect from the next control period.
 Raises cosim.UnknownVehicleError (a KeyError and a ValueError) for an unknown name.)")
       .def("step", &Simulation::step, py::arg("n") = 1,
            "Advance n control periods (n / control_rate simulated seconds), or until the run "
            "ends (then it does nothing). Ctrl-C raises KeyboardInterrupt after the current "
-           "period; RuntimeError after close().")
+           "period; RuntimeError after close() and inside a controller callback.")
       .def("step_until", &Simulation::stepUntil, py::arg("t"),
            "Advance whole control periods until time >= t (s), or until the run ends. Ctrl-C "
-           "raises KeyboardInterrupt after the current period; RuntimeError after close().")
+           "raises KeyboardInterrupt after the current period; RuntimeError after close() and "
+           "inside a controller callback.")
       .def("metrics", &Simulation::metrics,
            "dict: what metrics.json would hold for what was flown so far (the pipeline's own "
            "evaluation). While the run goes on, end_reason is 'running'.")
       .def("close", &Simulation::close,
-           "End the run and free MuJoCo's data (metrics() still answers). Idempotent.")
+           "End the run and free MuJoCo's data (metrics() still answers). Idempotent. "
+           "RuntimeError inside a controller callback (the period under way needs the data).")
       .def("__enter__", [](py::object self) { return self; })
       .def("__exit__", [](Simulation& s, const py::args&) { s.close(); });
 }

@@ -24,9 +24,12 @@ std::size_t vehicleIndex(const py::handle& vehicle, const std::vector<std::strin
     for (std::size_t v = 0; v < names.size(); ++v)
       if (names[v] == name) return v;
   } else if (py::isinstance<py::int_>(vehicle) && !py::isinstance<py::bool_>(vehicle)) {
-    const long index = vehicle.cast<long>();
-    if (index >= 0 && static_cast<std::size_t>(index) < names.size())
-      return static_cast<std::size_t>(index);
+    const py::int_ index = py::reinterpret_borrow<py::int_>(vehicle);
+    // Compared as Python ints: an index beyond a C long is as unknown as 7.
+    if (index >= py::int_(0) && index < py::int_(names.size())) return index.cast<std::size_t>();
+  } else {
+    throw py::type_error("name: a vehicle name (str) or index (int) is needed, not " +
+                         py::str(py::type::of(vehicle).attr("__name__")).cast<std::string>());
   }
   throw UnknownVehicle(py::repr(vehicle).cast<std::string>(), names);
 }

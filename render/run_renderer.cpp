@@ -307,7 +307,7 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
 
 void RunRenderer::annotate(double t) {
   FrameAnnotations ann(ctx_->context(), ctx_->viewport());
-  std::vector<VehicleState> states;
+  std::vector<StateBoxVehicle> states;
   bool ground = false, flying = false;
   for (std::size_t a = 0; a < log_.vehicles.size(); ++a) {
     const VehicleLog& v = log_.vehicles[a];
@@ -315,7 +315,7 @@ void RunRenderer::annotate(double t) {
     flying = flying || !isGround(a);
     if (v.samples.empty()) continue;
     const std::size_t i = sampleIndexAt(v, t);
-    VehicleState& s = states.emplace_back();
+    StateBoxVehicle& s = states.emplace_back();
     s.name = v.name;
     s.ground = isGround(a);
     s.speed = v.samples[i].vel.norm();

@@ -13,17 +13,17 @@ std::string format(const char* pattern, double value) {
 }
 
 // One line per vehicle: its name, then speed and error.
-StateLine vehicleLine(const VehicleState& v) {
+StateLine vehicleLine(const StateBoxVehicle& v) {
   return {v.name, format("%.2f m/s, ", v.speed) + format("%.3f m", v.error)};
 }
 
 // Two lines for a group of vehicles of one kind ("robot", "quadrotor"): how many are at their
 // goals, and the largest error with whose it is.
-void summarise(const std::vector<const VehicleState*>& group, const std::string& kind,
+void summarise(const std::vector<const StateBoxVehicle*>& group, const std::string& kind,
                std::vector<StateLine>& lines) {
   std::size_t at_goal = 0;
-  const VehicleState* worst = group.front();
-  for (const VehicleState* v : group) {
+  const StateBoxVehicle* worst = group.front();
+  for (const StateBoxVehicle* v : group) {
     at_goal += v->at_goal ? 1 : 0;
     if (v->error > worst->error) worst = v;
   }
@@ -35,7 +35,7 @@ void summarise(const std::vector<const VehicleState*>& group, const std::string&
 
 }  // namespace
 
-std::vector<StateLine> stateBoxLines(double t, const std::vector<VehicleState>& vehicles,
+std::vector<StateLine> stateBoxLines(double t, const std::vector<StateBoxVehicle>& vehicles,
                                      const std::vector<StateLine>& planners,
                                      std::size_t max_lines) {
   std::vector<StateLine> lines;
@@ -45,8 +45,8 @@ std::vector<StateLine> stateBoxLines(double t, const std::vector<VehicleState>& 
     lines.emplace_back(std::string("error to ") + errorReferenceShortName(vehicles[0].reference),
                        format("%.3f m", vehicles[0].error));
   } else if (!vehicles.empty()) {
-    std::vector<const VehicleState*> robots, quadrotors;
-    for (const VehicleState& v : vehicles) (v.ground ? robots : quadrotors).push_back(&v);
+    std::vector<const StateBoxVehicle*> robots, quadrotors;
+    for (const StateBoxVehicle& v : vehicles) (v.ground ? robots : quadrotors).push_back(&v);
     const std::size_t fixed = lines.size() + planners.size();
     const std::size_t budget = max_lines > fixed ? max_lines - fixed : 0;
     bool list_robots = robots.size() <= kListedRobots, list_quadrotors = true;
@@ -64,7 +64,7 @@ std::vector<StateLine> stateBoxLines(double t, const std::vector<VehicleState>& 
     if (((list_robots && !robots.empty()) || (list_quadrotors && !quadrotors.empty())) &&
         needed() <= budget)
       lines.emplace_back("vehicle", "speed, error");
-    for (const VehicleState& v : vehicles)
+    for (const StateBoxVehicle& v : vehicles)
       if (v.ground ? list_robots : list_quadrotors) lines.push_back(vehicleLine(v));
     if (!list_robots && !robots.empty()) summarise(robots, "robot", lines);
     if (!list_quadrotors && !quadrotors.empty()) summarise(quadrotors, "quadrotor", lines);

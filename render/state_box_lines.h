@@ -13,8 +13,8 @@ namespace cosim {
 
 using StateLine = std::pair<std::string, std::string>;  // label, value
 
-// One vehicle at time t.
-struct VehicleState {
+// One vehicle's entry in the box at time t (not the control state, VehicleState).
+struct StateBoxVehicle {
   std::string name;
   bool ground = false;  // a ground robot (else a quadrotor)
   double speed = 0.0;   // m/s
@@ -30,7 +30,7 @@ constexpr std::size_t kListedRobots = 4;
 // run, "quadrotor planner"). max_lines: the most lines the frame has room for; a listing that
 // would exceed it is summarised, and then the column heading dropped and the planners joined
 // on one line ("planners": "cbs / theta_star"); the time and the planners are always shown.
-std::vector<StateLine> stateBoxLines(double t, const std::vector<VehicleState>& vehicles,
+std::vector<StateLine> stateBoxLines(double t, const std::vector<StateBoxVehicle>& vehicles,
                                      const std::vector<StateLine>& planners, std::size_t max_lines);
 
 }  // namespace cosim

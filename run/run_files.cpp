@@ -23,9 +23,21 @@ void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario
   std::filesystem::remove(dir / "index.html", ignored);
 
   writeFileAtomically(dir / "scenario.yaml", scenario.effective_yaml);
+  // The rows of the logs, for cosim render to tell a complete log from one cut at a line
+  // boundary, and how the run ended (only a run that diverged logs numbers that are not finite).
+  long timeseries_rows = 0, path_rows = 0;
+  for (const VehicleLog& v : log.vehicles) {
+    timeseries_rows += static_cast<long>(v.samples.size());
+    path_rows += static_cast<long>(v.planned_path.size());
+  }
   writeFileAtomically(
       dir / "run.json",
-      JsonObject().add("scenario_file", std::filesystem::absolute(scenario.file).string()).str() +
+      JsonObject()
+              .add("scenario_file", std::filesystem::absolute(scenario.file).string())
+              .add("timeseries_rows", timeseries_rows)
+              .add("path_rows", path_rows)
+              .add("end_reason", log.end_reason)
+              .str() +
           "\n");
   writeFileAtomically(dir / "path.csv", pathCsv(log));
   writeFileAtomically(dir / "timeseries.csv", timeseriesCsv(log));

@@ -6,11 +6,12 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
+#include "core/csv_text.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
-#include "core/csv_text.h"
 
 namespace cosim {
 
@@ -176,18 +177,40 @@ VehicleLog& vehicleNamed(RunLog& log, const std::string& name) {
   return log.vehicles.back();
 }
 
-// A sample's time: finite, within the run, never going back for one vehicle (lookups by time
-// are binary searches, and the video's frame count follows the last time).
-double sampleTime(const CsvLogReader& in, const LogBounds& bounds, double previous,
-                  const std::string& who) {
+// A sample's time: finite, within the run, never going back for one vehicle or obstacle
+// (lookups by time are binary searches, and the video's frame count follows the last time).
+// Each logs one row per logged control step, so its times rise strictly: a repeated time is a
+// repeated row. `previous`: its last time (none for its first row); `who`: "vehicle 'uav1'".
+double sampleTime(const CsvLogReader& in, const LogBounds& bounds,
+                  const std::optional<double>& previous, const std::string& who) {
   const double t = in.number("t");
   if (!std::isfinite(t) || t < 0.0 || t > bounds.max_time)
     throw InputError(in.path(), in.place() + ", column t",
                      "time " + std::to_string(t) + " s is outside the run (0 to " +
                          std::to_string(bounds.max_time) + " s)");
-  if (t < previous)
+  if (previous && t < *previous)
     throw InputError(in.path(), in.place() + ", column t", "time goes backwards for " + who);
+  if (previous && t == *previous)
+    throw InputError(in.path(), in.place() + ", column t",
+                     "time " + std::to_string(t) + " s again for " + who +
+                         ": a repeated row (a run logs each instant once)");
   return t;
+}
+
+// A log must hold what run.json says the run wrote (a file cut at a line boundary parses, and
+// is shorter), and at least one row.
+void checkRowCount(const std::string& path, std::size_t rows,
+                   const std::optional<std::size_t>& logged) {
+  if (rows == 0)
+    throw InputError(path, "line 2", "no rows after the header: the log holds no flight");
+  if (logged && rows < *logged)
+    throw InputError(path, "line " + std::to_string(rows + 2),
+                     "the log ends after " + std::to_string(rows) + " rows, but the run wrote " +
+                         std::to_string(*logged) + " (run.json): the file was cut short");
+  if (logged && rows > *logged)
+    throw InputError(path, "line " + std::to_string(*logged + 2),
+                     "more rows than the " + std::to_string(*logged) +
+                         " the run wrote (run.json): the file was added to");
 }
 
 }  // namespace
@@ -256,6 +279,7 @@ void readTimeseriesCsv(const std::string& path, RunLog& log, const LogBounds& bo
                                              "qz", "vx",    "vy",    "vz",    "vehicle"};
   // First the rows per vehicle, so that each vehicle's samples are allocated once (a growing
   // vector holds up to twice its samples while it copies).
+  std::size_t total = 0;
   {
     CsvLogReader count(path, required);
     std::map<std::string, std::size_t> rows;
@@ -271,16 +295,27 @@ void readTimeseriesCsv(const std::string& path, RunLog& log, const LogBounds& bo
             path, count.place(),
             "more vehicles than the scenario has (" + std::to_string(bounds.max_vehicles) + ")");
     }
+    for (const auto& [name, n] : rows) total += n;
+    if (total == 0) checkRowCount(path, total, std::nullopt);
     for (const auto& [name, n] : rows) vehicleNamed(log, name).samples.reserve(n);
   }
   CsvLogReader in(path, required);
   const bool has_ref_vel = in.has("ref_vx"), has_thrust = in.has("thrust3"),
              has_estimate = in.has("est_qz");
   while (in.next()) {
-    const auto f = [&](const char* name) { return in.number(name); };
+    // NaN would make the flown path vanish from the picture; only a run that diverged logs it.
+    const auto f = [&](const char* name) {
+      const double value = in.number(name);
+      if (!std::isfinite(value) && !bounds.non_finite_allowed)
+        throw InputError(
+            path, in.place() + ", column " + name,
+            "not a finite number: '" + in.text(name) + "' (only a run that diverged logs one)");
+      return value;
+    };
     VehicleLog& v = vehicleNamed(log, in.text("vehicle"));
     LogSample s;
-    s.t = sampleTime(in, bounds, v.samples.empty() ? 0.0 : v.samples.back().t,
+    s.t = sampleTime(in, bounds,
+                     v.samples.empty() ? std::nullopt : std::optional<double>(v.samples.back().t),
                      "vehicle '" + v.name + "'");
     s.ref_pos = {f("ref_x"), f("ref_y"), f("ref_z")};
     if (has_ref_vel) s.ref_vel = {f("ref_vx"), f("ref_vy"), f("ref_vz")};
@@ -301,6 +336,7 @@ void readTimeseriesCsv(const std::string& path, RunLog& log, const LogBounds& bo
     }
     v.samples.push_back(s);
   }
+  checkRowCount(path, total, bounds.timeseries_rows);  // after the rows: a bad row is named first
 }
 
 void readPathCsv(const std::string& path, RunLog& log, const LogBounds& bounds) {
@@ -311,7 +347,9 @@ void readPathCsv(const std::string& path, RunLog& log, const LogBounds& bounds) 
     if (++rows > bounds.max_path_points)
       throw InputError(path, in.place(),
                        "more than " + std::to_string(bounds.max_path_points) + " waypoints");
+    if (bounds.path_rows && rows > *bounds.path_rows) break;
     const Eigen::Vector3d p(in.number("x"), in.number("y"), in.number("z"));
+    if (!p.allFinite()) throw InputError(path, in.place(), "a waypoint that is not a finite point");
     if (named)
       vehicleNamed(log, in.text("vehicle")).planned_path.push_back(p);
     else if (!log.vehicles.empty())
@@ -319,6 +357,8 @@ void readPathCsv(const std::string& path, RunLog& log, const LogBounds& bounds) 
     else
       vehicleNamed(log, "").planned_path.push_back(p);
   }
+  // A run without a plan writes a header alone: only run.json's count tells a cut file apart.
+  if (bounds.path_rows && rows != *bounds.path_rows) checkRowCount(path, rows, bounds.path_rows);
 }
 
 void readMovingObstaclesCsv(const std::string& path, RunLog& log, const LogBounds& bounds) {
@@ -345,8 +385,9 @@ void readMovingObstaclesCsv(const std::string& path, RunLog& log, const LogBound
       log.moving_obstacles.emplace_back().name = name;
       it = log.moving_obstacles.end() - 1;
     }
-    it->t.push_back(
-        sampleTime(in, bounds, it->t.empty() ? 0.0 : it->t.back(), "obstacle '" + name + "'"));
+    it->t.push_back(sampleTime(in, bounds,
+                               it->t.empty() ? std::nullopt : std::optional<double>(it->t.back()),
+                               "obstacle '" + name + "'"));
     it->pos.emplace_back(in.number("x"), in.number("y"), in.number("z"));
   }
 }

@@ -5,6 +5,7 @@
 // re-render without re-simulating.
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -30,12 +31,17 @@ struct LogBounds {
   std::size_t max_vehicles = std::numeric_limits<std::size_t>::max();
   std::size_t max_moving_obstacles = std::numeric_limits<std::size_t>::max();
   std::size_t max_path_points = std::numeric_limits<std::size_t>::max();
+  // The rows the run wrote (run.json), where known: a log cut at a line boundary still parses.
+  std::optional<std::size_t> timeseries_rows, path_rows;
+  // NaN or infinity in a row: only a run that diverged (end_reason) logs them.
+  bool non_finite_allowed = false;
 };
 
 // Reads what timeseriesCsv/pathCsv wrote into `log` (samples and planned paths per vehicle, in
 // order of first appearance), streaming: memory holds the samples, never the file. Throws
-// InputError naming the file and line on malformed input, a time outside [0, max_time] or going
-// backwards, and more rows than `bounds` allow.
+// InputError naming the file and line on malformed input, a time outside [0, max_time], going
+// backwards or repeated, a value that is not finite, no rows, and more or fewer rows than
+// `bounds` allow.
 void readTimeseriesCsv(const std::string& path, RunLog& log, const LogBounds& bounds = {});
 void readPathCsv(const std::string& path, RunLog& log, const LogBounds& bounds = {});
 // Appends the obstacles of moving_obstacles.csv to log.moving_obstacles (in order of first

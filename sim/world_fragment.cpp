@@ -1,6 +1,8 @@
 #include "sim/world_fragment.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -22,6 +24,14 @@ constexpr std::uintmax_t kMaxAssetFileBytes = 32u << 20;  // one mesh, height fi
 const char* const kAllowedSections[] = {"asset", "default", "worldbody", "contact"};
 const char* const kFileAttributes[] = {"file",     "fileright", "fileleft", "fileup",
                                        "filedown", "filefront", "fileback"};
+// Attributes whose value is a list of numbers (MJCF's geometry, frames, inertia, materials),
+// besides the lengths pos, size, fromto and scale.
+const char* const kNumericAttributes[] = {
+    "quat",      "axisangle", "euler",     "xyaxes",      "zaxis",       "mass",    "density",
+    "friction",  "margin",    "gap",       "solref",      "solimp",      "rgba",    "range",
+    "damping",   "stiffness", "armature",  "diaginertia", "fullinertia", "refquat", "refpos",
+    "texrepeat", "specular",  "shininess", "reflectance", "emission",    "rgb1",    "rgb2",
+    "markrgb",   "random",    "axis",      "dir",         "width"};
 
 std::string at(const XMLElement* e) {
   return "line " + std::to_string(e->GetLineNum()) + ", <" + e->Name() + ">";
@@ -57,13 +67,14 @@ class FragmentChecker {
       fail(
           section,
           "<" + name + "> is not allowed in a world fragment (asset, default, worldbody, contact)");
-    // Every element below, without recursion (tinyxml2 bounds the depth at 100 anyway).
+    // Every element below, in document order (the budget is passed at the element that a
+    // reader of the file would count to), without recursion (tinyxml2 bounds the depth at 100).
     std::vector<XMLElement*> open = {section};
     while (!open.empty()) {
       XMLElement* e = open.back();
       open.pop_back();
       checkElement(e);
-      for (XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+      for (XMLElement* c = e->LastChildElement(); c; c = c->PreviousSiblingElement())
         open.push_back(c);
     }
   }
@@ -89,13 +100,75 @@ class FragmentChecker {
     if (name == "include") fail(e, "a world fragment may not include further files");
     if (name == "composite")
       fail(e, "composite objects are not allowed in a world fragment (they generate bodies)");
+    checkNumbers(e);
+    long file_samples = 0;  // samples or texels the element's files hold
     for (const char* attr : kFileAttributes)
-      if (const char* f = e->Attribute(attr)) resolveFile(e, attr, f);
-    if (name == "hfield")
-      checkSize(e, attribute(e, "nrow"), attribute(e, "ncol"), kMaxHeightFieldSamples,
-                "height field");
-    if (name == "texture")
-      checkSize(e, attribute(e, "width"), attribute(e, "height"), kMaxTexturePixels, "texture");
+      if (const char* f = e->Attribute(attr)) file_samples += resolveFile(e, attr, f);
+    if (name == "hfield") {
+      const long rows = attribute(e, "nrow"), cols = attribute(e, "ncol");
+      checkSize(e, rows, cols, kMaxHeightFieldSamples, "height field");
+      // MuJoCo reads the samples from the file when there is one, else allocates nrow x ncol.
+      spend(e, (e->Attribute("file") ? file_samples : rows * cols) * kBytesPerHeightFieldSample);
+    }
+    if (name == "texture") {
+      const long width = attribute(e, "width"), height = attribute(e, "height");
+      checkSize(e, width, height, kMaxTexturePixels, "texture");
+      spend(e, textureTexels(e, width, height, file_samples) * kBytesPerTexel);
+    }
+    if (name == "mesh" && e->Attribute("file")) spend(e, mesh_file_bytes_);
+  }
+
+  // The texels MuJoCo makes of a <texture>. A cube or skybox has six faces: built in, each is
+  // width x width (MuJoCo's convention for them; height, if larger, is counted instead to stay
+  // on the safe side); from one image without a gridsize, the image is every face.
+  long textureTexels(const XMLElement* e, long width, long height, long file_texels) const {
+    const char* type = e->Attribute("type");
+    const bool cube = type && (std::strcmp(type, "cube") == 0 || std::strcmp(type, "skybox") == 0);
+    bool from_files = false;
+    for (const char* attr : kFileAttributes) from_files = from_files || e->Attribute(attr);
+    if (!from_files) return cube ? 6 * width * std::max(width, height) : width * height;
+    const bool one_image = e->Attribute("file") && !e->Attribute("gridsize");
+    return cube && one_image ? 6 * file_texels : file_texels;
+  }
+
+  // Adds what `e` costs to the fragment's total; refused once the total passes the budget.
+  void spend(const XMLElement* e, long bytes) {
+    spent_ += bytes;
+    if (spent_ > kFragmentMemoryBudget)
+      fail(e, "the fragment's height fields, textures and meshes need about " +
+                  std::to_string(spent_ >> 20) + " MB up to here (this <" + e->Name() + "> " +
+                  std::to_string(bytes >> 20) + " MB), more than the " +
+                  std::to_string(kFragmentMemoryBudget >> 20) +
+                  " MB a world fragment may use; make them smaller or fewer");
+  }
+
+  // Every number of a numeric attribute is finite, and positions and sizes are within the
+  // world's scale: MuJoCo's compiler passes NaN sizes, and the simulation diverges on 1e308.
+  void checkNumbers(const XMLElement* e) const {
+    for (const tinyxml2::XMLAttribute* a = e->FirstAttribute(); a; a = a->Next()) {
+      const std::string attr = a->Name();
+      const bool length = attr == "pos" || attr == "size" || attr == "fromto" || attr == "scale";
+      bool numeric = length;
+      for (const char* n : kNumericAttributes) numeric = numeric || attr == n;
+      if (!numeric) continue;
+      const std::string place = at(e) + ", attribute " + attr;
+      const char* p = a->Value();
+      for (;;) {
+        while (*p == ' ' || *p == '\t' || *p == '\n' || *p == '\r') ++p;
+        if (*p == '\0') break;
+        char* end = nullptr;
+        const double v = std::strtod(p, &end);
+        const std::string token(p, end > p ? end : p + std::strcspn(p, " \t\n\r"));
+        if (end == p || !std::isfinite(v))
+          throw InputError(file_, place, "'" + token + "' is not a finite number");
+        if (length && std::abs(v) > kMaxFragmentCoordinate)
+          throw InputError(file_, place,
+                           token + " m is beyond the world's scale (at most " +
+                               std::to_string(static_cast<long>(kMaxFragmentCoordinate)) +
+                               " m from the origin)");
+        p = end;
+      }
+    }
   }
 
   // rows x cols within [0, limit], without overflowing.
@@ -108,7 +181,9 @@ class FragmentChecker {
 
   // A file named by the fragment: relative to the fragment's folder, a regular file of bounded
   // size, and (for height fields and textures) of bounded dimensions. Rewritten as absolute.
-  void resolveFile(XMLElement* e, const char* attr, const std::string& written) {
+  // Returns the samples (height field) or texels (texture) it holds; a mesh's bytes are kept in
+  // mesh_file_bytes_ (at least that much of it stays in memory).
+  long resolveFile(XMLElement* e, const char* attr, const std::string& written) {
     std::filesystem::path p(written);
     if (p.is_relative()) p = dir_ / p;
     const std::string where = at(e) + " " + attr + "=\"" + written + "\"";
@@ -119,11 +194,16 @@ class FragmentChecker {
       throw InputError(file_, where, err.problem() + " (" + p.string() + ")");
     }
     const std::string name = e->Name();
+    long samples = 0;
+    if (name == "mesh") mesh_file_bytes_ = static_cast<long>(bytes.size());
     if (name == "hfield" || name == "texture") {
       long w = 0, h = 0;
       if (const auto size = pngSize(bytes); size[0] > 0) {
         w = size[0];
         h = size[1];
+      } else if (name == "texture") {
+        w = static_cast<long>(bytes.size()) / 3;  // another format: at most a texel per 3 bytes
+        h = 1;
       } else if (name == "hfield" && bytes.size() >= 8) {
         // MuJoCo's own height field format: int32 nrow, int32 ncol, then the floats.
         std::int32_t rows = 0, cols = 0;
@@ -137,13 +217,17 @@ class FragmentChecker {
         throw InputError(file_, where,
                          "the file holds " + std::to_string(w) + " x " + std::to_string(h) +
                              " samples, more than the " + std::to_string(limit) + " allowed");
+      samples = w * h;
     }
     e->SetAttribute(attr, std::filesystem::absolute(p).lexically_normal().c_str());
+    return samples;
   }
 
   std::string file_;
   std::filesystem::path dir_;
   long elements_ = 0;
+  long spent_ = 0;            // bytes the elements so far cost (kFragmentMemoryBudget)
+  long mesh_file_bytes_ = 0;  // of the last mesh file read
 };
 
 // The fragment parsed, or throws InputError.

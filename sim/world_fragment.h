@@ -8,7 +8,10 @@
 // - files it names (meshes, height fields, textures, skins) are relative to the fragment's own
 //   folder, must be regular files of bounded size, and are given to MuJoCo as absolute paths;
 // - what a few bytes could multiply is bounded before MuJoCo allocates it: height field samples,
-//   texture pixels, the number of elements; composite objects (which generate bodies) are refused.
+//   texture pixels, the number of elements, and the memory all of them cost together;
+//   composite objects (which generate bodies) are refused;
+// - numbers are finite, and positions and sizes within the world's scale (NaN sizes passed
+//   MuJoCo's compiler; 1e308 made the simulation diverge).
 #include <tinyxml2.h>
 
 #include <filesystem>
@@ -24,6 +27,25 @@ constexpr long kMaxTexturePixels = 2048L * 2048L;
 // Elements of one fragment (each geom, body, asset...): MuJoCo's compiler and collision phase
 // scale with them (see kMaxGridMapBoxes).
 constexpr long kMaxFragmentElements = 20000;
+
+// The memory a whole fragment may cost a run, counted before MuJoCo allocates anything: its
+// height fields, textures (every face of a cube or skybox, built-in ones too) and mesh files
+// together. 256 MB: the bundled default scenario's run peaks at 189 MB (measured, --no-video),
+// so a run with a fragment stays under half a gigabyte, and a sweep can run one job per core on
+// a machine with 1 GB a core. Limits per element alone let ten textures of the largest size
+// through (2.9 GB), or forty height fields (22.7 GB).
+constexpr long kFragmentMemoryBudget = 256L << 20;
+// Bytes a run holds per height field sample: measured, one 1024 x 1024 height field raised the
+// default scenario's peak by 187 MB, 178 bytes a sample (the renderer keeps two triangles with
+// normals a sample, 144 bytes; the model and the compiler a float each).
+constexpr long kBytesPerHeightFieldSample = 178;
+// Bytes per texel of each face: measured, one 1024 x 1024 cube texture raised the peak by 71 MB,
+// 11.3 bytes a texel of its six faces (RGB in the compiler, in the model, and in OpenGL with its
+// mipmaps).
+constexpr long kBytesPerTexel = 12;
+// How far from the world's origin a fragment's positions and sizes may reach, m: any cosim world
+// fits well inside 10 km, and 1e308 m made the simulation diverge.
+constexpr double kMaxFragmentCoordinate = 1e4;
 
 // Appends the fragment's sections to `mujoco` (the composed world's root), its file references
 // made absolute. Throws InputError(fragment file, "line N, <element>", problem).

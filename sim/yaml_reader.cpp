@@ -124,6 +124,11 @@ std::vector<PathStep> parseOverridePath(const std::string& path, const std::stri
           digits.find_first_not_of("0123456789") != std::string::npos ||
           (close + 1 < part.size() && part[close + 1] != '['))
         throw bad("'" + part + "': a list element is written name[N], N a whole number from 0");
+      // The key must read as the loader's own ("vehicles[0]"), or a later error about the value
+      // could not be traced back to this assignment.
+      if (digits.size() > 1 && digits[0] == '0')
+        throw bad("'" + part + "': write the index without leading zeros (" + shown + "[" +
+                  std::to_string(std::stoul(digits)) + "])");
       shown += "[" + digits + "]";
       steps.push_back({"", std::stoul(digits), shown});
       at = close + 1 < part.size() ? close + 1 : std::string::npos;

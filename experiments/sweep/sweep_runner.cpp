@@ -98,12 +98,16 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
   SweepRunReport report;
   const auto t0 = Clock::now();
   std::vector<const SweepJob*> pending;
+  // Every finished job's status, an earlier invocation's included: the progress line counts
+  // "done" over both, and so must its "(40 ok)".
+  std::map<std::string, std::size_t> finished_statuses;
   for (const auto& job : jobs) {
     if (!o.shard.owns(job.id)) continue;
     ++report.in_shard;
-    if (sweepJobFinished(sweepJobDir(o.out_dir, job, jobs.size()), job))
+    if (sweepJobFinished(sweepJobDir(o.out_dir, job, jobs.size()), job)) {
       ++report.already_finished;
-    else
+      ++finished_statuses[readJobResult(sweepJobDir(o.out_dir, job, jobs.size()))->status];
+    } else
       pending.push_back(&job);
   }
   const std::string tag = o.shard.whole() ? std::string("sweep")
@@ -163,6 +167,7 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
           writeJobResult(r.dir, res);
           ++report.ran;
           ++report.statuses[res.status];
+          ++finished_statuses[res.status];
           if (o.progress) {
             if (res.status != "ok" && res.status != "failed")
               std::cerr << tag << ": job " << sweepJobDirName(r.job->id, jobs.size()) << " ("
@@ -173,7 +178,7 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
             const double per_job = elapsed / static_cast<double>(report.ran);
             const std::size_t left = report.in_shard - done;
             std::string counts;
-            for (const auto& [name, n] : report.statuses)
+            for (const auto& [name, n] : finished_statuses)
               counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + name;
             char rate[64];
             std::snprintf(rate, sizeof rate, "%.1f jobs/min", 60.0 / per_job);

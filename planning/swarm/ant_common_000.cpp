@@ -13,7 +13,7 @@ constexpr int kDx[8] = {1, 1, 0, -1, -1, -1, 0, 1};
 constexpr int kDy[8] = {0, 1, 1, 1, 0, -1, -1, -1};
 }  // namespace
 
-AntGrid::AntGrid(const OccupancyGrid& grid, int layer, bool conditional_diagonal)
+AntGridView::AntGridView(const OccupancyGrid& grid, int layer, bool conditional_diagonal)
     : nx_(grid.nx()),
       ny_(grid.ny()),
       layer_(layer),
@@ -23,7 +23,7 @@ AntGrid::AntGrid(const OccupancyGrid& grid, int layer, bool conditional_diagonal
     for (int x = 0; x < nx_; ++x) blocked_[index(x, y)] = grid.blocked(x, y, layer) ? 1 : 0;
 }
 
-int AntGrid::neighbours(int i, std::array<int, 8>& out) const {
+int AntGridView::neighbours(int i, std::array<int, 8>& out) const {
   const int cx = x(i), cy = y(i);
   int n = 0;
   for (int d = 0; d < 8; ++d) {
@@ -37,7 +37,7 @@ int AntGrid::neighbours(int i, std::array<int, 8>& out) const {
   return n;
 }
 
-bool AntGrid::adjacent(int a, int b) const {
+bool AntGridView::adjacent(int a, int b) const {
   const int dx = x(b) - x(a), dy = y(b) - y(a);
   if (std::abs(dx) > 1 || std::abs(dy) > 1 || (dx == 0 && dy == 0) || blocked_[b]) return false;
   if (conditional_diagonal_ && dx != 0 && dy != 0)
@@ -45,26 +45,26 @@ bool AntGrid::adjacent(int a, int b) const {
   return true;
 }
 
-double AntGrid::distance(int a, int b) const {
+double AntGridView::distance(int a, int b) const {
   const double dx = x(a) - x(b), dy = y(a) - y(b);
   return std::sqrt(dx * dx + dy * dy);
 }
 
-double AntGrid::pathLength(const std::vector<int>& path) const {
+double AntGridView::pathLength(const std::vector<int>& path) const {
   double total = 0.0;
   for (std::size_t i = 1; i < path.size(); ++i) total += stepLength(path[i - 1], path[i]);
   return total;
 }
 
-std::vector<Cell> AntGrid::toCells(const std::vector<int>& path) const {
+std::vector<Cell> AntGridView::toCells(const std::vector<int>& path) const {
   std::vector<Cell> cells;
   cells.reserve(path.size());
   for (int i : path) cells.push_back(cell(i));
   return cells;
 }
 
-std::optional<AntGrid> antGridForQuery(const GridQuery& query, bool conditional_diagonal,
-                                       GridPlanResult& result) {
+std::optional<AntGridView> antGridForQuery(const GridQuery& query, bool conditional_diagonal,
+                                           GridPlanResult& result) {
   const OccupancyGrid& g = *query.grid;
   if (query.start.z != query.goal.z) {
     // In metres, as the user gave them: grid layers are an internal detail.
@@ -91,7 +91,7 @@ std::optional<AntGrid> antGridForQuery(const GridQuery& query, bool conditional_
     result.cells = {query.start};
     return std::nullopt;
   }
-  return AntGrid(g, query.start.z, conditional_diagonal);
+  return AntGridView(g, query.start.z, conditional_diagonal);
 }
 
 void AntPathProcessing::removeCycles(std::vector<int>& path) {
@@ -177,7 +177,7 @@ void AntPathProcessing::smoothWide(std::vector<int>& path, int range) {
     for (std::size_t j = last; j > i + 1; --j) {
       const double dx = std::abs(grid_.x(path[j]) - grid_.x(path[i])),
                    dy = std::abs(grid_.y(path[j]) - grid_.y(path[i]));
-      const double octile = std::max(dx, dy) + (AntGrid::kSqrt2 - 1.0) * std::min(dx, dy);
+      const double octile = std::max(dx, dy) + (AntGridView::kSqrt2 - 1.0) * std::min(dx, dy);
       if (octile >= walked[j] - walked[i] - 1e-9) continue;  // already as short as it gets
       if (octilePath(path[i], path[j], true, out) || octilePath(path[i], path[j], false, out)) {
         next = j;

@@ -14,11 +14,11 @@ namespace cosim {
 // A 2D view of an OccupancyGrid for the ant planners. They operate in 2D, as the seed does: on a
 // 3D grid (a UAV scenario voxelised by GridWorldPlanner) they search the layer that holds both
 // start and goal; start and goal on different layers is an error ("2D planner ...").
-class AntGrid {
+class AntGridView {
  public:
   // conditional_diagonal: a diagonal step needs both orthogonal side cells free (the seed's
   // "podmíněný diagonální pohyb", original MSAC); false: only the target cell must be free.
-  AntGrid(const OccupancyGrid& grid, int layer, bool conditional_diagonal);
+  AntGridView(const OccupancyGrid& grid, int layer, bool conditional_diagonal);
 
   int nx() const { return nx_; }
   int ny() const { return ny_; }
@@ -52,14 +52,15 @@ class AntGrid {
 // The common start of an ant planner's query: start and goal on one layer, neither blocked, and
 // the trivial query start == goal. Returns the grid to search, or nullopt when `result` is
 // already final (a failure with its message, or the one-cell path).
-std::optional<AntGrid> antGridForQuery(const GridQuery& query, bool conditional_diagonal,
-                                       GridPlanResult& result);
+std::optional<AntGridView> antGridForQuery(const GridQuery& query, bool conditional_diagonal,
+                                           GridPlanResult& result);
 
 // Seed 000 §4.3.3 path processing. `scratch` is a per-cell array that must hold -1 everywhere on
 // entry; it is restored to -1 on exit (so a planner allocates it once per query).
 class AntPathProcessing {
  public:
-  explicit AntPathProcessing(const AntGrid& grid) : grid_(grid), position_(grid.cellCount(), -1) {}
+  explicit AntPathProcessing(const AntGridView& grid)
+      : grid_(grid), position_(grid.cellCount(), -1) {}
   // Cuts every loop: when a cell recurs, everything between its two visits goes.
   void removeCycles(std::vector<int>& path);
   // Light smoothing: walking from the start, if a node has several later path nodes among its
@@ -78,7 +79,7 @@ class AntPathProcessing {
   // diagonal_first); false, leaving `out` as it was, if a cell or move is blocked.
   bool octilePath(int a, int b, bool diagonal_first, std::vector<int>& out) const;
 
-  const AntGrid& grid_;
+  const AntGridView& grid_;
   std::vector<int> position_;  // index of a cell in the path being processed, or -1
 };
 

@@ -15,7 +15,7 @@ namespace {
 // One MSAC search (seed 000 §2.3 steps 1-7 with the §4.3 modifications).
 class MsacSearch {
  public:
-  MsacSearch(const MsacParams& p, const AntGrid& grid, int start, int goal, std::uint64_t seed)
+  MsacSearch(const MsacParams& p, const AntGridView& grid, int start, int goal, std::uint64_t seed)
       : p_(p),
         grid_(grid),
         start_(start),
@@ -30,7 +30,7 @@ class MsacSearch {
     // No path is shorter than the obstacle-free distance of the move set (octile).
     const double dx = std::abs(grid.x(start) - grid.x(goal)),
                  dy = std::abs(grid.y(start) - grid.y(goal));
-    lower_bound_ = std::max(dx, dy) + (AntGrid::kSqrt2 - 1.0) * std::min(dx, dy);
+    lower_bound_ = std::max(dx, dy) + (AntGridView::kSqrt2 - 1.0) * std::min(dx, dy);
   }
 
   // Runs up to MAX iterations; returns the best path (empty if none).
@@ -243,7 +243,7 @@ class MsacSearch {
   }
 
   const MsacParams& p_;
-  const AntGrid& grid_;
+  const AntGridView& grid_;
   const int start_, goal_, m_;
   std::mt19937_64 rng_;
   std::vector<unsigned char> tabu_, dead_;
@@ -269,9 +269,10 @@ GridPlanResult Msac::solveGrid(const GridQuery& query) {
     result.status = PlannerStatus::InvalidProblem;
     return result;
   }
-  const std::optional<AntGrid> ant_grid = antGridForQuery(query, p_.conditional_diagonal, result);
+  const std::optional<AntGridView> ant_grid =
+      antGridForQuery(query, p_.conditional_diagonal, result);
   if (!ant_grid) return result;  // rejected, or start == goal
-  const AntGrid& grid = *ant_grid;
+  const AntGridView& grid = *ant_grid;
   const int start = grid.index(query.start), goal = grid.index(query.goal);
   const int n = std::max(grid.nx(), grid.ny());
   const int s_max = p_.s_max > 0 ? p_.s_max : std::max(1, n * n / 2);

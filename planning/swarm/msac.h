@@ -19,7 +19,7 @@ struct MsacParams {
   // > 1: also the wider-range smoothing over this many path nodes (AntPathProcessing::
   // smoothWide; the author's proposed extension); 1: the seed's light smoothing only.
   int smoothing_range = 1;
-  bool conditional_diagonal = true;  // see AntGrid
+  bool conditional_diagonal = true;  // see AntGridView
   // Tabu table encoding of §4.3.1: 1 explored yes/no (meetings are looked up in every path of
   // the other group), 2 which group explored a cell, 3 group and ant in one uint8 (final).
   int tabu_version = 3;

@@ -16,7 +16,7 @@ constexpr long long kNever = std::numeric_limits<long long>::min() / 2;
 
 // True if goal can be reached from start at all: random walks would otherwise spend their whole
 // budget before reporting "no path". A flood fill costs one pass over the grid.
-bool reachable(const AntGrid& grid, int start, int goal) {
+bool reachable(const AntGridView& grid, int start, int goal) {
   std::vector<unsigned char> seen(grid.cellCount(), 0);
   std::vector<int> stack{start};
   seen[start] = 1;
@@ -37,7 +37,7 @@ bool reachable(const AntGrid& grid, int start, int goal) {
 
 class SacoColony {
  public:
-  SacoColony(const SacoParams& p, const AntGrid& grid, int start, int goal, std::uint64_t seed)
+  SacoColony(const SacoParams& p, const AntGridView& grid, int start, int goal, std::uint64_t seed)
       : p_(p),
         grid_(grid),
         start_(start),
@@ -141,7 +141,7 @@ class SacoColony {
   }
 
   const SacoParams& p_;
-  const AntGrid& grid_;
+  const AntGridView& grid_;
   const int start_, goal_;
   std::mt19937_64 rng_;
   std::vector<double> tau_;
@@ -157,9 +157,10 @@ class SacoColony {
 GridPlanResult Saco::solveGrid(const GridQuery& query) {
   const StopToken deadline(query.time_limit_s);
   GridPlanResult result;
-  const std::optional<AntGrid> ant_grid = antGridForQuery(query, p_.conditional_diagonal, result);
+  const std::optional<AntGridView> ant_grid =
+      antGridForQuery(query, p_.conditional_diagonal, result);
   if (!ant_grid) return result;  // rejected, or start == goal
-  const AntGrid& grid = *ant_grid;
+  const AntGridView& grid = *ant_grid;
   const int start = grid.index(query.start), goal = grid.index(query.goal);
   if (!reachable(grid, start, goal)) {
     result.message = "goal is not reachable from the start";
@@ -169,7 +170,7 @@ GridPlanResult Saco::solveGrid(const GridQuery& query) {
   }
   const double dx = std::abs(grid.x(start) - grid.x(goal)),
                dy = std::abs(grid.y(start) - grid.y(goal));
-  const double octile = std::max(dx, dy) + (AntGrid::kSqrt2 - 1.0) * std::min(dx, dy);
+  const double octile = std::max(dx, dy) + (AntGridView::kSqrt2 - 1.0) * std::min(dx, dy);
   double good_enough = p_.sufficient_length;
   if (p_.sufficient_ratio > 0.0) good_enough = std::max(good_enough, p_.sufficient_ratio * octile);
 

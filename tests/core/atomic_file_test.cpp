@@ -1,8 +1,10 @@
 // Atomic writes: the target has the old content or the new, never a part, and no temporary file
-// is left beside it.
+// is left beside it; a FIFO or a device is never replaced.
 #include "core/atomic_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/input_error.h"
 #include "core/temporary_name.h"
 
 using namespace cosim;
@@ -109,5 +112,37 @@ TEST(AtomicFile, MoveIntoPlaceThatFailsRemovesWhatWasWritten) {
     EXPECT_NE(std::string(e.what()).find(target.string()), std::string::npos) << e.what();
   }
   EXPECT_TRUE(entries(dir).empty());
+  fs::remove_all(dir);
+}
+
+// The rename would put a regular file in place of a FIFO or a device (as root it replaced the
+// machine's /dev/null): such a target is refused, untouched, with nothing left beside it.
+TEST(AtomicFile, AFifoOrADeviceIsNeverReplaced) {
+  const fs::path dir = freshDir("special");
+  const fs::path fifo = dir / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  try {
+    writeFileAtomically(fifo, "data");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              fifo.string() +
+                  ": is a FIFO, not a regular file: cosim writes its outputs as new "
+                  "regular files and would replace it; name a file instead");
+  }
+  std::ofstream(dir / ".frames.part") << "frame";
+  EXPECT_THROW(moveIntoPlace(dir / ".frames.part", fifo), InputError);
+  EXPECT_TRUE(fs::is_fifo(fs::symlink_status(fifo)));
+  EXPECT_EQ(entries(dir), std::vector<std::string>{"pipe"});  // no temporary file beside it
+  EXPECT_EQ(specialFileKind(fifo), "a FIFO");
+  EXPECT_EQ(specialFileKind(dir), "");
+  EXPECT_EQ(specialFileKind(dir / "missing"), "");
+  // A character device of our own like /dev/null (the real one is never written to), where
+  // this process may make one (root with CAP_MKNOD).
+  const fs::path device = dir / "null";
+  if (::mknod(device.c_str(), S_IFCHR | 0666, makedev(1, 3)) == 0) {
+    EXPECT_THROW(writeFileAtomically(device, "data"), InputError);
+    EXPECT_TRUE(fs::is_character_file(fs::symlink_status(device)));
+  }
   fs::remove_all(dir);
 }

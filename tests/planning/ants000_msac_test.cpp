@@ -36,7 +36,7 @@ OccupancyGrid freeGrid(int n) {
 
 TEST(Ants000PathProcessing, CycleRemovalCutsEveryLoop) {
   const OccupancyGrid g = freeGrid(10);
-  const AntGrid grid(g, 0, false);
+  const AntGridView grid(g, 0, false);
   AntPathProcessing processing(grid);
   // 0,0 -> 1,0 -> 2,0 -> 2,1 -> 1,0 (back) -> 1,1 -> 2,1 (back again) -> 3,1
   std::vector<int> path = {grid.index(0, 0), grid.index(1, 0), grid.index(2, 0), grid.index(2, 1),
@@ -49,7 +49,7 @@ TEST(Ants000PathProcessing, CycleRemovalCutsEveryLoop) {
 
 TEST(Ants000PathProcessing, LightSmoothingKeepsTheLatestNeighbour) {
   const OccupancyGrid g = freeGrid(10);
-  const AntGrid grid(g, 0, false);
+  const AntGridView grid(g, 0, false);
   AntPathProcessing processing(grid);
   // A staircase 0,0 -> 1,0 -> 1,1 -> 2,1 -> 2,2 becomes the diagonal 0,0 -> 1,1 -> 2,2.
   std::vector<int> path = {grid.index(0, 0), grid.index(1, 0), grid.index(1, 1), grid.index(2, 1),
@@ -63,7 +63,7 @@ TEST(Ants000PathProcessing, LightSmoothingKeepsTheLatestNeighbour) {
 TEST(Ants000PathProcessing, ConditionalDiagonalForbidsCuttingACorner) {
   OccupancyGrid g = freeGrid(4);
   g.setBlocked(1, 0, 0, true);
-  const AntGrid conditional(g, 0, true), free_diagonal(g, 0, false);
+  const AntGridView conditional(g, 0, true), free_diagonal(g, 0, false);
   EXPECT_FALSE(conditional.adjacent(conditional.index(0, 0), conditional.index(1, 1)));
   EXPECT_TRUE(free_diagonal.adjacent(free_diagonal.index(0, 0), free_diagonal.index(1, 1)));
 }
@@ -202,7 +202,7 @@ TEST(Ants000Registry, MsacSacoSacodmAreGridPlannersWithTheSeedsParameterNames) {
 // (it only looks one cell around each node) becomes the straight octile path.
 TEST(Ants000PathProcessing, WideSmoothingStraightensADetourLightSmoothingKeeps) {
   const OccupancyGrid g = freeGrid(12);
-  const AntGrid grid(g, 0, true);
+  const AntGridView grid(g, 0, true);
   AntPathProcessing processing(grid);
   // (0,0) east to (4,0), up to (4,3), west back to (1,3), then on to (8,3): a bump.
   std::vector<int> path;
@@ -223,7 +223,7 @@ TEST(Ants000PathProcessing, WideSmoothingStraightensADetourLightSmoothingKeeps) 
 TEST(Ants000PathProcessing, WideSmoothingNeverCutsThroughAnObstacle) {
   OccupancyGrid g = freeGrid(12);
   for (int y = 0; y <= 5; ++y) g.setBlocked(5, y, 0, true);  // wall the path must go round
-  const AntGrid grid(g, 0, true);
+  const AntGridView grid(g, 0, true);
   AntPathProcessing processing(grid);
   std::vector<int> path;
   for (int y = 0; y <= 6; ++y) path.push_back(grid.index(3, y));

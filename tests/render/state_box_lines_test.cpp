@@ -7,10 +7,10 @@ using namespace cosim;
 
 namespace {
 
-std::vector<VehicleState> mixedTeam() {
-  std::vector<VehicleState> v;
+std::vector<StateBoxVehicle> mixedTeam() {
+  std::vector<StateBoxVehicle> v;
   for (int i = 0; i < 8; ++i) {
-    VehicleState r;
+    StateBoxVehicle r;
     r.name = "r";  // appended: GCC 12's -Wrestrict misfires on "r" + std::to_string
     r.name += std::to_string(i);
     r.ground = true;
@@ -21,7 +21,7 @@ std::vector<VehicleState> mixedTeam() {
     v.push_back(r);
   }
   for (const char* name : {"uav1", "uav2"}) {
-    VehicleState q;
+    StateBoxVehicle q;
     q.name = name;
     q.speed = 1.42;
     q.error = 0.0006;
@@ -36,7 +36,7 @@ const std::vector<StateLine> kMixedPlanners = {{"robot planner", "cbs"},
 }  // namespace
 
 TEST(StateBoxLines, SingleVehicleShowsSpeedAndErrorNamedByItsReference) {
-  VehicleState v;
+  StateBoxVehicle v;
   v.name = "uav1";
   v.speed = 2.345;
   v.error = 0.0114;
@@ -75,9 +75,9 @@ TEST(StateBoxLines, FewRobotsAreListedOneLineEach) {
 }
 
 TEST(StateBoxLines, ManyQuadrotorsAreSummarisedWhenTheyDoNotFit) {
-  std::vector<VehicleState> swarm;
+  std::vector<StateBoxVehicle> swarm;
   for (int i = 0; i < 12; ++i) {
-    VehicleState q;
+    StateBoxVehicle q;
     q.name = "q";
     q.name += std::to_string(i);
     q.error = 0.001 * i;

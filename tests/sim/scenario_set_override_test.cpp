@@ -79,6 +79,10 @@ TEST(ScenarioSetOverride, IndicesThatDoNotExistAreClearErrors) {
   EXPECT_EQ(errorOf({"vehicles[0]x.goal=[1,1,1]"}),
             "command line: --set vehicles[0]x.goal=[1,1,1]: 'vehicles[0]x': a list element is "
             "written name[N], N a whole number from 0");
+  // Read as index 0, a later error about the value could not be placed at this assignment.
+  EXPECT_EQ(errorOf({"vehicles[00].goal=[1,1,1]"}),
+            "command line: --set vehicles[00].goal=[1,1,1]: 'vehicles[00]': write the index "
+            "without leading zeros (vehicles[0])");
   EXPECT_EQ(errorOf({"[0].goal=[1,1,1]"}),
             "command line: --set [0].goal=[1,1,1]: empty key in path '[0].goal'");
 }

@@ -174,4 +174,63 @@ TEST_F(WorldFragment, ErrorsNameTheFragmentOrTheScenarioKeyNotAVehicleModel) {
       << clash;
 }
 
+// Limits per element let ten textures of the largest size through (2.9 GB) or forty height
+// fields (22.7 GB): the fragment as a whole has a budget, counted before MuJoCo allocates.
+TEST_F(WorldFragment, TexturesAndHeightFieldsCountAgainstOneBudgetForTheWholeFragment) {
+  std::string four;  // 1024 x 1024 cube textures, 72 MB each with their six faces: 3 fit
+  for (int i = 0; i < 4; ++i)
+    four += "\n<texture name=\"t" + std::to_string(i) +
+            "\" type=\"cube\" builtin=\"checker\" width=\"1024\" height=\"1024\"/>";
+  write("parts/frag.xml", "<mujoco><asset>" + four + "\n</asset></mujoco>\n");
+  const std::string textures = buildError();
+  EXPECT_NE(textures.find("parts/frag.xml | line 5, <texture> | the fragment's height fields, "
+                          "textures and meshes need about 288 MB"),
+            std::string::npos)
+      << textures;
+  EXPECT_NE(textures.find("more than the 256 MB a world fragment may use"), std::string::npos);
+
+  std::string seven;  // 512 x 512 height fields, 44 MB each: 5 fit, the sixth does not
+  for (int i = 0; i < 7; ++i)
+    seven += "<hfield name=\"h" + std::to_string(i) +
+             "\" nrow=\"512\" ncol=\"512\" size=\"1 1 1 1\"/>\n";
+  write("parts/frag.xml", "<mujoco><asset>\n" + seven + "</asset></mujoco>\n");
+  EXPECT_NE(buildError().find("line 7, <hfield> | the fragment's height fields, textures and "
+                              "meshes need about 267 MB"),
+            std::string::npos)
+      << buildError();
+
+  // Textures and height fields share the budget: 5 fields fit, and 1 texture more does not.
+  write("parts/frag.xml", "<mujoco><asset>\n" + seven.substr(0, seven.size() * 5 / 7) +
+                              "<texture name=\"t\" type=\"cube\" builtin=\"flat\" width=\"1024\" "
+                              "height=\"1024\"/>\n</asset></mujoco>\n");
+  EXPECT_NE(buildError().find("line 7, <texture>"), std::string::npos) << buildError();
+}
+
+TEST_F(WorldFragment, NumbersThatAreNotFiniteOrBeyondTheWorldsScaleAreRefusedWithTheirAttribute) {
+  write("parts/frag.xml",
+        "<mujoco>\n<worldbody>\n<geom type=\"box\" size=\"nan nan nan\" pos=\"10 10 1\"/>\n"
+        "</worldbody></mujoco>\n");
+  EXPECT_EQ(buildError(), (dir_ / "parts/frag.xml").string() +
+                              " | line 3, <geom>, attribute size | 'nan' is not a finite number");
+  write("parts/frag.xml",
+        "<mujoco><worldbody>\n<geom type=\"sphere\" size=\"1e308\" pos=\"10 10 1\"/>\n"
+        "</worldbody></mujoco>\n");
+  EXPECT_NE(buildError().find("line 2, <geom>, attribute size | 1e308 m is beyond the world's "
+                              "scale (at most 10000 m from the origin)"),
+            std::string::npos)
+      << buildError();
+  write("parts/frag.xml",
+        "<mujoco><worldbody><body pos=\"1 1 1\" quat=\"1 0 0 inf\">\n"
+        "<geom type=\"capsule\" size=\"0.1\" fromto=\"0 0 0 -2e4 0 1\"/></body>\n"
+        "</worldbody></mujoco>\n");
+  EXPECT_NE(buildError().find("line 1, <body>, attribute quat | 'inf' is not a finite number"),
+            std::string::npos)
+      << buildError();
+  // Within the scale, finite: built.
+  write("parts/frag.xml",
+        "<mujoco><worldbody><geom type=\"box\" size=\"0.5 0.5 0.5\" pos=\"10 10 1\" "
+        "rgba=\"1 0 0 1\"/></worldbody></mujoco>\n");
+  EXPECT_NO_THROW(WorldModel::build(scenario()));
+}
+
 }  // namespace
