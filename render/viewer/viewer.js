@@ -75,7 +75,7 @@
   var planned = D.vehicles.map(function (x) { return new Float32Array(x.planned); });
   var pathColour = nV === 1 ? [new THREE.Color('#2f6bd8')] : vColour;
   layer('planned', 'planned path', new THREE.LineSegments(S.polylines(planned, pathColour),
-    new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors })), true);
+    new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors })), nV <= 8);
   var refLine = new THREE.LineSegments(S.polylines(R, R.map(function () { return new THREE.Color(0x555a66); })),
     new THREE.LineDashedMaterial({ color: 0x555a66, dashSize: 0.25, gapSize: 0.18 }));
   refLine.computeLineDistances();
@@ -146,15 +146,20 @@
   controls.enableDamping = false;
   function setCamera(kind) {
     T.camera = kind;
-    var ext = hi.clone().sub(lo), far = Math.max(ext.x, ext.y) * 1.15 + ext.z;
-    if (kind === 'orbit') camera.position.set(centre.x - 0.4 * ext.x, centre.y - 0.8 * ext.y - 0.12 * far, lo.z + 0.62 * far);
-    if (kind === 'top') camera.position.set(centre.x, centre.y - 1e-3 * far, lo.z + 1.25 * far);
-    if (kind === 'side') camera.position.set(centre.x, lo.y - 1.2 * Math.max(ext.x, ext.z * 2), centre.z);
-    controls.target.copy(centre);
+    // Far enough that the world's bounding sphere (its height counted half: the floor matters
+    // most) fills the view, looking at a point low in the world.
+    var ext = hi.clone().sub(lo), half = Math.tan(camera.fov * Math.PI / 360);
+    var radius = 0.5 * Math.sqrt(ext.x * ext.x + ext.y * ext.y + 0.25 * ext.z * ext.z);
+    var aim = new THREE.Vector3(centre.x, centre.y, lo.z + 0.2 * ext.z);
+    if (kind === 'orbit') camera.position.copy(aim).addScaledVector(new THREE.Vector3(-0.35, -0.85, 0.8).normalize(), 0.95 * radius / half);
+    if (kind === 'top') camera.position.set(centre.x, centre.y - 1e-3 * radius, hi.z + 0.55 * Math.max(ext.x / camera.aspect, ext.y) / half);
+    if (kind === 'side') camera.position.set(centre.x, lo.y - 0.55 * Math.max(ext.x / camera.aspect, ext.z) / half, centre.z);
+    controls.target.copy(kind === 'orbit' ? aim : centre);
     if (kind === 'follow') {
-      var p = sample(P, T.follow, T.t, new THREE.Vector3()), r = Math.max(D.vehicles[T.follow].radius * T.scale, 0.05);
+      var p = sample(P, T.follow, T.t, new THREE.Vector3()), r = Math.max(D.vehicles[T.follow].radius * T.scale, 0.2);
       controls.target.copy(p);
-      camera.position.copy(p).add(new THREE.Vector3(-14 * r, -14 * r, 8 * r));
+      camera.position.copy(p).add(new THREE.Vector3(-6 * r, -6 * r, 3.5 * r));
+      lastFollow = p.clone();
     }
     controls.update();
     document.querySelectorAll('#cameras button').forEach(function (b) { b.classList.toggle('on', b.dataset.camera === kind); });

@@ -87,13 +87,20 @@
     $('layers').appendChild(label);
   });
 
-  // viewer.html#t=12.5: paused at 12.5 s.
+  // viewer.html#t=12.5: paused at 12.5 s; also &camera=orbit|follow|top|side and &vehicle=NAME.
   function fromAddress() {
-    var m = /(?:^|[#&])t=([0-9.eE+-]+)/.exec(window.location.hash);
-    if (!m || !isFinite(parseFloat(m[1]))) return false;
-    setPlaying(false);
-    seek(parseFloat(m[1]));
-    return true;
+    var arg = function (key) {
+      var m = new RegExp('(?:^|[#&])' + key + '=([^&]*)').exec(window.location.hash);
+      return m ? decodeURIComponent(m[1]) : null;
+    };
+    var named = D.vehicles.map(function (v) { return v.name; }).indexOf(arg('vehicle'));
+    if (named >= 0) { T.follow = T.selected = named; pick.value = named; }
+    var t = parseFloat(arg('t'));
+    if (isFinite(t)) { setPlaying(false); seek(t); }
+    var cam = arg('camera');
+    if (['orbit', 'follow', 'top', 'side'].indexOf(cam) >= 0) R.setCamera(cam);
+    R.info();
+    return isFinite(t);
   }
   window.addEventListener('hashchange', fromAddress);
 
