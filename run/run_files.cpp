@@ -10,8 +10,8 @@
 namespace cosim {
 
 const std::vector<std::string> kRunResultNames = {
-    "metrics.json", "index.html", "viewer.html", "timeseries.csv", "path.csv", "moving_obstacles.csv",
-    "final.png",    "video*.mp4", "figures",        "frames_*"};
+    "metrics.json",         "index.html", "viewer.html", "timeseries.csv", "path.csv",
+    "moving_obstacles.csv", "final.png",  "video*.mp4",  "figures",        "frames_*"};
 
 void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario,
                       const RunLog& log) {
@@ -48,9 +48,8 @@ RenderedRun renderRunFiles(const WorldModel& world, const Scenario& scenario, co
 std::string writeRunViewerFile(const std::filesystem::path& dir, const WorldModel& world,
                                const Scenario& scenario, const RunLog& log,
                                const std::string& failure) {
-  const std::string status = failure.empty()
-                                 ? "Every vehicle reached its goal without a collision."
-                                 : "The run failed its task: " + failure;
+  const std::string status = failure.empty() ? "Every vehicle reached its goal without a collision."
+                                             : "The run failed its task: " + failure;
   return writeRunViewer(dir, world, scenario, log, runReportTitle(scenario), status);
 }
 
