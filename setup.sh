@@ -18,6 +18,7 @@ PACKAGES=(
   libompl-dev libboost-graph-dev libnanoflann-dev   # peers for the benchmarks, k-d tree
   gnuplot-nox                         # figures
   chromium                            # the HTML report test opens the report headless
+  libjs-three                         # three.js, embedded in every run's viewer.html
   pybind11-dev python3-dev python3-numpy   # the Python module (build/python, `import cosim`)
   python3-pytest python3-matplotlib        # its tests and examples
 )
@@ -42,6 +43,13 @@ case "${1:-build}" in
   *) echo "usage: $0 [run|test|build]" >&2; exit 2 ;;
 esac
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+# The MCAP reference reader (@mcap/core, npm registry) for the export test, once; without npm or
+# the registry the test is skipped, and the setup goes on.
+if [ "${1:-build}" != run ] && command -v npm >/dev/null 2>&1 &&
+   [ ! -d build/node/node_modules/@mcap/core ]; then
+  npm install --prefix build/node --no-audit --no-fund --silent @mcap/core@2 >/dev/null 2>&1 ||
+    echo "setup: could not install @mcap/core from npm (the MCAP reader test will be skipped)"
+fi
 # `run` builds only the program it runs and the Python module (not the test suite); `test` and
 # `build` build everything.
 case "${1:-build}" in

@@ -1,71 +1,16 @@
 // cosim render RUN_DIR: re-render a logged run without simulating it again.
-#include <cmath>
 #include <iostream>
-#include <nlohmann/json.hpp>
-#include <optional>
 
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
+#include "cli/run_folder.h"
 #include "core/input_error.h"
-#include "core/input_file.h"
-#include "core/json_reading.h"
 #include "core/output_files.h"
 #include "render/run_outputs.h"
-#include "sim/run_log_io.h"
 #include "sim/world_model.h"
 
 namespace cosim::cli {
-
-namespace {
-
-std::string readText(const std::filesystem::path& p) {
-  std::error_code ec;
-  if (!std::filesystem::exists(p, ec))
-    throw InputError(p.string(), "", "cannot open (is this a run folder?)");
-  return readInputFile(p.string(), kMaxScenarioFileBytes, "file of a run folder");
-}
-
-// What run.json recorded: the original scenario path (relative paths in the scenario resolve
-// there) and, in runs of this version on, what the logs hold.
-struct RecordedRun {
-  std::string scenario_file;
-  std::optional<std::size_t> timeseries_rows, path_rows;
-  bool diverged = false;
-};
-
-RecordedRun recordedRun(const std::filesystem::path& dir) {
-  const std::string file = (dir / "run.json").string();
-  const nlohmann::ordered_json json = parseJsonText(readText(dir / "run.json"), file);
-  if (!json.is_object() || !json.contains("scenario_file") || !json["scenario_file"].is_string())
-    throw InputError(file, "scenario_file", "missing");
-  RecordedRun r;
-  r.scenario_file = json["scenario_file"].get<std::string>();
-  const auto count = [&](const char* key) -> std::optional<std::size_t> {
-    if (!json.contains(key)) return std::nullopt;
-    if (!json[key].is_number_unsigned()) throw InputError(file, key, "not a row count");
-    return json[key].get<std::size_t>();
-  };
-  r.timeseries_rows = count("timeseries_rows");
-  r.path_rows = count("path_rows");
-  const std::string end = json.value("end_reason", std::string());
-  r.diverged = end == "diverged" || end == "unstable";
-  return r;
-}
-
-// What the run could have logged: the scenario bounds the log it is re-rendered from.
-LogBounds logBoundsFor(const Scenario& s) {
-  LogBounds b;
-  // The last sample may fall a control period after max_time; a second is ample.
-  b.max_time = s.sim.max_time + 1.0;
-  b.max_rows_per_vehicle = static_cast<std::size_t>(std::ceil(b.max_time * s.sim.control_rate)) + 2;
-  b.max_vehicles = s.vehicles.size();
-  b.max_moving_obstacles = s.moving_obstacles.size();
-  b.max_path_points = 20000000;
-  return b;
-}
-
-}  // namespace
 
 void addRenderCommand(CLI::App& app, CommandContext& ctx) {
   auto* cmd = app.add_subcommand(
@@ -106,9 +51,7 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
   cmd->callback([a, &ctx] {
     const std::atomic<bool>& interrupt = installInterruptFlag();
     const std::filesystem::path dir = a->dir;
-    const std::string yaml = readText(dir / "scenario.yaml");
-    const RecordedRun recorded = recordedRun(dir);
-    Scenario s = parseScenario(yaml, recorded.scenario_file);
+    Scenario s = readRunScenario(dir);
     if (!a->camera.empty()) {
       try {
         cameraKind(a->camera);
@@ -133,29 +76,14 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
     if (out.empty()) out = dir / (a->frames ? "frames_" + camera : "video_" + camera + ".mp4");
     const bool one_frame = out.extension() == ".png" && !a->frames;
     checkOutputPath(out, a->out.empty() ? "run folder" : "--out", a->frames);
-    RunLog log;
-    // The time series first: it names the vehicles, and a single vehicle's path.csv has no
-    // vehicle column (its rows belong to the first vehicle).
-    LogBounds bounds = logBoundsFor(s);
-    bounds.timeseries_rows = recorded.timeseries_rows;
-    bounds.path_rows = recorded.path_rows;
-    bounds.non_finite_allowed = recorded.diverged;
-    readTimeseriesCsv((dir / "timeseries.csv").string(), log, bounds);
-    readPathCsv((dir / "path.csv").string(), log, bounds);
-    // Where the moving obstacles were (without it they would stand at their start); runs
-    // logged before the file existed have none.
-    if (!s.moving_obstacles.empty() && std::filesystem::exists(dir / "moving_obstacles.csv"))
-      readMovingObstaclesCsv((dir / "moving_obstacles.csv").string(), log, bounds);
+    RunLog log = readRunLog(dir, s);
     if (interrupt.load()) {
       std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
       ctx.status = 1;
       return;
     }
     const WorldModel world = WorldModel::build(s);  // its off-screen buffer fits the frame size
-    for (std::size_t v = 0; v < log.vehicles.size() && v < s.vehicles.size(); ++v) {
-      log.vehicles[v].goal = s.vehicles[v].goal();
-      log.vehicles[v].radius = world.vehicles()[v].params.radius;
-    }
+    completeRunLog(log, s, world);
     RunRenderer renderer(world, s, log, s.render.width, s.render.height);
     if (one_frame) {
       std::vector<std::uint8_t> rgb;

@@ -19,6 +19,7 @@ void addGridBenchCommand(CLI::App& app, CommandContext& ctx);
 void addMapfCommand(CLI::App& app, CommandContext& ctx);
 void addSweepCommand(CLI::App& app, CommandContext& ctx);
 void addExportMjcfCommand(CLI::App& app, CommandContext& ctx);
+void addExportMcapCommand(CLI::App& app, CommandContext& ctx);
 void addPlanBenchCommand(CLI::App& app, CommandContext& ctx);
 void addCompareRealCommand(CLI::App& app, CommandContext& ctx);
 

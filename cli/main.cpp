@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
   cosim::cli::addMapfCommand(app, ctx);
   cosim::cli::addSweepCommand(app, ctx);
   cosim::cli::addExportMjcfCommand(app, ctx);
+  cosim::cli::addExportMcapCommand(app, ctx);
   cosim::cli::addPlanBenchCommand(app, ctx);
   cosim::cli::addCompareRealCommand(app, ctx);
 

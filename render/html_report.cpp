@@ -135,6 +135,10 @@ void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& r) {
     << htmlEscape(r.title) << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n<h1>"
     << htmlEscape(r.title) << "</h1>\n";
   if (!r.subtitle.empty()) h << "<p class=\"sub\">" << htmlEscape(r.subtitle) << "</p>\n";
+  if (!r.viewer.empty())
+    h << "<p><a href=\"" << attr(r.viewer) << "\">Open the interactive 3D replay ("
+      << htmlEscape(r.viewer)
+      << ")</a>: turn the camera, follow a vehicle, stop at any moment.</p>\n";
   const GroupedMetrics metrics =
       r.metrics_json.empty() ? GroupedMetrics{} : groupMetrics(flattenJson(r.metrics_json));
   if (!metrics.headline.empty()) {

@@ -17,6 +17,7 @@ struct HtmlReport {
   std::vector<std::string>
       figures;  // base paths relative to the report: <base>.png is shown, <base>.svg linked
   std::string metrics_json;  // shown flattened as a key/value table (may be empty)
+  std::string viewer;        // the 3D replay page, linked under the subtitle (may be empty)
 };
 
 // Writes dir/index.html atomically. Throws std::runtime_error if metrics_json is malformed.

@@ -138,14 +138,19 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
   return done;
 }
 
+std::string runReportTitle(const Scenario& scenario) {
+  const std::string planner =
+      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
+  return "cosim run: " + std::filesystem::path(scenario.file).stem().string() + " (" + planner +
+         ", " + scenario.controller_name + " controller)";
+}
+
 void writeRunReport(const std::filesystem::path& dir, const Scenario& scenario,
                     const std::string& metrics_json, const std::string& failure,
                     const RenderedRun& rendered) {
   HtmlReport r;
-  const std::string planner =
-      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
-  r.title = "cosim run: " + std::filesystem::path(scenario.file).stem().string() + " (" + planner +
-            ", " + scenario.controller_name + " controller)";
+  r.title = runReportTitle(scenario);
+  r.viewer = rendered.viewer;
   r.subtitle = failure.empty() ? "Every vehicle reached its goal without a collision."
                                : "The run failed its task: " + failure;
   r.videos = rendered.videos;

@@ -63,6 +63,7 @@ struct RunRenderRequest {
 // Files written, relative to the run folder.
 struct RenderedRun {
   std::string final_image;
+  std::string viewer;  // viewer.html, the 3D replay ("" if it was not written)
   std::vector<std::string> videos;
   std::vector<std::string> figures;  // base names in figures/ (each as .png and .svg)
   bool interrupted = false;          // stopped by the request's interrupt: outputs are missing
@@ -70,6 +71,9 @@ struct RenderedRun {
 
 RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, const RunLog& log,
                              const std::filesystem::path& dir, const RunRenderRequest& request);
+
+// "cosim run: <scenario> (<planner>, <controller> controller)": index.html's and viewer.html's title.
+std::string runReportTitle(const Scenario& scenario);
 
 // dir/index.html: the rendered files and the metrics table. failure: why the run failed its
 // task (empty if it succeeded).

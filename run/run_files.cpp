@@ -3,14 +3,15 @@
 #include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "render/run_outputs.h"
+#include "render/viewer_page.h"
 #include "run/run_pipeline.h"
 #include "sim/run_log_io.h"
 
 namespace cosim {
 
 const std::vector<std::string> kRunResultNames = {
-    "metrics.json", "index.html", "timeseries.csv", "path.csv", "moving_obstacles.csv",
-    "final.png",    "video*.mp4", "figures",        "frames_*",
+    "metrics.json",         "index.html", "viewer.html", "timeseries.csv", "path.csv",
+    "moving_obstacles.csv", "final.png",  "video*.mp4",  "figures",        "frames_*",
     // A comparison with a real flight (cosim compare-real) was of the run this one replaces.
     "compare.*"};
 
@@ -56,6 +57,14 @@ RenderedRun renderRunFiles(const WorldModel& world, const Scenario& scenario, co
     report.progress(what, done, total);
   };
   return renderRunOutputs(world, scenario, log, request.out_dir, r);
+}
+
+std::string writeRunViewerFile(const std::filesystem::path& dir, const WorldModel& world,
+                               const Scenario& scenario, const RunLog& log,
+                               const std::string& failure) {
+  const std::string status = failure.empty() ? "Every vehicle reached its goal without a collision."
+                                             : "The run failed its task: " + failure;
+  return writeRunViewer(dir, world, scenario, log, runReportTitle(scenario), status);
 }
 
 void finishRunFolder(const std::filesystem::path& dir, const Scenario& scenario,

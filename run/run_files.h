@@ -32,6 +32,12 @@ void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario
 RenderedRun renderRunFiles(const WorldModel& world, const Scenario& scenario, const RunLog& log,
                            const RunRequest& request, const RunReporter& report);
 
+// The replay stage: dir/viewer.html (render/viewer_page.h). Returns "" when written, else why
+// not (three.js is missing), for the front end to say once; the run goes on without it.
+std::string writeRunViewerFile(const std::filesystem::path& dir, const WorldModel& world,
+                               const Scenario& scenario, const RunLog& log,
+                               const std::string& failure);
+
 // The finishing marks: index.html (showing `rendered`), then metrics.json. `failure`: why the
 // run failed its task ("" if it did not).
 void finishRunFolder(const std::filesystem::path& dir, const Scenario& scenario,

@@ -26,8 +26,13 @@ bool writeRunFolder(const WorldModel& world, const Scenario& scenario, const Run
     rendered = renderRunFiles(world, scenario, log, request, report);
     if (rendered.interrupted) return false;
   }
-  finishRunFolder(request.out_dir, scenario, summary.metrics_json,
-                  summary.status == 0 ? "" : summary.message, rendered);
+  const std::string failure = summary.status == 0 ? "" : summary.message;
+  const std::string no_viewer = writeRunViewerFile(request.out_dir, world, scenario, log, failure);
+  if (no_viewer.empty())
+    rendered.viewer = "viewer.html";
+  else
+    report.warning("viewer.html was not written: " + no_viewer);
+  finishRunFolder(request.out_dir, scenario, summary.metrics_json, failure, rendered);
   return true;
 }
 

@@ -1,0 +1,87 @@
+#include "render/viewer_page.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "core/atomic_file.h"
+#include "render/viewer_assets.h"
+#include "render/viewer_data.h"
+
+namespace cosim {
+
+namespace {
+
+bool readWhole(const std::filesystem::path& p, std::string& out) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return false;
+  std::ostringstream s;
+  s << in.rdbuf();
+  out = s.str();
+  return static_cast<bool>(in) || in.eof();
+}
+
+// Replaces the one placeholder `key` of the template by `value`.
+void fill(std::string& page, const std::string& key, const std::string& value) {
+  const auto at = page.find(key);
+  if (at != std::string::npos) page.replace(at, key.size(), value);
+}
+
+// Text inside <script> must not close it early: "</" becomes "<\/", the same in JSON strings
+// and in JavaScript string literals.
+std::string scriptSafe(std::string s) {
+  for (auto at = s.find("</"); at != std::string::npos; at = s.find("</", at + 3))
+    s.replace(at, 2, "<\\/");
+  return s;
+}
+
+}  // namespace
+
+std::filesystem::path threeJsDirectory() {
+  if (const char* dir = std::getenv("COSIM_THREE_DIR"); dir && *dir) return dir;
+  return "/usr/share/javascript/three";
+}
+
+ThreeJs loadThreeJs() {
+  ThreeJs t;
+  const std::filesystem::path dir = threeJsDirectory();
+  const std::filesystem::path three = dir / "build" / "three.min.js";
+  const std::filesystem::path orbit = dir / "examples" / "js" / "controls" / "OrbitControls.js";
+  if (!readWhole(three, t.three))
+    t.missing =
+        "three.js not found: " + three.string() + " is missing (Debian package libjs-three)";
+  else if (!readWhole(orbit, t.orbit_controls))
+    t.missing =
+        "three.js not found: " + orbit.string() + " is missing (Debian package libjs-three)";
+  else if (t.three.find("</script") != std::string::npos ||
+           t.orbit_controls.find("</script") != std::string::npos)
+    t.missing = "three.js at " + dir.string() + " contains </script> and cannot be embedded";
+  return t;
+}
+
+std::string viewerPage(const std::string& data_json, const ThreeJs& three) {
+  std::string page = viewerTemplateHtml();
+  // Filled in this order: no value can carry a later placeholder into the page.
+  fill(page, "/*@STYLE@*/", viewerStyle());
+  fill(page, "/*@THREE@*/", three.three);
+  fill(page, "/*@ORBIT_CONTROLS@*/", three.orbit_controls);
+  fill(page, "/*@VIEWER_SCENE@*/", viewerSceneScript());
+  fill(page, "/*@VIEWER@*/", viewerScript());
+  fill(page, "/*@VIEWER_CONTROLS@*/", viewerControlsScript());
+  fill(page, "/*@RUN_DATA@*/", scriptSafe(data_json));
+  return page;
+}
+
+std::string writeRunViewer(const std::filesystem::path& dir, const WorldModel& world,
+                           const Scenario& scenario, const RunLog& log, const std::string& title,
+                           const std::string& status) {
+  const ThreeJs three = loadThreeJs();
+  if (!three.missing.empty()) return three.missing;
+  const nlohmann::json data = viewerData(world, scenario, log, title, status);
+  // Names from the scenario may hold bytes that are not UTF-8: replaced, not fatal.
+  const std::string json = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  writeFileAtomically(dir / "viewer.html", viewerPage(json, three));
+  return "";
+}
+
+}  // namespace cosim
