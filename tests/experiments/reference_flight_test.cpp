@@ -2,8 +2,6 @@
 // planned). Its rmse_m covers exactly the reference's duration (recomputed here from
 // timeseries.csv over [0, duration], as an outside script would), the logged ref_x..ref_z are
 // the reference at each logged time, and a sim.max_time shorter than the reference says so.
-#include "experiments/bench/reference_flight.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +10,8 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "control/piecewise_polynomial_reference.h"
+#include "experiments/bench/reference_flight.h"
 #include "run/run_pipeline.h"
 #include "tests/experiments/cli_test_support.h"
 
