@@ -6,6 +6,7 @@
 
 #include "core/input_error.h"
 #include "core/input_file.h"
+#include "control/piecewise_polynomial_reference.h"
 #include "core/json_reading.h"
 #include "sim/run_log_io.h"
 
@@ -89,6 +90,8 @@ void completeRunLog(RunLog& log, const Scenario& scenario, const WorldModel& wor
   for (std::size_t v = 0; v < log.vehicles.size() && v < scenario.vehicles.size(); ++v) {
     log.vehicles[v].goal = scenario.vehicles[v].goal();
     log.vehicles[v].radius = world.vehicles()[v].params.radius;
+    if (scenario.vehicles[v].reference)  // its tracking error covers the reference's duration
+      log.vehicles[v].reference_end = scenario.vehicles[v].reference->duration();
     if (!scenario.vehicles[v].ground)
       log.vehicles[v].max_thrust = world.vehicles()[v].params.max_thrust;
   }

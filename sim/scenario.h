@@ -3,6 +3,7 @@
 // MuJoCo model, the planners' worlds, the controller, rendering) is built from this value.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,8 @@
 
 namespace cosim {
 
+class PiecewisePolynomialReference;  // control/piecewise_polynomial_reference.h
+
 struct VehicleSpec {
   std::string name;   // unique; prefixes every MuJoCo name of the vehicle ("uav1/base")
   std::string model;  // a model name from models/ (cf2, quad_1500g, ...) or a URDF path
@@ -26,6 +29,11 @@ struct VehicleSpec {
   // Points to visit after the start; the last one is the goal.
   std::vector<Eigen::Vector3d> waypoints;
   double yaw_deg = 0.0;  // initial and reference heading
+  // vehicles[i].reference (sim/scenario_reference.h): a given reference flown instead of a
+  // planned path, placed (its timescale, and the start added with `relative`); then `waypoints`
+  // holds its last point alone, the goal. Null: the vehicle is planned.
+  std::shared_ptr<const PiecewisePolynomialReference> reference;
+  std::filesystem::path reference_file;  // resolved
   const Eigen::Vector3d& goal() const { return waypoints.back(); }
 };
 
