@@ -184,8 +184,12 @@ TEST(MapfCommand, AgentRangeRunsEveryPlannerAtEveryCountAndWritesCsvFigureAndSum
     // Memory: the process holds at least its own code; pibt's distance tables hold at most a
     // row of 64 two-byte cells and a frontier per agent (12 x 192 bytes: under 0.01 MB).
     EXPECT_GT(std::stod(f[14]), 1.0) << line;
-    if (f[2] == "pibt") EXPECT_LE(std::stod(f[13]), 0.01) << line;
-    if (f[2] == "lacam") EXPECT_GT(std::stod(f[13]), 0.0) << line;
+    if (f[2] == "pibt") {
+      EXPECT_LE(std::stod(f[13]), 0.01) << line;
+    }
+    if (f[2] == "lacam") {
+      EXPECT_GT(std::stod(f[13]), 0.0) << line;
+    }
     if (f[2] == "cbs" && f[5] == "1") cbs_soc[agents] = std::stol(f[6]);
     if (f[2] == "lacam") {
       ASSERT_EQ(f[5], "1") << line;
