@@ -186,6 +186,9 @@ TEST(MapfCommand, AgentRangeRunsEveryPlannerAtEveryCountAndWritesCsvFigureAndSum
     EXPECT_GT(std::stod(f[14]), 1.0) << line;
     if (f[2] == "pibt") {
       EXPECT_LE(std::stod(f[13]), 0.01) << line;
+      if (f[5] == "1") {
+        EXPECT_EQ(f[9], f[8]) << line;  // its one solution is its first
+      }
     }
     if (f[2] == "lacam") {
       EXPECT_GT(std::stod(f[13]), 0.0) << line;
