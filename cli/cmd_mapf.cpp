@@ -43,6 +43,10 @@ int runBenchmark(const MapfArgs& a, const std::vector<int>& counts,
                   << " agents, " << fileStem(r.scen) << ": "
                   << (r.success ? "solved, SOC " + std::to_string(r.sum_of_costs) : r.status)
                   << ", " << fixedDigits(r.time_ms, 1) << " ms"
+                  << (r.anytime ? " (first solution " + fixedDigits(r.first_solution_ms, 1) + " ms)"
+                                : "")
+                  << ", tables " << fixedDigits(r.table_mb, 1) << " MB, peak "
+                  << fixedDigits(r.peak_rss_mb, 0) << " MB"
                   << (r.message.empty() ? "" : " (" + r.message + ")") << std::endl;
       });
   if (outcome.interrupted) {

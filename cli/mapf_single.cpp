@@ -10,8 +10,10 @@
 #include "cli/set_options.h"
 #include "core/input_error.h"
 #include "core/json_writer.h"
+#include "planning/mapf/mapf_memory_estimate.h"
 #include "core/atomic_file.h"
 #include "core/output_files.h"
+#include "core/peak_memory.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/mapf/movingai_instance.h"
 #include "planning/mapf/solution_validator.h"
@@ -43,6 +45,7 @@ MapfInstance readInstance(const MapfArgs& a, int agents) {
     inst.grid.setBlocked(c, true);
   }
   checkMapfInstance(inst, a.blocks.empty() ? scen : "--block");
+  checkMapfTableMemory(inst, a.planner, scen);
   return inst;
 }
 
@@ -106,6 +109,7 @@ std::string mapfJson(const MapfArgs& a, const MapfInstance& inst, const ParamSet
       .add("sum_of_costs", plan.success ? static_cast<double>(sumOfCosts(result.paths)) : nan)
       .add("makespan", plan.success ? static_cast<double>(makespan(result.paths)) : nan)
       .add("time_ms", result.time_ms)
+      .add("peak_rss_mb", static_cast<double>(peakResidentBytes()) / (1 << 20))
       .add("conflicts", static_cast<int>(plan.check.conflicts.size()))
       .add("invalid_steps", static_cast<int>(plan.check.problems.size()))
       .add("planner", a.planner)

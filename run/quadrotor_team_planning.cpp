@@ -86,6 +86,14 @@ QuadrotorTeamFlight planQuadrotorTeamFlight(const Scenario& s, const WorldModel&
   problem.time_limit_s = settings.time_limit;
   problem.seed = s.sim.seed;
   problem.stop = request.interrupt;
+  if (request.observer)
+    problem.progress = [&request](const std::string& line) {
+      RunEvent e;
+      e.kind = RunEventKind::Message;
+      e.stage = RunStage::Plan;
+      e.text = line;
+      request.observer(e);
+    };
 
   TeamPlan team;
   try {

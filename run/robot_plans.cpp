@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "core/input_error.h"
+#include "planning/mapf/mapf_memory_estimate.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/mapf/solution_validator.h"
 #include "planning/mapf/timed_paths.h"
@@ -120,6 +121,7 @@ void planTeam(const Scenario& s, const RunSetup& setup, const WorldModel& world,
   plans.summary.inflation = radius + s.planner_margin;
   const MapfInstance instance = teamInstance(s, setup, g, radius, plans.summary.inflation);
   auto planner = makeMapfPlanner(s.planner_name, p, "planner.name");
+  checkMapfTableMemory(instance, s.planner_name, s.file);
   for (const auto& [k, v] : p.effective()) plans.summary.params[k] = v;
   MapfQuery query;
   query.instance = &instance;

@@ -7,7 +7,9 @@
 #include "core/input_error.h"
 #include "core/atomic_file.h"
 #include "core/output_files.h"
+#include "core/peak_memory.h"
 #include "core/stop_request.h"
+#include "planning/mapf/mapf_memory_estimate.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/mapf/movingai_instance.h"
 #include "planning/mapf/solution_validator.h"
@@ -86,8 +88,11 @@ BenchmarkInputs readInputs(const MapfBenchmarkSetup& s) {
   // Instances checked up front too (a shared start or goal is bad input, not a failure).
   for (std::size_t k = 0; k < s.scens.size(); ++k) {
     const int n = std::min<int>(s.counts.back(), static_cast<int>(in.lines[k].size()));
-    if (n >= s.counts.front())
-      mapfInstanceFromScenario(in.map, in.lines[k], n, s.connectivity, s.map, s.scens[k]);
+    if (n < s.counts.front()) continue;
+    const MapfInstance largest_instance =
+        mapfInstanceFromScenario(in.map, in.lines[k], n, s.connectivity, s.map, s.scens[k]);
+    for (const std::string& name : s.planners)
+      checkMapfTableMemory(largest_instance, name, s.scens[k]);
   }
   return in;
 }
@@ -108,6 +113,10 @@ void runOne(MapfPlanner& planner, const MapfInstance& inst, const MapfBenchmarkS
   r.time_ms = result.time_ms;
   r.conflicts = static_cast<int>(check.conflicts.size());
   r.message = result.message;
+  for (const char* key : {"distance_table_mb", "search_memory_mb"})
+    if (const auto it = result.counters.find(key); it != result.counters.end())
+      r.table_mb += it->second;
+  r.peak_rss_mb = static_cast<double>(peakResidentBytes()) / (1 << 20);
   if (result.success && !check.valid()) r.message = "invalid solution";
   if (!r.success) return;
   r.sum_of_costs = sumOfCosts(result.paths);

@@ -22,7 +22,7 @@ std::string fileStem(const std::string& path) {
 std::string mapfBenchmarkCsv(const std::string& map, const std::vector<MapfBenchmarkRow>& rows) {
   std::string csv =
       "map,scen,planner,agents,status,success,sum_of_costs,makespan,time_ms,first_solution_ms,"
-      "first_cost,final_cost,conflicts,message\n";
+      "first_cost,final_cost,conflicts,table_mb,peak_rss_mb,message\n";
   for (const MapfBenchmarkRow& r : rows) {
     const bool run = r.status != "skipped";
     csv += csvField(fileStem(map)) + "," + csvField(fileStem(r.scen)) + "," + r.planner + "," +
@@ -30,10 +30,13 @@ std::string mapfBenchmarkCsv(const std::string& map, const std::vector<MapfBench
            (r.success ? std::to_string(r.sum_of_costs) : "") + "," +
            (r.success ? std::to_string(r.makespan) : "") + "," +
            (run ? fixedDigits(r.time_ms, 3) : "") + "," +
-           (r.success && r.anytime ? fixedDigits(r.first_solution_ms, 3) : "") + "," +
+           // A planner that is not anytime: its one solution is its first.
+           (r.success ? fixedDigits(r.anytime ? r.first_solution_ms : r.time_ms, 3) : "") + "," +
            (r.success && r.anytime ? std::to_string(r.first_cost) : "") + "," +
            (r.success && r.anytime ? std::to_string(r.sum_of_costs) : "") + "," +
-           (run ? std::to_string(r.conflicts) : "") + "," + csvField(r.message) + "\n";
+           (run ? std::to_string(r.conflicts) : "") + "," +
+           (run ? fixedDigits(r.table_mb, 1) : "") + "," + (run ? fixedDigits(r.peak_rss_mb, 1) : "") +
+           "," + csvField(r.message) + "\n";
   }
   return csv;
 }

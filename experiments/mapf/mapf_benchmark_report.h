@@ -23,6 +23,10 @@ struct MapfBenchmarkRow {
   double first_solution_ms = 0.0;
   long first_cost = 0;
   int conflicts = 0;
+  // Memory: the planner's own tables (distance tables as far as searched, LaCAM*'s search) and
+  // the process's peak resident set so far (it never falls, so later rows include earlier ones).
+  double table_mb = 0.0;
+  double peak_rss_mb = 0.0;
   std::string message;
 };
 

@@ -4,6 +4,7 @@
 #include <atomic>
 #include <new>
 #include <thread>
+#include <unordered_map>
 
 namespace cosim {
 
@@ -16,9 +17,9 @@ T* zeroed(std::size_t n) {
   return static_cast<T*>(p);
 }
 
-// True when every distance + 1 fits 16 bits: certainly with fewer than 65535 vertices, else
-// when twice the eccentricity of one vertex per connected part (a bound on its diameter) does.
-// One breadth-first pass over the whole graph.
+}  // namespace
+
+// One breadth-first pass over the whole graph (a few milliseconds on the largest benchmark map).
 bool distancesFitSixteenBits(const MapfGraph& graph) {
   if (graph.vertexCount() < 0xffff) return true;
   std::vector<int> depth(graph.vertexCount(), -1), queue;
@@ -38,33 +39,40 @@ bool distancesFitSixteenBits(const MapfGraph& graph) {
   return 2 * eccentricity + 1 < 0xffff;
 }
 
-}  // namespace
-
 GoalDistanceTable::GoalDistanceTable(const MapfGraph& graph, std::span<const int> goals)
     : graph_(graph),
       vertices_(static_cast<std::size_t>(graph.vertexCount())),
       narrow_(distancesFitSixteenBits(graph)),
-      frontiers_(goals.size()) {
-  const std::size_t n = goals.size() * vertices_;
+      row_of_agent_(goals.size()) {
+  std::unordered_map<int, int> row_of_goal;
+  for (std::size_t a = 0; a < goals.size(); ++a) {
+    const auto [it, fresh] = row_of_goal.emplace(goals[a], static_cast<int>(row_of_goal.size()));
+    row_of_agent_[a] = it->second;
+    if (!fresh) continue;
+    Frontier& f = frontiers_.emplace_back();
+    f.ring.assign(16, 0);
+    f.ring[0] = goals[a];
+    f.size = 1;
+    f.reached = 1;
+  }
+  const std::size_t n = frontiers_.size() * vertices_;
   if (narrow_)
     narrow_entries_.reset(zeroed<std::uint16_t>(n));
   else
     wide_entries_.reset(zeroed<std::uint32_t>(n));
-  for (std::size_t a = 0; a < goals.size(); ++a) {
-    const std::size_t i = a * vertices_ + goals[a];
+  for (const auto& [goal, row] : row_of_goal) {
+    const std::size_t i = static_cast<std::size_t>(row) * vertices_ + goal;
     if (narrow_)
       narrow_entries_[i] = 1;
     else
       wide_entries_[i] = 1;
-    frontiers_[a].ring.assign(16, 0);
-    frontiers_[a].ring[0] = goals[a];
-    frontiers_[a].size = 1;
   }
 }
 
 template <typename Entry>
-std::uint32_t GoalDistanceTable::searchIn(Entry* row, int agent, int v) const {
-  Frontier& f = frontiers_[agent];
+std::uint32_t GoalDistanceTable::searchIn(Entry* entries, int row_index, int v) const {
+  Frontier& f = frontiers_[row_index];
+  Entry* row = entries + static_cast<std::size_t>(row_index) * vertices_;
   // Breadth first, one vertex's neighbours at a time, until v has its distance.
   while (f.size > 0 && row[v] == 0) {
     const int u = f.ring[f.head];
@@ -74,6 +82,7 @@ std::uint32_t GoalDistanceTable::searchIn(Entry* row, int agent, int v) const {
     for (const int w : graph_.neighbours(u)) {
       if (row[w] != 0) continue;
       row[w] = next;
+      ++f.reached;
       if (f.size == f.ring.size()) {  // full: unroll into a ring twice the size
         std::vector<int> bigger(f.ring.size() * 2);
         for (std::size_t k = 0; k < f.size; ++k)
@@ -89,9 +98,8 @@ std::uint32_t GoalDistanceTable::searchIn(Entry* row, int agent, int v) const {
 }
 
 std::uint32_t GoalDistanceTable::search(int agent, int v) const {
-  const std::size_t row = static_cast<std::size_t>(agent) * vertices_;
-  return narrow_ ? searchIn(narrow_entries_.get() + row, agent, v)
-                 : searchIn(wide_entries_.get() + row, agent, v);
+  const int row = row_of_agent_[agent];
+  return narrow_ ? searchIn(narrow_entries_.get(), row, v) : searchIn(wide_entries_.get(), row, v);
 }
 
 std::size_t GoalDistanceTable::bytes() const {
@@ -100,17 +108,26 @@ std::size_t GoalDistanceTable::bytes() const {
   return vertices_ * frontiers_.size() * (narrow_ ? 2 : 4) + frontier;
 }
 
+std::size_t GoalDistanceTable::bytesReached() const {
+  std::size_t total = 0;
+  for (const Frontier& f : frontiers_)
+    total += f.reached * (narrow_ ? 2 : 4) + f.ring.capacity() * sizeof(int);
+  return total;
+}
+
 std::string checkGoalsReachable(const GoalDistanceTable& distance, std::span<const int> starts,
                                 const StopToken& deadline) {
-  // The agents' searches share nothing, so they run on all cores: each worker takes every
-  // k-th agent. The answer does not depend on the split: the lowest unreachable agent is named.
+  // Searches of different rows share nothing, so they run on all cores: each worker takes the
+  // agents of every k-th row (agents sharing a goal share a row, so one worker owns each row).
+  // The answer does not depend on the split: the lowest unreachable agent is named.
   const std::size_t n = starts.size();
   const std::size_t workers = std::clamp<std::size_t>(
       std::min<std::size_t>(std::thread::hardware_concurrency(), n / 64), 1, 8);
   std::vector<std::size_t> first_unreachable(workers, n);
   std::atomic<bool> out_of_time{false};
   const auto work = [&](std::size_t w) {
-    for (std::size_t i = w; i < n; i += workers) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (static_cast<std::size_t>(distance.rowOf(static_cast<int>(i))) % workers != w) continue;
       if (out_of_time.load(std::memory_order_relaxed) || deadline.expired()) {
         out_of_time = true;
         return;

@@ -320,12 +320,12 @@ LacamOutcome searchLacam(const MapfGraph& graph, std::span<const int> starts,
     out.status =
         deadline.expired() ? LacamOutcome::Status::kTimeLimit : LacamOutcome::Status::kUnreachable;
     out.message = unreachable;
-    out.distance_table_bytes = distance.bytes();
+    out.distance_table_bytes = distance.bytesReached();
     return out;
   }
   LacamSearch search(graph, starts, goals, options, deadline, seed, distance);
   LacamOutcome out = search.run();
-  out.distance_table_bytes = distance.bytes();
+  out.distance_table_bytes = distance.bytesReached();
   return out;
 }
 

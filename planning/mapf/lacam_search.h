@@ -69,7 +69,7 @@ struct LacamOutcome {
   long improvements = 0;  // times the goal's cost dropped after the first solution
   long iterations = 0, nodes = 0, restarts = 0, generator_failures = 0, rediscoveries = 0;
   std::size_t memory_bytes = 0;  // the search's own, at the end
-  std::size_t distance_table_bytes = 0;
+  std::size_t distance_table_bytes = 0;  // written by the lazy searches (bytesReached)
 };
 
 LacamOutcome searchLacam(const MapfGraph& graph, std::span<const int> starts,

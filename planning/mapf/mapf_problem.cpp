@@ -50,13 +50,6 @@ void checkMapfInstance(const MapfInstance& instance, const std::string& file) {
     throw InputError(file, "agents",
                      std::to_string(instance.agentCount()) + " agents, more than the " +
                          std::to_string(kMaxMapfAgents) + " allowed");
-  if (const double agent_cells = static_cast<double>(instance.agentCount()) * cells;
-      agent_cells > kMaxMapfAgentCells)
-    throw InputError(file, "agents",
-                     std::to_string(instance.agentCount()) + " agents x " + std::to_string(cells) +
-                         " cells = " + std::to_string(static_cast<long long>(agent_cells)) +
-                         ", more than the 100000000 the planners' per-agent tables allow (fewer "
-                         "agents, or a smaller map)");
   std::set<std::tuple<int, int, int>> starts, goals;
   for (int i = 0; i < instance.agentCount(); ++i) {
     const std::string where = "agent " + std::to_string(i);

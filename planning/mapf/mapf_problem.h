@@ -59,12 +59,10 @@ int makespan(const std::vector<MapfPath>& paths);
 // Drops repeated final cells, so that paths[i].size() - 1 is the arrival time.
 void trimWaitsAtEnd(MapfPath& path);
 
-// Limits on what a MAPF instance may ask of memory, checked before any planner allocates: the
-// planners keep per-cell tables (a reservation table, space-time searches), and the
-// heuristic-guided ones an exact distance table per agent (reverse resumable A*, 5 bytes per
-// cell and agent). MovingAI's MAPF maps have at most about a million cells.
-constexpr long kMaxMapfCells = 16L << 20;   // 4096 x 4096
-constexpr double kMaxMapfAgentCells = 1e8;  // agents x cells: about 0.5 GB of tables
+// Limits on the size of a MAPF instance, checked before any planner allocates. What the
+// planners' per-agent tables need depends on the planner: mapf_memory_estimate.h checks it.
+// MovingAI's MAPF maps have at most about a million cells.
+constexpr long kMaxMapfCells = 16L << 20;  // 4096 x 4096
 constexpr int kMaxMapfAgents = 10000;
 
 // Throws InputError if a start or goal is off the grid or blocked, two agents share a start or a

@@ -70,6 +70,7 @@ MapfResult PibtPlanner::solve(const MapfQuery& query) {
   // On failure the paths so far (not a solution: they end off the goals).
   result.paths = pathsOfConfigurations(g.graph, configurations, n);
   result.counters["steps"] = static_cast<double>(configurations.size() - 1);
+  result.counters["distance_table_mb"] = static_cast<double>(distance.bytesReached()) / (1 << 20);
   result.time_ms = deadline.elapsedMs();
   return result;
 }

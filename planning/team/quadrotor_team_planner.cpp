@@ -77,8 +77,92 @@ double teamStepDuration(const Eigen::Vector3d& pitch, double max_speed, double m
   return std::max(35.0 / 16.0 * longest / max_speed, std::sqrt(7.51 * longest / max_acceleration));
 }
 
+namespace {
+
+using Say = std::function<void(const std::string&)>;
+
+// The MAPF stage: true when the planner's solution passes the independent validator; else the
+// plan says why.
+bool searchGrid(const TeamPlanningProblem& problem, MapfPlanner& planner,
+                const MapfInstance& instance, const StopToken& deadline, TeamPlan& plan,
+                MapfResult& r) {
+  MapfQuery query;
+  query.instance = &instance;
+  query.time_limit_s = std::max(1e-3, problem.time_limit_s - deadline.elapsedMs() / 1000.0);
+  query.seed = problem.seed;
+  query.stop = problem.stop;
+  try {
+    r = planner.solve(query);
+  } catch (const InputError& e) {  // e.g. a planner for 2D grids only
+    throw InputError("", "planner.name", "'" + planner.name() + "': " + e.problem());
+  }
+  for (const auto& [k, v] : r.counters) plan.counters[k] = v;
+  plan.counters["mapf_ms"] = r.time_ms;
+  const MapfValidation check = validateMapfSolution(instance, r.paths);
+  if (r.success && check.problems.empty() && check.conflicts.empty()) return true;
+  plan.status = r.success ? PlannerStatus::InvalidSolution : r.status;
+  plan.message =
+      "no team plan on the grid: " + (!r.message.empty() ? r.message
+                                      : !check.problems.empty()
+                                          ? check.problems.front()
+                                          : std::to_string(check.conflicts.size()) + " conflicts");
+  return false;
+}
+
+// The continuous-time stage: the grid paths smoothed and repaired, with a progress line a
+// second at most.
+void smoothGrid(const TeamPlanningProblem& problem, const TeamGrid& grid, const MapfResult& r,
+                const StopToken& deadline, const Say& say, TeamPlan& plan) {
+  const auto smoothing_start = std::chrono::steady_clock::now();
+  const int steps = makespan(r.paths);
+  std::vector<TeamMember> team;
+  for (std::size_t i = 0; i < problem.agents.size(); ++i) {
+    const TeamAgent& a = problem.agents[i];
+    plan.points.push_back(stepPoints(grid, a, r.paths[i], steps));
+    team.push_back({plan.points.back(), a.separation, a.clearance});
+  }
+  TeamTrajectoryOptions options;
+  options.step_duration =
+      teamStepDuration(grid.pitch(), problem.max_speed, problem.max_acceleration);
+  options.min_separation = problem.min_separation;
+  options.deadline = &deadline;
+  say("team plan: " + std::to_string(steps) + " steps found in " +
+      std::to_string(static_cast<long>(r.time_ms)) + " ms; smoothing");
+  double said_ms = deadline.elapsedMs();
+  options.progress = [&](int round, int checked, int windows, int refitted) {
+    if (deadline.elapsedMs() - said_ms < 1000.0) return;
+    said_ms = deadline.elapsedMs();
+    say("team smoothing: repair round " + std::to_string(round) + ", " + std::to_string(refitted) +
+        " agents refitted, " + std::to_string(checked) + " of " + std::to_string(windows) +
+        " time windows checked, " +
+        std::to_string(static_cast<long>(deadline.elapsedMs() / 1000.0)) + " s");
+  };
+  TeamTrajectories smooth = smoothTeamPaths(team, *problem.world, options);
+  plan.counters["step_duration_s"] = options.step_duration;
+  plan.counters["smoothing_ms"] = msSince(smoothing_start);
+  plan.counters["repair_rounds"] = smooth.repair_rounds;
+  plan.counters["stops_added"] = smooth.stops_added;
+  plan.counters["pair_checks"] = static_cast<double>(smooth.pair_checks);
+  plan.counters["planned_min_separation"] = smooth.min_separation;
+  if (!smooth.success) {
+    plan.status = smooth.status;
+    plan.message = "no team trajectories: " + smooth.message;
+    return;
+  }
+  plan.trajectories = std::move(smooth.trajectories);
+  plan.success = true;
+  plan.status = r.status;
+}
+
+}  // namespace
+
 TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& planner) {
   const auto start = std::chrono::steady_clock::now();
+  // One time limit and stop request for every stage.
+  const StopToken deadline(problem.time_limit_s, problem.stop);
+  const Say say = [&](const std::string& line) {
+    if (problem.progress) problem.progress(line);
+  };
   TeamPlan plan;
   const auto& agents = problem.agents;
   double inflation = 0.0;
@@ -92,59 +176,15 @@ TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& plan
   plan.counters["blocked_cells"] = static_cast<double>(instance.grid.blockedCount());
   plan.counters["pitch_xy_m"] = pitch.x();
   plan.counters["pitch_z_m"] = pitch.z();
-
-  MapfQuery query;
-  query.instance = &instance;
-  query.time_limit_s = problem.time_limit_s;
-  query.seed = problem.seed;
-  query.stop = problem.stop;
+  say("team plan: " + std::to_string(agents.size()) + " agents on a grid of " +
+      std::to_string(instance.grid.cellCount()) + " cells with " + planner.name());
   MapfResult r;
-  try {
-    r = planner.solve(query);
-  } catch (const InputError& e) {  // e.g. a planner for 2D grids only
-    throw InputError("", "planner.name", "'" + planner.name() + "': " + e.problem());
+  if (searchGrid(problem, planner, instance, deadline, plan, r)) {
+    plan.counters["sum_of_costs"] = static_cast<double>(sumOfCosts(r.paths));
+    plan.counters["makespan"] = makespan(r.paths);
+    smoothGrid(problem, grid, r, deadline, say, plan);
   }
-  for (const auto& [k, v] : r.counters) plan.counters[k] = v;
-  plan.counters["mapf_ms"] = r.time_ms;
-  const MapfValidation check = validateMapfSolution(instance, r.paths);
-  if (!r.success || !check.problems.empty() || !check.conflicts.empty()) {
-    plan.status = r.success ? PlannerStatus::InvalidSolution : r.status;
-    plan.message =
-        "no team plan on the grid: " +
-        (!r.message.empty()        ? r.message
-         : !check.problems.empty() ? check.problems.front()
-                                   : std::to_string(check.conflicts.size()) + " conflicts");
-    plan.time_ms = msSince(start);
-    return plan;
-  }
-  const int steps = makespan(r.paths);
-  plan.counters["sum_of_costs"] = static_cast<double>(sumOfCosts(r.paths));
-  plan.counters["makespan"] = steps;
-
-  const auto smoothing_start = std::chrono::steady_clock::now();
-  std::vector<TeamMember> team;
-  for (std::size_t i = 0; i < agents.size(); ++i) {
-    plan.points.push_back(stepPoints(grid, agents[i], r.paths[i], steps));
-    team.push_back({plan.points.back(), agents[i].separation, agents[i].clearance});
-  }
-  TeamTrajectoryOptions options;
-  options.step_duration = teamStepDuration(pitch, problem.max_speed, problem.max_acceleration);
-  options.min_separation = problem.min_separation;
-  TeamTrajectories smooth = smoothTeamPaths(team, *problem.world, options);
-  plan.counters["step_duration_s"] = options.step_duration;
-  plan.counters["smoothing_ms"] = msSince(smoothing_start);
-  plan.counters["repair_rounds"] = smooth.repair_rounds;
-  plan.counters["stops_added"] = smooth.stops_added;
-  plan.counters["planned_min_separation"] = smooth.min_separation;
   plan.time_ms = msSince(start);
-  if (!smooth.success) {
-    plan.status = smooth.status;
-    plan.message = "no team trajectories: " + smooth.message;
-    return plan;
-  }
-  plan.trajectories = std::move(smooth.trajectories);
-  plan.success = true;
-  plan.status = r.status;
   return plan;
 }
 

@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -37,9 +38,11 @@ struct TeamPlanningProblem {
   double min_separation = 1.5;
   double max_speed = 1.0;         // m/s, for the step duration
   double max_acceleration = 2.0;  // m/s^2, for the step duration
-  double time_limit_s = 30.0;     // for the MAPF search
+  double time_limit_s = 30.0;  // for the whole team plan: grid, MAPF search and smoothing
   std::uint64_t seed = 1;
   const std::atomic<bool>* stop = nullptr;
+  // A line for a person following a long plan (the stage reached, repair rounds); may be empty.
+  std::function<void(const std::string&)> progress;
 };
 
 struct TeamPlan {

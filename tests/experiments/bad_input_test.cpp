@@ -526,7 +526,7 @@ std::vector<BadInput> badInputs() {
                    "\t1999\t2000\n";
          return scen;
        }(),
-       2, "100 agents x 4000000 cells = 400000000, more than the 100000000"},
+       2, "1907 MB (100 agents x 4000000 cells x 5 bytes), more than the 1024 MB"},
       {"planner_time_limit_of_a_day", plan,
        withPlanner("planner: {name: astar, resolution: 0.5, time_limit: 86400}\n"), "", 2,
        "'time_limit' = 86400 is outside [0.001, 3600]"},

@@ -164,7 +164,8 @@ TEST(MapfCommand, AgentRangeRunsEveryPlannerAtEveryCountAndWritesCsvFigureAndSum
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string csv = test::slurp(dir / "benchmark.csv");
   EXPECT_EQ(csv.rfind("map,scen,planner,agents,status,success,sum_of_costs,makespan,time_ms,"
-                      "first_solution_ms,first_cost,final_cost,conflicts,message\n",
+                      "first_solution_ms,first_cost,final_cost,conflicts,table_mb,peak_rss_mb,"
+                      "message\n",
                       0),
             0u);
   std::istringstream rows(csv);
@@ -177,9 +178,21 @@ TEST(MapfCommand, AgentRangeRunsEveryPlannerAtEveryCountAndWritesCsvFigureAndSum
     std::vector<std::string> f;
     std::istringstream fields(line);
     for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
-    ASSERT_GE(f.size(), 13u) << line;
+    ASSERT_GE(f.size(), 15u) << line;
     const int agents = std::stoi(f[3]);
     EXPECT_EQ(f[12], "0") << line;  // no conflicts in anything returned
+    // Memory: the process holds at least its own code; pibt's distance tables hold at most a
+    // row of 64 two-byte cells and a frontier per agent (12 x 192 bytes: under 0.01 MB).
+    EXPECT_GT(std::stod(f[14]), 1.0) << line;
+    if (f[2] == "pibt") {
+      EXPECT_LE(std::stod(f[13]), 0.01) << line;
+      if (f[5] == "1") {
+        EXPECT_EQ(f[9], f[8]) << line;  // its one solution is its first
+      }
+    }
+    if (f[2] == "lacam") {
+      EXPECT_GT(std::stod(f[13]), 0.0) << line;
+    }
     if (f[2] == "cbs" && f[5] == "1") cbs_soc[agents] = std::stol(f[6]);
     if (f[2] == "lacam") {
       ASSERT_EQ(f[5], "1") << line;

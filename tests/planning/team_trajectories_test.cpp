@@ -4,6 +4,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+#include "planning/team/team_pair_candidates.h"
+
 using namespace cosim;
 using Eigen::Vector3d;
 
@@ -99,4 +105,91 @@ TEST(TeamTrajectories, APlanThatItselfViolatesTheSeparationIsReported) {
   EXPECT_FALSE(r.success);
   EXPECT_NE(r.message.find("closer than the separation"), std::string::npos) << r.message;
   EXPECT_NEAR(r.min_separation, 0.1 / 0.24, 1e-6);
+}
+
+namespace {
+
+// A column of `n` agents 0.3 m apart along y (1.25 separations of 0.24 m), all flying 10 steps
+// of 0.5 m along x side by side: nobody ever comes near anybody but a neighbour.
+std::vector<TeamMember> column(int n) {
+  std::vector<TeamMember> team(n);
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k <= 10; ++k) team[i].points.push_back({0.5 * k - 2.5, 0.3 * i - 0.15 * n, 2});
+  return team;
+}
+
+World hall() {
+  World w;
+  w.bounds_min = {-40, -40, 0};
+  w.bounds_max = {40, 40, 5};
+  return w;
+}
+
+}  // namespace
+
+TEST(TeamPairCandidates, EveryPairThatComesWithinReachIsACandidateAndFarPairsAreNot) {
+  // Agents on random walks in a 6 m cube, sampled at 20 instants; a pair is a candidate when its
+  // scaled boxes (grown by reach / 2) meet, so every pair closer than reach at some instant is
+  // one, and a pair whose boxes stay more than reach apart is not.
+  std::vector<std::vector<Vector3d>> at(60);
+  std::uint64_t state = 12345;
+  const auto unit = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<double>(state >> 11) / 9007199254740992.0;
+  };
+  for (auto& a : at) {
+    Vector3d p(6 * unit(), 6 * unit(), 6 * unit());
+    for (int s = 0; s < 20; ++s) a.push_back(p += 0.05 * Vector3d(unit(), unit(), unit()));
+  }
+  const Vector3d scale(1 / 0.24, 1 / 0.24, 1 / 0.6);
+  const auto pairs = candidatePairs(at, 0, 19, scale, 1.5);
+  const SeparationEllipsoid e{0.24, 0.6};
+  int close = 0;
+  for (std::size_t i = 0; i < at.size(); ++i)
+    for (std::size_t j = i + 1; j < at.size(); ++j) {
+      double d = 1e9;
+      for (int s = 0; s < 20; ++s) d = std::min(d, e.distance(at[i][s], at[j][s]));
+      const bool candidate = std::binary_search(
+          pairs.begin(), pairs.end(), std::pair<int, int>(static_cast<int>(i), static_cast<int>(j)));
+      if (d < 1.5) {
+        ++close;
+        EXPECT_TRUE(candidate) << i << "," << j << " at " << d;
+      }
+      // Boxes at most 0.05 x 20 x sqrt(3) m wide: a pair 4.5 separations apart throughout
+      // (scaled, beyond reach + both boxes' widths) cannot share a cell.
+      if (d > 4.5 + 2 * 20 * 0.05 * std::sqrt(3.0) / 0.24) EXPECT_FALSE(candidate) << i << "," << j;
+    }
+  EXPECT_GT(close, 0);  // the test sees both kinds
+  EXPECT_LT(pairs.size(), at.size() * (at.size() - 1) / 2);
+}
+
+TEST(TeamTrajectories, OnlyNeighboursAreCheckedInALargeTeam) {
+  // 200 agents in a column: all pairs at all instants would be 19 900 x instants; the spatial
+  // hash (reach 1.5 separations) leaves each agent's next one or two in the column.
+  const std::vector<TeamMember> team = column(200);
+  TeamTrajectoryOptions o;
+  const TeamTrajectories r = smoothTeamPaths(team, hall(), o);
+  ASSERT_TRUE(r.success) << r.message;
+  const long instants = static_cast<long>(std::ceil(10 * o.step_duration / o.check_interval)) + 1;
+  EXPECT_LE(r.pair_checks, 2L * 200 * instants);
+  EXPECT_GE(r.pair_checks, 199L * instants);  // every neighbouring pair, at every instant
+  EXPECT_NEAR(r.min_separation, 0.3 / 0.24, 1e-9);
+}
+
+TEST(TeamTrajectories, AStopRequestOrAnExpiredTimeLimitEndsTheSmoothingAtOnce) {
+  const std::vector<TeamMember> team = column(50);
+  std::atomic<bool> stop{true};
+  const StopToken stopped(60.0, &stop);
+  TeamTrajectoryOptions o;
+  o.deadline = &stopped;
+  const TeamTrajectories s = smoothTeamPaths(team, hall(), o);
+  EXPECT_FALSE(s.success);
+  EXPECT_EQ(s.status, PlannerStatus::Stopped);
+  EXPECT_EQ(s.message, "stopped");
+  EXPECT_EQ(s.pair_checks, 0);  // not one window checked
+  const StopToken expired(0.0);
+  o.deadline = &expired;
+  const TeamTrajectories t = smoothTeamPaths(team, hall(), o);
+  EXPECT_EQ(t.status, PlannerStatus::Timeout);
+  EXPECT_EQ(t.message, "time limit reached");
 }
