@@ -301,7 +301,7 @@ std::vector<Finding> findings(const std::vector<MapResult>& results) {
       lazy_close && lazy_longer >= 3,
       "thesis variant: " + percentList(lazy_excess) + ", longer on " + std::to_string(lazy_longer) +
           " of 4 maps",
-      "tried: the thesis's variant (no re-queue after SetVertex), which is what makes Lazy "
+      "the thesis's variant (no re-queue after SetVertex), which is what makes Lazy "
       "Theta* longer at all; on our rebuilt layouts its assumed parents are mostly visible, so it "
       "mostly finds Basic Theta*'s path, and why the thesis's layouts fooled it more cannot be "
       "checked without them",
