@@ -12,15 +12,15 @@
 #include <iterator>
 #include <sstream>
 
+#include "control/controller_factory.h"
 #include "control/figure_eight_reference.h"
 #include "core/atomic_file.h"
+#include "core/json_writer.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "render/gnuplot.h"
-#include "control/controller_factory.h"
 #include "sim/flight_metrics.h"
 #include "sim/flight_simulation.h"
-#include "core/json_writer.h"
 #include "sim/model_error.h"
 #include "sim/sensors/sensor_presets.h"
 #include "sim/world_model.h"
@@ -126,7 +126,8 @@ void writeStudyChart(const std::vector<Row>& rows, const std::filesystem::path& 
     scratch.write(file, data.str());
     body << (c ? ", \\\n     " : "") << gnuplotString(file) << " with linespoints lw 1.8 dt "
          << (c % 4 + 1) << " pt " << points[c] << " ps 1.3 lc rgb '" << colours[c] << "' title "
-         << gnuplotString(std::string(kControllers[c].label) + " (shifted " + fmt("%+.2f", shift) + " m/s)");
+         << gnuplotString(std::string(kControllers[c].label) + " (shifted " + fmt("%+.2f", shift) +
+                          " m/s)");
   }
   body << "\n";
   runGnuplot(plotBoth("chart", 960, 560, body.str()), scratch.dir());

@@ -29,7 +29,8 @@ MapfTrial runMapfTrial(const std::string& planner,
   trial.time_ms = result.time_ms;
   trial.conflicts = static_cast<int>(check.conflicts.size());
   trial.paths = result.paths;
-  trial.message = trial.solved ? "" : (result.message.empty() ? "conflicting paths" : result.message);
+  trial.message =
+      trial.solved ? "" : (result.message.empty() ? "conflicting paths" : result.message);
   if (trial.solved) {
     trial.sum_of_costs = sumOfCosts(result.paths);
     trial.makespan = makespan(result.paths);

@@ -50,8 +50,8 @@ ReproductionMap gridMap(const std::string& title, const OccupancyGrid& grid, con
     for (int z = 0; z < grid.nz(); ++z) n += grid.blocked(x, y, z);
     return n;
   };
-  m.blocks = rowRuns(grid.nx(), grid.ny(),
-                     [&](int x, int y) { return blocked_at(x, y) == grid.nz(); });
+  m.blocks =
+      rowRuns(grid.nx(), grid.ny(), [&](int x, int y) { return blocked_at(x, y) == grid.nz(); });
   m.partial_blocks = rowRuns(grid.nx(), grid.ny(), [&](int x, int y) {
     const int n = blocked_at(x, y);
     return n > 0 && n < grid.nz();
@@ -76,8 +76,8 @@ std::string writeReproductionMap(const std::filesystem::path& out_dir, const std
   body << "set size ratio -1\nset key outside right top box lc rgb '#bbbbbb' font ',10'\n"
        << "set title " << gnuplotString(map.title) << " font ',11'\n"
        << "set xlabel " << gnuplotString(std::string("x [") + map.unit + "]") << "\nset ylabel "
-       << gnuplotString(std::string("y [") + map.unit + "]") << "\nset xrange [" << map.lo.x() << ":"
-       << map.hi.x() << "]\nset yrange [" << map.lo.y() << ":" << map.hi.y() << "]\n"
+       << gnuplotString(std::string("y [") + map.unit + "]") << "\nset xrange [" << map.lo.x()
+       << ":" << map.hi.x() << "]\nset yrange [" << map.lo.y() << ":" << map.hi.y() << "]\n"
        << "set tics out nomirror\n";
   int object = 1;
   for (const auto& poly : map.polygons) {
@@ -91,13 +91,15 @@ std::string writeReproductionMap(const std::filesystem::path& out_dir, const std
   std::vector<std::string> plots;
   if (!map.blocks.empty()) {
     scratch.write("blocks.dat", blockData(map.blocks));
-    plots.push_back("'blocks.dat' with boxxyerror fs solid 1.0 noborder lc rgb '#6b6b6b' "
-                    "title 'obstacle'");
+    plots.push_back(
+        "'blocks.dat' with boxxyerror fs solid 1.0 noborder lc rgb '#6b6b6b' "
+        "title 'obstacle'");
   }
   if (!map.partial_blocks.empty()) {
     scratch.write("partial.dat", blockData(map.partial_blocks));
-    plots.push_back("'partial.dat' with boxxyerror fs solid 1.0 noborder lc rgb '#c8c8c8' "
-                    "title 'obstacle at some heights'");
+    plots.push_back(
+        "'partial.dat' with boxxyerror fs solid 1.0 noborder lc rgb '#c8c8c8' "
+        "title 'obstacle at some heights'");
   }
   if (!map.polygons.empty())  // a key entry for the polygons drawn as objects
     plots.push_back("NaN with boxes fs solid 0.55 lc rgb '#707070' title 'obstacle'");
@@ -107,16 +109,17 @@ std::string writeReproductionMap(const std::filesystem::path& out_dir, const std
     for (const auto& p : map.paths[k].points) d << p.x() << ' ' << p.y() << '\n';
     const std::string file = "path" + std::to_string(k) + ".dat";
     scratch.write(file, d.str());
-    plots.push_back(gnuplotString(file) + " with lines lw " + (k == 0 ? "2.6" : "1.8") +
-                    " dt " + std::to_string(1 + k % 5) + " lc rgb '" + kColours[k % 8] +
-                    "' title " + gnuplotString(map.paths[k].label));
+    plots.push_back(gnuplotString(file) + " with lines lw " + (k == 0 ? "2.6" : "1.8") + " dt " +
+                    std::to_string(1 + k % 5) + " lc rgb '" + kColours[k % 8] + "' title " +
+                    gnuplotString(map.paths[k].label));
   }
   if (!map.moving_obstacle_starts.empty()) {
     std::ostringstream d;
     for (const auto& p : map.moving_obstacle_starts) d << p.x() << ' ' << p.y() << '\n';
     scratch.write("movers.dat", d.str());
-    plots.push_back("'movers.dat' with points pt 4 ps 1.4 lc rgb '#000000' "
-                    "title 'moving obstacle (start)'");
+    plots.push_back(
+        "'movers.dat' with points pt 4 ps 1.4 lc rgb '#000000' "
+        "title 'moving obstacle (start)'");
   }
   std::ostringstream ends;
   ends << map.start.x() << ' ' << map.start.y() << '\n';
@@ -138,8 +141,7 @@ std::string mapFiguresMarkdown(const std::vector<std::string>& files,
                                const std::vector<std::string>& how) {
   std::string md = "## Rebuilt maps\n\n";
   for (std::size_t i = 0; i < files.size(); ++i)
-    md += "- " + files[i] + ".png (and .svg): " + (i < how.size() ? how[i] : std::string()) +
-          "\n";
+    md += "- " + files[i] + ".png (and .svg): " + (i < how.size() ? how[i] : std::string()) + "\n";
   md += "\n";
   for (const auto& f : files) md += "![" + f + "](" + f + ".png)\n";
   return md + "\n";

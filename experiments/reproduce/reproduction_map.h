@@ -14,12 +14,12 @@
 namespace cosim::reproduce {
 
 struct MapPath {
-  std::string label;                     // the method, as the report's tables name it
+  std::string label;                    // the method, as the report's tables name it
   std::vector<Eigen::Vector2d> points;  // in the map's units, in order
 };
 
 struct ReproductionMap {
-  std::string title;  // the map's name and how it was rebuilt
+  std::string title;           // the map's name and how it was rebuilt
   const char* unit = "cells";  // the axes' unit (a literal)
   Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero();  // drawn extent
   // Filled rectangles {x0, y0, x1, y1}; `partial` ones are drawn lighter (3D: some heights).

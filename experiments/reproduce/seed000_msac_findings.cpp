@@ -8,7 +8,9 @@ namespace cosim::reproduce {
 
 namespace {
 
-std::string n2(double v) { return seed000Number(v, 2); }
+std::string n2(double v) {
+  return seed000Number(v, 2);
+}
 
 bool allOptimal(const std::vector<Seed000Column>& cols, double optimum) {
   for (const auto& c : cols)
@@ -24,15 +26,22 @@ std::string triple(const std::vector<Seed000Column>& cols, double (*value)(const
   return s;
 }
 
-double meanMs(const Seed000Stats& s) { return s.mean_ms; }
-double meanLength(const Seed000Stats& s) { return s.mean_length; }
-double moves(const Seed000Stats& s) { return s.mean_steps; }
+double meanMs(const Seed000Stats& s) {
+  return s.mean_ms;
+}
+double meanLength(const Seed000Stats& s) {
+  return s.mean_length;
+}
+double moves(const Seed000Stats& s) {
+  return s.mean_steps;
+}
 
 // Time rising with m (Tables 6.4-6.7), with the search effort that explains ours.
 Finding timeWithM(const MsacResults& r) {
   int rising = 0;
   for (const auto& cols : r.m)
-    rising += cols[0].ours.mean_ms < cols[1].ours.mean_ms && cols[1].ours.mean_ms < cols[2].ours.mean_ms;
+    rising +=
+        cols[0].ours.mean_ms < cols[1].ours.mean_ms && cols[1].ours.mean_ms < cols[2].ours.mean_ms;
   const auto& s2 = r.m[0];  // Table 6.4, scene 2
   std::string work;
   for (std::size_t k = 0; k < s2.size(); ++k)
@@ -45,7 +54,9 @@ Finding timeWithM(const MsacResults& r) {
           " tables; scene 2 (Table 6.4) " + triple(s2, meanMs, 3) + " ms",
       "more scouts meet sooner: on scene 2 our groups meet after " + triple(s2, moves, 0) +
           " synchronised steps (all MAX iterations) at m = 2 / 4 / 8, so the ant moves made "
-          "(2m x steps: " + work + ") grow far less than m, and our time follows those moves; "
+          "(2m x steps: " +
+          work +
+          ") grow far less than m, and our time follows those moves; "
           "the thesis's MATLAB times grow almost in proportion to m, as a fixed cost per ant "
           "and step would make them");
 }
@@ -100,16 +111,18 @@ std::vector<Finding> msacFindings(const MsacResults& r, const Seed000SceneSet& s
   f.push_back(checkedFinding(
       "Scene 1: always 73.84, with or without post-processing (Tables 6.2, 6.6)",
       allOptimal(r.m[2], scenes.opt1) && allOptimal(r.post_scene1, scenes.opt1),
-      "mean lengths m = 2/4/8: " + triple(r.m[2], meanLength, 2) + "; with / without "
-      "processing: " + triple(r.post_scene1, meanLength, 2),
+      "mean lengths m = 2/4/8: " + triple(r.m[2], meanLength, 2) +
+          "; with / without "
+          "processing: " +
+          triple(r.post_scene1, meanLength, 2),
       "our rebuilt scene 1 has the thesis's optimum but not necessarily its layout (figure not "
       "in the text), and some of our runs end above it"));
-  const double shorten =
-      r.post_scene2[1].ours.mean_length / r.post_scene2[0].ours.mean_length;
+  const double shorten = r.post_scene2[1].ours.mean_length / r.post_scene2[0].ours.mean_length;
   f.push_back(checkedFinding(
       "Scene 2: post-processing shortens the average path about 6.8x (1018 -> 149, Table 6.3)",
-      shorten > 3, "ours " + n2(r.post_scene2[1].ours.mean_length) + " -> " +
-                       n2(r.post_scene2[0].ours.mean_length) + ", " + seed000Number(shorten, 1) + "x",
+      shorten > 3,
+      "ours " + n2(r.post_scene2[1].ours.mean_length) + " -> " +
+          n2(r.post_scene2[0].ours.mean_length) + ", " + seed000Number(shorten, 1) + "x",
       "our unprocessed scouts' paths in the rebuilt cup are shorter to begin with"));
   f.push_back(postProcessingTime(r));
   f.push_back(timeWithM(r));
@@ -125,8 +138,9 @@ std::vector<Finding> msacFindings(const MsacResults& r, const Seed000SceneSet& s
     max1_longer += r.m[1][k].ours.mean_length > r.m[0][k].ours.mean_length;
   f.push_back(checkedFinding(
       "Scene 2: MAX 1 gives 4-7 % longer averages than MAX 3 for every m (Tables 6.4-6.5)",
-      max1_longer == 3, "longer for " + std::to_string(max1_longer) + " of 3 m; MAX 3: " +
-                            triple(r.m[0], meanLength, 2) + ", MAX 1: " + triple(r.m[1], meanLength, 2),
+      max1_longer == 3,
+      "longer for " + std::to_string(max1_longer) + " of 3 m; MAX 3: " +
+          triple(r.m[0], meanLength, 2) + ", MAX 1: " + triple(r.m[1], meanLength, 2),
       "the differences are within the spread of 10 runs (compare each average with its "
       "minimum), for the thesis as for us, so a reversed order a few % apart is noise"));
   return f;
@@ -142,8 +156,8 @@ std::string msacMaps(const Options& options, const Seed000SceneSet& scenes, cons
       drawSeed000Scene(options, name, 3, scenes.scene2,
                        {{"MSAC m 4, MAX 3, processed", r.m[0][1].ours.best_path},
                         {"MSAC m 4, MAX 3, unprocessed", r.post_scene2[1].ours.best_path}})};
-  return mapFiguresMarkdown(files, {scenes.free_scene.origin, scenes.scene1.origin,
-                                    scenes.scene2.origin});
+  return mapFiguresMarkdown(files,
+                            {scenes.free_scene.origin, scenes.scene1.origin, scenes.scene2.origin});
 }
 
 }  // namespace cosim::reproduce

@@ -10,11 +10,11 @@
 namespace cosim::reproduce {
 
 struct MsacResults {
-  const std::vector<Seed000Column>& tabu;              // Table 6.1: versions 1, 2, 3
-  const std::vector<Seed000Column>& post_scene1;       // Table 6.2: with, without processing
-  const std::vector<Seed000Column>& post_scene2;       // Table 6.3
-  const std::vector<std::vector<Seed000Column>>& m;    // Tables 6.4-6.7: m = 2, 4, 8
-  const Seed000Stats& max1_m1_scene2;                  // §6.1.4: MAX 1, m 1 on scene 2
+  const std::vector<Seed000Column>& tabu;            // Table 6.1: versions 1, 2, 3
+  const std::vector<Seed000Column>& post_scene1;     // Table 6.2: with, without processing
+  const std::vector<Seed000Column>& post_scene2;     // Table 6.3
+  const std::vector<std::vector<Seed000Column>>& m;  // Tables 6.4-6.7: m = 2, 4, 8
+  const Seed000Stats& max1_m1_scene2;                // §6.1.4: MAX 1, m 1 on scene 2
 };
 
 std::vector<Finding> msacFindings(const MsacResults& r, const Seed000SceneSet& scenes);

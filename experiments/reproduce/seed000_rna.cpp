@@ -121,9 +121,12 @@ OccupancyGrid randomMap(std::uint64_t seed, double density) {
 // (seeded) where they would leave it or hit a wall: the thesis's model of §4.2.3.
 std::vector<MovingObstacle> turningTraffic(const OccupancyGrid& grid, std::uint64_t seed) {
   const TurningObstacleSpec specs[] = {
-      {{5, 8, 0}, 0, 0.8, {0, 0, 0}, {49, 10, 0}},     {{40, 5, 0}, 2, 1.0, {36, 0, 0}, {45, 49, 0}},
-      {{40, 40, 0}, 3, 0.6, {35, 33, 0}, {49, 49, 0}}, {{20, 36, 0}, 0, 0.5, {15, 33, 0}, {35, 45, 0}},
-      {{3, 20, 0}, 2, 0.7, {0, 12, 0}, {6, 45, 0}},    {{25, 42, 0}, 1, 0.9, {15, 40, 0}, {35, 49, 0}},
+      {{5, 8, 0}, 0, 0.8, {0, 0, 0}, {49, 10, 0}},
+      {{40, 5, 0}, 2, 1.0, {36, 0, 0}, {45, 49, 0}},
+      {{40, 40, 0}, 3, 0.6, {35, 33, 0}, {49, 49, 0}},
+      {{20, 36, 0}, 0, 0.5, {15, 33, 0}, {35, 45, 0}},
+      {{3, 20, 0}, 2, 0.7, {0, 12, 0}, {6, 45, 0}},
+      {{25, 42, 0}, 1, 0.9, {15, 40, 0}, {35, 49, 0}},
   };
   std::vector<MovingObstacle> out;
   for (std::size_t i = 0; i < std::size(specs); ++i)
@@ -143,7 +146,8 @@ std::string lengths(const std::vector<NavigationStats>& by_sight) {
 int longerWithMoreSight(const std::vector<NavigationStats>& by_sight) {
   int n = 0;
   for (std::size_t i = 1; i < by_sight.size(); ++i)
-    n += by_sight[i].mean() > by_sight[i - 1].mean() + by_sight[i].twoSe() + by_sight[i - 1].twoSe() + 1e-9;
+    n += by_sight[i].mean() >
+         by_sight[i - 1].mean() + by_sight[i].twoSe() + by_sight[i - 1].twoSe() + 1e-9;
   return n;
 }
 
@@ -165,37 +169,42 @@ std::string rnaMaps(const Options& options, const RnaTables& t, const Seed000Sce
   };
   const std::size_t last = t.dead_end_sights.size() - 1, last2 = t.scene2_sights.size() - 1;
   std::vector<std::string> files = {
-      drawSeed000Scene(options, name, 1, dead_end,
-                       {{"RNA" + sight(t.dead_end_sights, 0), t.dead_end.at("rna").front().shortest},
-                        {"RNA" + sight(t.dead_end_sights, last), t.dead_end.at("rna").back().shortest},
-                        {"WF-RNA" + sight(t.dead_end_sights, 0), t.dead_end.at("wf_rna").front().shortest},
-                        {"D* Lite" + sight(t.dead_end_sights, 0),
-                         t.dead_end.at("d_star_lite").front().shortest}}),
-      drawSeed000Scene(options, name, 2, scene2,
-                       {{"RNA" + sight(t.scene2_sights, last2), t.scene2.at("rna").back().shortest},
-                        {"WF-RNA" + sight(t.scene2_sights, last2), t.scene2.at("wf_rna").back().shortest},
-                        {"D* Lite" + sight(t.scene2_sights, last2),
-                         t.scene2.at("d_star_lite").back().shortest}})};
-  Seed000Scene random{"random map 1 of " + std::to_string(t.maps), random_map, {1, 1, 0}, {48, 48, 0},
+      drawSeed000Scene(
+          options, name, 1, dead_end,
+          {{"RNA" + sight(t.dead_end_sights, 0), t.dead_end.at("rna").front().shortest},
+           {"RNA" + sight(t.dead_end_sights, last), t.dead_end.at("rna").back().shortest},
+           {"WF-RNA" + sight(t.dead_end_sights, 0), t.dead_end.at("wf_rna").front().shortest},
+           {"D* Lite" + sight(t.dead_end_sights, 0),
+            t.dead_end.at("d_star_lite").front().shortest}}),
+      drawSeed000Scene(
+          options, name, 2, scene2,
+          {{"RNA" + sight(t.scene2_sights, last2), t.scene2.at("rna").back().shortest},
+           {"WF-RNA" + sight(t.scene2_sights, last2), t.scene2.at("wf_rna").back().shortest},
+           {"D* Lite" + sight(t.scene2_sights, last2),
+            t.scene2.at("d_star_lite").back().shortest}})};
+  Seed000Scene random{"random map 1 of " + std::to_string(t.maps),
+                      random_map,
+                      {1, 1, 0},
+                      {48, 48, 0},
                       "random, 25 % of the cells blocked (seeded)"};
   files.push_back(drawSeed000Scene(options, name, 3, random,
                                    {{"RNA", t.random_maps.at("rna").shortest},
                                     {"WF-RNA", t.random_maps.at("wf_rna").shortest},
                                     {"D* Lite", t.random_maps.at("d_star_lite").shortest}}));
-  ReproductionMap fig = gridMap(scene1.name + " with moving obstacles", scene1.grid, scene1.start,
-                                scene1.goal);
+  ReproductionMap fig =
+      gridMap(scene1.name + " with moving obstacles", scene1.grid, scene1.start, scene1.goal);
   const char* labels[3] = {"RNA", "WF-RNA", "D* Lite"};
   for (int j = 0; j < 3; ++j)
     if (!t.moving[0][j].shortest.empty())
-      fig.paths.push_back({std::string(labels[j]) + ", constant velocity",
-                           cellCentres(t.moving[0][j].shortest)});
+      fig.paths.push_back(
+          {std::string(labels[j]) + ", constant velocity", cellCentres(t.moving[0][j].shortest)});
   for (const MovingObstacle& o : moving.obstacles())
     fig.moving_obstacle_starts.push_back(o.positionAt(0.0) + Eigen::Vector2d(0.5, 0.5));
   files.push_back(writeReproductionMap(options.out_dir, name, 4, fig));
-  return mapFiguresMarkdown(
-      files, {dead_end.origin, scene2.origin,
-              "random (Fig. 6.7's kind; the thesis's random maps are figures only)",
-              scene1.origin + "; the squares mark where the six obstacles start"});
+  return mapFiguresMarkdown(files,
+                            {dead_end.origin, scene2.origin,
+                             "random (Fig. 6.7's kind; the thesis's random maps are figures only)",
+                             scene1.origin + "; the squares mark where the six obstacles start"});
 }
 
 std::vector<Finding> rnaFindings(const RnaTables& t) {
@@ -207,24 +216,29 @@ std::vector<Finding> rnaFindings(const RnaTables& t) {
       longerWithMoreSight(rna) == 0, "dead end, RNA mean lengths by sight: " + lengths(rna),
       "RNA's local MSAC is random and its paths are lightly smoothed only (the thesis saw "
       "unnecessary moves from that at sight 18 too), so neighbouring sights can swap"));
-  const double gap_small = wf.front().mean() / t.opt_dead_end - 1, gap_big = wf.back().mean() / t.opt_dead_end - 1;
+  const double gap_small = wf.front().mean() / t.opt_dead_end - 1,
+               gap_big = wf.back().mean() / t.opt_dead_end - 1;
   f.push_back(checkedFinding(
       "The robot moves optimally only when its sight covers the whole concave obstacle (claim 14)",
       gap_big < 0.01 && gap_small > 0.05,
-      "WF-RNA (optimal local planner) " + seed000Number(100 * gap_small, 1) + " % above the optimum at sight " +
-          std::to_string(t.dead_end_sights.front()) + ", " + seed000Number(100 * gap_big, 1) +
-          " % at sight " + std::to_string(t.dead_end_sights.back()),
+      "WF-RNA (optimal local planner) " + seed000Number(100 * gap_small, 1) +
+          " % above the optimum at sight " + std::to_string(t.dead_end_sights.front()) + ", " +
+          seed000Number(100 * gap_big, 1) + " % at sight " +
+          std::to_string(t.dead_end_sights.back()),
       "at the sights run here the whole dead end is not both hidden at the small end and seen at "
       "the large end"));
   const auto& rna2 = t.scene2.at("rna");
   f.push_back(checkedFinding(
       "The path improves with the sight, on scene 2 (our cup, larger than the view)",
-      longerWithMoreSight(rna2) == 0, "RNA mean lengths by sight " + [&] {
-        std::string s;
-        for (std::size_t i = 0; i < t.scene2_sights.size(); ++i)
-          s += (i ? ", " : "") + std::to_string(t.scene2_sights[i]);
-        return s;
-      }() + ": " + lengths(rna2),
+      longerWithMoreSight(rna2) == 0,
+      "RNA mean lengths by sight " +
+          [&] {
+            std::string s;
+            for (std::size_t i = 0; i < t.scene2_sights.size(); ++i)
+              s += (i ? ", " : "") + std::to_string(t.scene2_sights[i]);
+            return s;
+          }() +
+          ": " + lengths(rna2),
       "differences beyond two standard errors of the runs' mean; whether the robot commits to "
       "the cup's far opening before it sees the second wall depends on where the view's edge "
       "falls, which does not change monotonically with the sight",
@@ -271,7 +285,8 @@ Report seed000Rna(const Options& options) {
          "moving-obstacle tables averages "
       << runs << " runs (seeds " << seed << "..." << seed + runs - 1 << ") and each RNA row of "
       << "the scene-2 table " << (options.quick ? 1 : std::min(runs, 3))
-      << " (a run there takes tens of seconds); the random-map row runs once per map; WF-RNA and D* Lite are deterministic "
+      << " (a run there takes tens of seconds); the random-map row runs once per map; WF-RNA and "
+         "D* Lite are deterministic "
          "(one run per row, except with moving obstacles, whose routes change with the seed).\n\n";
 
   const Seed000Scene dead_end = seed000DeadEndScene();
@@ -282,14 +297,16 @@ Report seed000Rna(const Options& options) {
       << seed000Number(t.opt_dead_end, 2) << ".\n\n"
       << kHeader;
   const NavigationWorld dead_end_world(dead_end.grid);
-  t.dead_end_sights = options.quick ? std::vector<int>{6, 30} : std::vector<int>{4, 6, 8, 12, 18, 24, 30};
+  t.dead_end_sights =
+      options.quick ? std::vector<int>{6, 30} : std::vector<int>{4, 6, 8, 12, 18, 24, 30};
   for (int sight : t.dead_end_sights)
     for (const char* name : names) {
       NavigationStats s;
       const int n = std::string(name) == "rna" ? runs : 1;
       for (int i = 0; i < n; ++i) {
         auto nav = makeNavigator(name, sight, ObstaclePrediction::ConstantVelocity);
-        add(s, runNavigation(*nav, dead_end_world, dead_end.start, dead_end.goal, limits, seed + i));
+        add(s,
+            runNavigation(*nav, dead_end_world, dead_end.start, dead_end.goal, limits, seed + i));
       }
       out << row(std::string(name) + ", sight " + std::to_string(sight), s, t.opt_dead_end,
                  "sight, dead end", rows);
@@ -315,11 +332,13 @@ Report seed000Rna(const Options& options) {
         auto nav = makeNavigator(name, sight, ObstaclePrediction::ConstantVelocity);
         add(s, runNavigation(*nav, world2, scene2.start, scene2.goal, short_limits, seed + i));
       }
-      out << row(std::string(name) + ", sight " + std::to_string(sight), s, t.opt2, "scene 2", rows);
+      out << row(std::string(name) + ", sight " + std::to_string(sight), s, t.opt2, "scene 2",
+                 rows);
       t.scene2[name].push_back(s);
     }
   if (t.scene2_sights.size() > 1)
-    out << "\nD* Lite (our baseline, not in the thesis) by sight: " << lengths(t.scene2.at("d_star_lite"))
+    out << "\nD* Lite (our baseline, not in the thesis) by sight: "
+        << lengths(t.scene2.at("d_star_lite"))
         << ". It plans with the free-space assumption (unknown cells are free), so it takes the "
            "route that looks shortest with what is in view; seeing more of a wall can make a "
            "longer detour look shortest, so its executed length need not fall with the sight.\n";
@@ -327,8 +346,9 @@ Report seed000Rna(const Options& options) {
   t.maps = options.quick ? 2 : 10;
   out << "\n### Random 50x50 maps (Fig. 6.7), 25% obstacles, start (1,1), goal (48,48), sight "
          "10\n\n"
-      << t.maps << " maps, one run each; gap = mean over maps of the executed length against that "
-                   "map's optimum.\n\n"
+      << t.maps
+      << " maps, one run each; gap = mean over maps of the executed length against that "
+         "map's optimum.\n\n"
       << kHeader;
   OccupancyGrid first_random;
   for (const char* name : names) {
@@ -339,7 +359,8 @@ Report seed000Rna(const Options& options) {
       if (m == 0) first_random = g;
       const NavigationWorld world(g);
       auto nav = makeNavigator(name, 10, ObstaclePrediction::ConstantVelocity);
-      const NavigationRun run = runNavigation(*nav, world, {1, 1, 0}, {48, 48, 0}, limits, seed + m);
+      const NavigationRun run =
+          runNavigation(*nav, world, {1, 1, 0}, {48, 48, 0}, limits, seed + m);
       add(s, run);
       if (m == 0) s.shortest = run.cells;  // the figure shows map 0
       if (run.reached)
@@ -360,7 +381,9 @@ Report seed000Rna(const Options& options) {
       << "Each obstacle moves straight at constant speed inside its rectangle and turns to a "
          "random free direction where its next cell would be a wall, the map's edge or outside "
          "the rectangle, as the thesis's do (§4.2.3); the routes are drawn in advance from the "
-         "seed (" << seed << "), so every navigator meets the same traffic. Unlike the thesis's, "
+         "seed ("
+      << seed
+      << "), so every navigator meets the same traffic. Unlike the thesis's, "
          "our obstacles do not turn away from the robot or from each other. Constant-velocity "
          "prediction is the seed's; 'trajectory' lets the robot know the obstacles' routes. "
          "Optimum without traffic "
@@ -375,11 +398,12 @@ Report seed000Rna(const Options& options) {
         auto nav = makeNavigator(names[j], 10, prediction);
         add(s, runNavigation(*nav, moving, scene1.start, scene1.goal, limits, seed + i));
       }
-      out << row(std::string(names[j]) + (k == 1 ? ", trajectory" : ", constant velocity"), s,
-                 opt1, "moving obstacles", rows);
+      out << row(std::string(names[j]) + (k == 1 ? ", trajectory" : ", constant velocity"), s, opt1,
+                 "moving obstacles", rows);
     }
   }
-  out << "\n" << rnaMaps(options, t, dead_end, scene2, scene1, first_random, moving)
+  out << "\n"
+      << rnaMaps(options, t, dead_end, scene2, scene1, first_random, moving)
       << agreementSection(rnaFindings(t));
   return {out.str(), rows};
 }

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "core/json_writer.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/seed000_scenes.h"
 #include "planning/grid/grid_planner.h"
-#include "core/json_writer.h"
 
 namespace cosim::reproduce {
 

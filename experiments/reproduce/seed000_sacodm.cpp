@@ -227,12 +227,16 @@ Report seed000Sacodm(const Options& options) {
       loop_free += r.counters.at("first_walk_loop_free_length");
       smoothed += r.counters.at("first_walk_smoothed_length");
     }
-    fig65[fig65_index++] = {n, runs, n ? raw_sum / n : kNone, raw_max, n ? loop_free / n : kNone,
+    fig65[fig65_index++] = {n,
+                            runs,
+                            n ? raw_sum / n : kNone,
+                            raw_max,
+                            n ? loop_free / n : kNone,
                             n ? smoothed / n : kNone};
     out << "| " << scene->name << " | " << n << " of " << runs << " | "
-        << seed000Number(n ? raw_sum / n : kNone, 1) << " / "
-        << seed000Number(raw_max, 1) << " | " << seed000Number(n ? loop_free / n : kNone, 1)
-        << " | " << seed000Number(n ? smoothed / n : kNone, 1) << " |\n";
+        << seed000Number(n ? raw_sum / n : kNone, 1) << " / " << seed000Number(raw_max, 1) << " | "
+        << seed000Number(n ? loop_free / n : kNone, 1) << " | "
+        << seed000Number(n ? smoothed / n : kNone, 1) << " |\n";
     JsonObject row;
     row.add("table", "Fig. 6.5")
         .add("scene", scene->name)

@@ -12,7 +12,9 @@ namespace {
 // Indices of the tables in SacodmResults::tables (the report's order).
 enum { kT8, kT9, kT10, kT11, kT12, kT13, kT14, kT15, kT16 };
 
-std::string n(double v, int decimals = 2) { return seed000Number(v, decimals); }
+std::string n(double v, int decimals = 2) {
+  return seed000Number(v, decimals);
+}
 
 // Two standard errors of the difference of two means of `a` and `b`.
 double twoSe(const Seed000Stats& a, const Seed000Stats& b) {
@@ -37,9 +39,12 @@ Finding easOrder(const std::vector<Seed000Column>& t) {
         "EAS with best-path weight 1 gives the best average at 10 iterations and weight 2 the "
         "worst, by premature convergence (Table 6.12: 95.39 / 94.92 / 98.04)",
         agrees, ours,
-        "our three averages lie within " + n(spread) + " of each other, less than two standard "
-        "errors of the difference of 10-run means (" + n(se) + "): 10 runs cannot order them, "
-        "and the thesis's own three differ by 3 %, about the same spread");
+        "our three averages lie within " + n(spread) +
+            " of each other, less than two standard "
+            "errors of the difference of 10-run means (" +
+            n(se) +
+            "): 10 runs cannot order them, "
+            "and the thesis's own three differ by 3 %, about the same spread");
   return checkedFinding(
       "EAS with best-path weight 1 gives the best average at 10 iterations and weight 2 the worst "
       "(Table 6.12)",
@@ -56,14 +61,16 @@ Finding betaShorterOnScene2(const std::vector<Seed000Column>& t) {
   const std::string claim =
       "Scene 2, gamma 50: beta 1 gives a 4.5 % shorter average than beta 0 (146.55 vs 153.49, "
       "Table 6.16)";
-  const std::string ours = "beta 0 " + n(b0.mean_length) + ", beta 1 " + n(b1.mean_length) +
-                           " (" + n(100 * std::fabs(gain), 1) + (gain >= 0 ? " % shorter)" : " % longer)");
+  const std::string ours = "beta 0 " + n(b0.mean_length) + ", beta 1 " + n(b1.mean_length) + " (" +
+                           n(100 * std::fabs(gain), 1) + (gain >= 0 ? " % shorter)" : " % longer)");
   if (gain > 0.02) return checkedFinding(claim, true, ours, "");
   if (std::fabs(b0.mean_length - b1.mean_length) < se)
     return checkedFinding(claim, false, ours,
                           "our two averages differ by less than two standard errors of 10-run "
-                          "means (" + n(se) + "), so no effect of beta is resolved on our "
-                          "rebuilt scene 2; the thesis's 4.5 % is about one such error");
+                          "means (" +
+                              n(se) +
+                              "), so no effect of beta is resolved on our "
+                              "rebuilt scene 2; the thesis's 4.5 % is about one such error");
   return checkedFinding(claim, false, ours,
                         "the distance term's pull depends on where the cup's opening lies "
                         "relative to the goal, and our scene 2 is a rebuild",
@@ -96,8 +103,8 @@ std::vector<Finding> parameterFindings(const SacodmResults& r) {
       "gamma 1: 17 %, Tables 6.9-6.10)",
       t[kT9][1].ours.mean_ms < t[kT9][0].ours.mean_ms &&
           t[kT10][1].ours.mean_ms < t[kT10][0].ours.mean_ms,
-      "gamma 7: rolling vs first " + fasterText(t[kT9][1].ours, t[kT9][0].ours) + "; gamma 1: " +
-          fasterText(t[kT10][1].ours, t[kT10][0].ours),
+      "gamma 7: rolling vs first " + fasterText(t[kT9][1].ours, t[kT9][0].ours) +
+          "; gamma 1: " + fasterText(t[kT10][1].ours, t[kT10][0].ours),
       "a first-gamma list that fills early blocks the same cells for the whole walk; on our "
       "rebuilt scene 1 those cells do not trap the ants as the thesis's did"));
   f.push_back(easOrder(t[kT12]));
@@ -139,7 +146,8 @@ std::vector<Finding> sacodmFindings(const SacodmResults& r) {
       sac2.min_length < r.msac[2].min_length,
       "SACOdm minimum " + n(sac2.min_length) + ", MSAC " + n(r.msac[2].min_length),
       "on our rebuilt scene 2 MSAC's processed paths come closer to the optimum (" +
-          n(r.scenes.opt2) + ") than the thesis's did on its own; a 3 % margin over 10 runs "
+          n(r.scenes.opt2) +
+          ") than the thesis's did on its own; a 3 % margin over 10 runs "
           "either way is within the spread of minima"));
   std::string ratios;
   double lo = 1e9;
@@ -174,9 +182,8 @@ std::vector<Finding> sacodmFindings(const SacodmResults& r) {
       "153.5 (Fig. 6.5)",
       w.walks > 0 && w.raw_max > 10 * w.loop_free_mean && w.smoothed_mean <= w.loop_free_mean,
       "scene 2, " + std::to_string(w.walks) + " of " + std::to_string(w.runs) +
-          " walks reached the goal: raw mean " + n(w.raw_mean, 1) + " (longest " +
-          n(w.raw_max, 1) + "), without cycles " + n(w.loop_free_mean, 1) + ", smoothed " +
-          n(w.smoothed_mean, 1),
+          " walks reached the goal: raw mean " + n(w.raw_mean, 1) + " (longest " + n(w.raw_max, 1) +
+          "), without cycles " + n(w.loop_free_mean, 1) + ", smoothed " + n(w.smoothed_mean, 1),
       "our walks were not long enough to show it"));
   return f;
 }

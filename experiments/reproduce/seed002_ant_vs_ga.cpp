@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "core/atomic_file.h"
-#include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/agreement_section.h"
+#include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/reproduction_map.h"
 #include "experiments/reproduce/run_spread.h"
@@ -194,11 +194,13 @@ Report seed002AntVsGa(const Options& options) {
       md << " |\n";
       rows.push_back(row);
       if (qi == 0) {  // the figure of this workspace shows its first query
-        ReproductionMap fig = gridMap(std::string(w.name) + ", query " + sp + " -> " + tp, grid, s, t);
+        ReproductionMap fig =
+            gridMap(std::string(w.name) + ", query " + sp + " -> " + tp, grid, s, t);
         fig.unit = "cells of 5 cm";
         fig.paths.push_back({"A* optimum", cellCentres(opt.cells)});
         for (int k = 0; k < kMethodCount; ++k)
-          fig.paths.push_back({std::string(kMethods[k].label) + " (best)", cellCentres(r[k].best_path)});
+          fig.paths.push_back(
+              {std::string(kMethods[k].label) + " (best)", cellCentres(r[k].best_path)});
         map_files.push_back(writeReproductionMap(options.out_dir, "seed002-ant-vs-ga",
                                                  static_cast<int>(wi) + 1, fig));
       }
@@ -226,13 +228,14 @@ Report seed002AntVsGa(const Options& options) {
   };
   std::string gaps;
   for (int k = 0; k < kMethodCount; ++k)
-    gaps += std::string(k ? ", " : "") + kMethods[k].label + " " + fmt("%.1f", 100.0 * gap_sum[k] / 9.0) + " %";
+    gaps += std::string(k ? ", " : "") + kMethods[k].label + " " +
+            fmt("%.1f", 100.0 * gap_sum[k] / 9.0) + " %";
   md << "\n"
-     << mapFiguresMarkdown(map_files,
-                           {"workspace 1: an equivalent rebuilt from the seed's lengths and obstacle "
-                            "count (its Figure 3-2 is missing); the first query's paths",
-                            "workspace 2: the same, with the walled pocket around (400,450)",
-                            "workspace 3: the same, with clutter off the optimal routes"});
+     << mapFiguresMarkdown(
+            map_files, {"workspace 1: an equivalent rebuilt from the seed's lengths and obstacle "
+                        "count (its Figure 3-2 is missing); the first query's paths",
+                        "workspace 2: the same, with the walled pocket around (400,450)",
+                        "workspace 3: the same, with clutter off the optimal routes"});
   std::vector<Finding> f;
   f.push_back(checkedFinding(
       "The workspaces get harder: the first query 610 -> 919 -> 914 cm (x1.51), the other two "
@@ -247,8 +250,8 @@ Report seed002AntVsGa(const Options& options) {
   f.push_back(checkedFinding(
       "The ants' paths are shorter than the GA's in all 9 queries (by 0.4-1.3 %)", ant_wins[0] == 9,
       "with both as the seed describes them, the ant's mean is shorter in " +
-          std::to_string(ant_wins[0]) + " of 9 queries; with ours in " + std::to_string(ant_wins[1]) +
-          " of 9; mean gap to the optimum: " + gaps,
+          std::to_string(ant_wins[0]) + " of 9 queries; with ours in " +
+          std::to_string(ant_wins[1]) + " of 9; mean gap to the optimum: " + gaps,
       "with the heuristic as written (the turn only, nothing pulling toward the target) the ants' "
       "walks wander and their paths stay far above the optimum: the seed's near-optimal ant "
       "lengths need something its text does not describe. Our GA's shortening mutation "

@@ -14,12 +14,12 @@
 #include <vector>
 
 #include "core/atomic_file.h"
-#include "experiments/reproduce/report_files.h"
+#include "core/stop_token.h"
 #include "experiments/reproduce/agreement_section.h"
+#include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/reproduction_map.h"
 #include "experiments/reproduce/seed002_maklink_map.h"
-#include "core/stop_token.h"
 #include "planning/swarm/acs_maklink.h"
 #include "planning/swarm/maklink_graph.h"
 
@@ -177,7 +177,8 @@ Report seed002Maklink(const Options& options) {
       s.conv += convergedAt(res.history);
       s.iters += res.iterations;
       s.time_ms += res.time_ms;
-      if (res.length < s.best) s.best = res.length, s.best_offsets = res.offsets, s.best_path = res.path;
+      if (res.length < s.best)
+        s.best = res.length, s.best_offsets = res.offsets, s.best_path = res.path;
       csv << r << ",acs," << p.levels << "," << res.length << "," << res.iterations << ","
           << convergedAt(res.history) << "," << res.time_ms << "\n";
     }
@@ -261,8 +262,8 @@ Report seed002Maklink(const Options& options) {
   findings.push_back(checkedFinding(
       "The MAKLINK graph has l = 26 free lines and Dijkstra's path crosses d = 9",
       graph.lines().size() == 26 && route.lines.size() == 9,
-      "l = " + std::to_string(graph.lines().size()) + ", d = " + std::to_string(route.lines.size()) +
-          " (the map was built to these)",
+      "l = " + std::to_string(graph.lines().size()) +
+          ", d = " + std::to_string(route.lines.size()) + " (the map was built to these)",
       "the rebuilt map does not have the seed's structure"));
   const double dijkstra_gap = route.length / 507.692 - 1.0;
   findings.push_back(checkedFinding(
@@ -279,7 +280,8 @@ Report seed002Maklink(const Options& options) {
       "on our rebuilt map the optimal offsets save a different share"));
   findings.push_back(checkedFinding(
       "Finer offsets (21 levels) give a best no worse than 11 levels (439.372 vs 440.233 m)",
-      acs[1].best <= acs[0].best + 1e-9, fmt("%.3f", acs[1].best) + " vs " + fmt("%.3f", acs[0].best) + " m",
+      acs[1].best <= acs[0].best + 1e-9,
+      fmt("%.3f", acs[1].best) + " vs " + fmt("%.3f", acs[0].best) + " m",
       "with 21 levels the ants' search space is larger and 200 tours did not find its best"));
   findings.push_back(checkedFinding(
       "ACS converges in fewer iterations than the GA (175 vs 912)", acs_conv < ga_conv,
@@ -288,7 +290,8 @@ Report seed002Maklink(const Options& options) {
       "our GA's convergence criterion differs from the seed's, which is not stated"));
   findings.push_back(checkedFinding(
       "An ACS iteration costs less than a GA generation (0.00059 vs 0.00067 s)",
-      per_iter_acs < per_iter_ga, fmt("%.6f", per_iter_acs) + " vs " + fmt("%.6f", per_iter_ga) + " s",
+      per_iter_acs < per_iter_ga,
+      fmt("%.6f", per_iter_acs) + " vs " + fmt("%.6f", per_iter_ga) + " s",
       "the cost per iteration is the implementation's: our ACS tour builds 10 ants' tours of 9 "
       "choices among 11 options and checks each against the polygons, our GA generation "
       "evaluates 50 individuals; the seed's implementations are not described"));

@@ -111,8 +111,8 @@ MapResult runMap(const GridQuery& q, int runs) {
   double lattice = 0, euclid = 0;
   for (std::size_t i = 1; i < turns.size(); ++i) {
     const Cell &a = turns[i - 1], &b = turns[i];
-    const double e = std::sqrt(double((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) +
-                                      (a.z - b.z) * (a.z - b.z)));
+    const double e = std::sqrt(
+        double((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z)));
     euclid += e;
     lattice += e * (1.0 + latticeExcess(a, b));
   }
@@ -121,7 +121,9 @@ MapResult runMap(const GridQuery& q, int runs) {
 }
 
 // Seed value of our planner column p (the two Lazy Theta* columns share the thesis's).
-int seedColumn(int p) { return std::min(p, 2); }
+int seedColumn(int p) {
+  return std::min(p, 2);
+}
 
 std::string mapTable(const PublishedRow& pub, const MapResult& r) {
   const Measured* ours = r.ours;
@@ -135,20 +137,26 @@ std::string mapTable(const PublishedRow& pub, const MapResult& r) {
     for (int p = 0; p < 3; ++p) md += " | " + seed_value(p) + " | " + our_value(p);
     md += " | " + our_value(3) + " |\n";
   };
-  row("path length [m]", [&](int p) { return fmt("%.4f", pub.length[p]); },
+  row(
+      "path length [m]", [&](int p) { return fmt("%.4f", pub.length[p]); },
       [&](int p) { return ours[p].success ? fmt("%.4f", ours[p].length) : "no path"; });
-  row("length vs Basic Theta* (seed: recomputed)",
+  row(
+      "length vs Basic Theta* (seed: recomputed)",
       [&](int p) { return fmt("%.2f%%", 100 * pub.length[p] / pub.length[1]); },
       [&](int p) { return fmt("%.2f%%", 100 * ours[p].length / ours[1].length); });
-  row("time [ms]", [&](int p) { return fmt("%.1f", 1000 * pub.time_s[p]); },
+  row(
+      "time [ms]", [&](int p) { return fmt("%.1f", 1000 * pub.time_s[p]); },
       [&](int p) { return fmt("%.3f", ours[p].time_ms); });
-  row("time vs Basic Theta* (seed: recomputed)",
+  row(
+      "time vs Basic Theta* (seed: recomputed)",
       [&](int p) { return fmt("%.2f%%", 100 * pub.time_s[p] / pub.time_s[1]); },
       [&](int p) { return fmt("%.2f%%", 100 * ours[p].time_ms / ours[1].time_ms); });
-  row("line-of-sight checks",
+  row(
+      "line-of-sight checks",
       [&](int p) { return pub.los[p] < 0 ? std::string("-") : fmt("%.0f", pub.los[p]); },
       [&](int p) { return ours[p].los < 0 ? std::string("-") : fmt("%.0f", ours[p].los); });
-  row("expansions", [](int) { return std::string("-"); },
+  row(
+      "expansions", [](int) { return std::string("-"); },
       [&](int p) { return fmt("%.0f", ours[p].expansions); });
   return md;
 }
@@ -245,13 +253,13 @@ Report seed003Discrete(const Options& options) {
     md += "\nBasic/Lazy line-of-sight ratio: seed " + fmt("%.2f", pub.los[1] / pub.los[2]) +
           "x, ours (thesis variant) " + fmt("%.2f", r.ours[1].los / r.ours[2].los) + "x.\n\n";
     addJsonRows(m, pub, r, rows);
-    ReproductionMap fig = gridMap(m.name + (m.planar ? "" : " (seen from above)"), grid,
-                                  q.start, q.goal);
+    ReproductionMap fig =
+        gridMap(m.name + (m.planar ? "" : " (seen from above)"), grid, q.start, q.goal);
     fig.unit = "m";
     for (int p = 0; p < kPlanners; ++p)
       if (r.ours[p].success) fig.paths.push_back({kLabels[p], cellCentres(r.ours[p].cells)});
-    map_files.push_back(writeReproductionMap(options.out_dir, "seed003-discrete",
-                                             static_cast<int>(k) + 1, fig));
+    map_files.push_back(
+        writeReproductionMap(options.out_dir, "seed003-discrete", static_cast<int>(k) + 1, fig));
     map_how.push_back(m.name + ": an equivalent rebuilt from the thesis's figure only (size, " +
                       "obstacle count, start and goal from the text; boxes chosen to match the "
                       "description)");
@@ -262,6 +270,35 @@ Report seed003Discrete(const Options& options) {
 }
 
 namespace {
+
+// Basic Theta*'s check count on 3D map 1 and the times, appended to f.
+void countAndTimeFindings(const std::vector<MapResult>& results, std::vector<Finding>& f) {
+  const Measured* m1 = results[1].ours;
+  const double per_expansion = m1[1].los / m1[1].expansions;
+  f.push_back(checkedFinding(
+      "Basic Theta* makes 12 323 line-of-sight checks on 3D map 1 (Tab. 2)",
+      std::fabs(m1[1].los / 12323 - 1) < 0.25,
+      fmt("%.0f", m1[1].los) + " checks, " + fmt("%.0f", m1[1].expansions) + " expansions",
+      "Basic Theta* checks every free neighbour of every expanded cell (" +
+          fmt("%.1f", per_expansion) +
+          " checks per expansion here), so its count scales with the cells expanded, and our "
+          "rebuilt map 1 makes it expand " +
+          fmt("%.0f", m1[1].expansions) + " cells; at our rate the thesis's count means about " +
+          fmt("%.0f", 12323 / per_expansion) + " expansions, a search about " +
+          fmt("%.1f", m1[1].expansions * per_expansion / 12323) +
+          "x smaller than ours; how much of the map the search must cover is set by the layout, "
+          "which the thesis gives as a figure only"));
+  f.push_back(statedFinding(
+      "Time: A* about 59 % of Basic Theta* in 2D, about equal in 3D; Lazy Theta* slowest on "
+      "map 3 (117.58 %)",
+      Finding::Verdict::kDiffers,
+      "A* / Basic Theta* time " +
+          fmt("%.1f", 100 * results[0].ours[0].time_ms / results[0].ours[1].time_ms) +
+          " % (2D) to " +
+          fmt("%.1f", 100 * results[3].ours[0].time_ms / results[3].ours[1].time_ms) + " % (map 3)",
+      "compiled C++ spends its time in line-of-sight checks where interpreted MATLAB spends it "
+      "in per-expansion overhead (see \"Why our time ratios differ\" above)"));
+}
 
 std::vector<Finding> findings(const std::vector<MapResult>& results) {
   std::vector<Finding> f;
@@ -274,7 +311,8 @@ std::vector<Finding> findings(const std::vector<MapResult>& results) {
     astar_excess.push_back(o[0].length / o[1].length - 1);
     lattice_excess.push_back(r.theta_segments_lattice_excess);
     lazy_excess.push_back(o[2].length / o[1].length - 1);
-    lazy_close = lazy_close && o[2].length >= o[1].length - 1e-9 && o[2].length < 1.05 * o[1].length;
+    lazy_close =
+        lazy_close && o[2].length >= o[1].length - 1e-9 && o[2].length < 1.05 * o[1].length;
     lazy_longer += o[2].length > o[1].length + 1e-9;
     los_ratio.push_back(o[1].los / o[2].los);
     lazy_fewer = lazy_fewer && o[2].los < o[1].los;
@@ -307,14 +345,14 @@ std::vector<Finding> findings(const std::vector<MapResult>& results) {
       "checked without them",
       false));
   const Measured* m1 = results[1].ours;
-  f.push_back(checkedFinding(
-      "Lazy Theta* is longer than A* on 3D map 1 (36.04 vs 35.56 m, Tab. 2)",
-      m1[2].length > m1[0].length,
-      fmt("%.2f", m1[2].length) + " vs " + fmt("%.2f", m1[0].length) + " m; ours (re-queue) " +
-          fmt("%.2f", m1[3].length) + " m",
-      "our A* is " + fmt("%.1f", 100 * astar_excess[1]) + " % above Basic Theta* on map 1 (the "
-      "thesis's: 1.45 %, see the A* line), so the thesis variant's " +
-          fmt("%.2f", 100 * lazy_excess[1]) + " % stays far below it"));
+  f.push_back(checkedFinding("Lazy Theta* is longer than A* on 3D map 1 (36.04 vs 35.56 m, Tab. 2)",
+                             m1[2].length > m1[0].length,
+                             fmt("%.2f", m1[2].length) + " vs " + fmt("%.2f", m1[0].length) +
+                                 " m; ours (re-queue) " + fmt("%.2f", m1[3].length) + " m",
+                             "our A* is " + fmt("%.1f", 100 * astar_excess[1]) +
+                                 " % above Basic Theta* on map 1 (the "
+                                 "thesis's: 1.45 %, see the A* line), so the thesis variant's " +
+                                 fmt("%.2f", 100 * lazy_excess[1]) + " % stays far below it"));
   f.push_back(checkedFinding(
       "Lazy Theta* needs far fewer line-of-sight checks than Basic Theta* (2.35x in 2D, about "
       "10x in 3D)",
@@ -322,29 +360,7 @@ std::vector<Finding> findings(const std::vector<MapResult>& results) {
       "Basic / Lazy: " + fmt("%.2f", los_ratio[0]) + "x, " + fmt("%.2f", los_ratio[1]) + "x, " +
           fmt("%.2f", los_ratio[2]) + "x, " + fmt("%.2f", los_ratio[3]) + "x",
       "our maps are reconstructions; the ratio follows the expansions"));
-  const double per_expansion = m1[1].los / m1[1].expansions;
-  f.push_back(checkedFinding(
-      "Basic Theta* makes 12 323 line-of-sight checks on 3D map 1 (Tab. 2)",
-      std::fabs(m1[1].los / 12323 - 1) < 0.25,
-      fmt("%.0f", m1[1].los) + " checks, " + fmt("%.0f", m1[1].expansions) + " expansions",
-      "Basic Theta* checks every free neighbour of every expanded cell (" +
-          fmt("%.1f", per_expansion) +
-          " checks per expansion here), so its count scales with the cells expanded, and our "
-          "rebuilt map 1 makes it expand " +
-          fmt("%.0f", m1[1].expansions) + " cells; at our rate the thesis's count means about " +
-          fmt("%.0f", 12323 / per_expansion) +
-          " expansions, a search about " + fmt("%.1f", m1[1].expansions * per_expansion / 12323) +
-          "x smaller than ours; how much of the map the search must cover is set by the layout, "
-          "which the thesis gives as a figure only"));
-  f.push_back(statedFinding(
-      "Time: A* about 59 % of Basic Theta* in 2D, about equal in 3D; Lazy Theta* slowest on "
-      "map 3 (117.58 %)",
-      Finding::Verdict::kDiffers,
-      "A* / Basic Theta* time " +
-          fmt("%.1f", 100 * results[0].ours[0].time_ms / results[0].ours[1].time_ms) + " % (2D) to " +
-          fmt("%.1f", 100 * results[3].ours[0].time_ms / results[3].ours[1].time_ms) + " % (map 3)",
-      "compiled C++ spends its time in line-of-sight checks where interpreted MATLAB spends it "
-      "in per-expansion overhead (see \"Why our time ratios differ\" above)"));
+  countAndTimeFindings(results, f);
   return f;
 }
 

@@ -15,11 +15,11 @@
 #include <sstream>
 
 #include "core/json_reading.h"
-#include "run/run_pipeline.h"
 #include "experiments/reproduce/agreement_section.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/reproduction_map.h"
 #include "planning/worlds/seed003_maps.h"
+#include "run/run_pipeline.h"
 
 namespace cosim::reproduce {
 
@@ -273,8 +273,9 @@ Report seed003Flight(const Options& options) {
       "future work)",
       cosim_clean_all,
       "planning with the vehicle's radius plus a margin and flying a minimum-snap trajectory: "
-      "0 collisions and the goal reached in " + std::to_string(cosim_clean) + " of " +
-          std::to_string(cosim_rows) + " `cosim` rows (ideal and realistic sensing)",
+      "0 collisions and the goal reached in " +
+          std::to_string(cosim_clean) + " of " + std::to_string(cosim_rows) +
+          " `cosim` rows (ideal and realistic sensing)",
       options.quick ? "a --quick flight stops after 20 s, before the goal"
                     : "a grown plan flown smoothly still touched an obstacle or missed the goal "
                       "in a `cosim` row (see the table)"));

@@ -7,8 +7,8 @@
 // reached by a node within one step of it. The maps
 // are the reconstructions of planning/worlds/seed003_maps (the thesis shows its layouts only as
 // figures), so the ratios to RRT* are the comparable figures, not absolute lengths.
-#include <cstdio>
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <map>
 #include <sstream>
@@ -19,8 +19,8 @@
 #include "core/output_files.h"
 #include "experiments/reproduce/agreement_section.h"
 #include "experiments/reproduce/reproduction.h"
-#include "experiments/reproduce/seed003_sampling_findings.h"
 #include "experiments/reproduce/run_spread.h"
+#include "experiments/reproduce/seed003_sampling_findings.h"
 #include "experiments/reproduce/seed003_sampling_tables.h"
 #include "planning/planner_registry.h"
 #include "planning/worlds/seed003_maps.h"
@@ -167,8 +167,7 @@ Report seed003Sampling(const Options& options) {
   std::map<std::string, BestPaths> best_paths;  // per map
   for (const Seed003SamplingTable& t : kSeed003SamplingTables) {
     const std::string label = t.label;
-    if (options.quick && label != "Tab. 4" && label != "Tab. 5" && label != "Tab. 10")
-      continue;
+    if (options.quick && label != "Tab. 4" && label != "Tab. 5" && label != "Tab. 10") continue;
     const Seed003Map* map = mapNamed(maps, t.map);
     if (!map) continue;
     md << "\n## " << t.label << ": map " << t.map << ", " << t.set << " (mode " << t.mode
@@ -238,8 +237,8 @@ Report seed003Sampling(const Options& options) {
     }
     findings.push_back(f);
     BestPaths& best = best_paths[t.map];
-    for (std::size_t c = 0; c < columns.size(); ++c) best.offer(std::min<std::size_t>(c, 3),
-                                                                samples[c].best);
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      best.offer(std::min<std::size_t>(c, 3), samples[c].best);
   }
   md << ratioTable(findings);
 

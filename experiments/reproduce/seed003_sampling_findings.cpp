@@ -58,8 +58,9 @@ Finding fnShorter(const std::vector<TableFinding>& findings) {
 Finding modeTwo(const std::vector<TableFinding>& findings) {
   const TableFinding *m1 = tableNamed(findings, "Tab. 4"), *m2 = tableNamed(findings, "Tab. 5");
   if (!m1 || !m2)
-    return statedFinding("Mode 2 (all N nodes) leaves the 2D lengths unchanged", Finding::Verdict::kDiffersUnknown,
-                         "Tab. 5 not run in --quick", "run without --quick");
+    return statedFinding("Mode 2 (all N nodes) leaves the 2D lengths unchanged",
+                         Finding::Verdict::kDiffersUnknown, "Tab. 5 not run in --quick",
+                         "run without --quick");
   const double star = m2->star_length / m1->star_length;
   const double kf = (m2->kf_ratio * m2->star_length) / (m1->kf_ratio * m1->star_length);
   return checkedFinding(
@@ -136,20 +137,21 @@ std::vector<Finding> samplingFindings(const std::vector<TableFinding>& findings)
         "kind of cost and still shows no such saving, and removing the farthest leaf does not "
         "make the tree reach the goal sooner"));
   out.push_back(modeTwo(findings));
-  if (const TableFinding *m1 = tableNamed(findings, "Tab. 4"), *m2 = tableNamed(findings, "Tab. 5");
+  if (const TableFinding* m1 = tableNamed(findings, "Tab. 4"), *m2 = tableNamed(findings, "Tab. 5");
       m1 && m2)
     out.push_back(checkedFinding(
         "Mode 2 costs about 1.6-1.7x the time of mode 1 in 2D (RRT* 4.92 vs 2.97 s, Tabs. 4-5)",
         m2->star_time_ms / m1->star_time_ms > 1.3 && m2->star_time_ms / m1->star_time_ms < 2.2,
-        "our RRT* (thesis) median time ratio " + fmt("%.2f", m2->star_time_ms / m1->star_time_ms) + "x",
+        "our RRT* (thesis) median time ratio " + fmt("%.2f", m2->star_time_ms / m1->star_time_ms) +
+            "x",
         "our mode-1 RRT* stops at its first path, after " + fmt("%.0f", m1->star_first) +
             " of the N = 1000 nodes (median), so mode 2 adds most of the work; the thesis's "
             "mode 1 took 60 % of its mode-2 time, so its first path came late on its map. "
             "Where the first path comes depends on the layout, and ours is a rebuild"));
-  out.push_back(statedFinding(
-      "The maps' obstacle layouts (figures only in the thesis)", Finding::Verdict::kDiffers,
-      "absolute lengths differ", "the maps are equivalents rebuilt from sizes, starts, goals and "
-      "descriptions (drawn above); compare the ratio columns"));
+  out.push_back(statedFinding("The maps' obstacle layouts (figures only in the thesis)",
+                              Finding::Verdict::kDiffers, "absolute lengths differ",
+                              "the maps are equivalents rebuilt from sizes, starts, goals and "
+                              "descriptions (drawn above); compare the ratio columns"));
   return out;
 }
 
@@ -174,8 +176,9 @@ std::string samplingMaps(const Options& options, const std::vector<Seed003Map>& 
       fig.paths.push_back(line);
     }
     files.push_back(writeReproductionMap(options.out_dir, "seed003-sampling", ++index, fig));
-    how.push_back(m.name + ": an equivalent rebuilt from the thesis's figure only (size, start, "
-                           "goal and description from the text)");
+    how.push_back(m.name +
+                  ": an equivalent rebuilt from the thesis's figure only (size, start, "
+                  "goal and description from the text)");
   }
   return mapFiguresMarkdown(files, how);
 }

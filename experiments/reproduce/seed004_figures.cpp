@@ -9,14 +9,16 @@ namespace cosim::reproduce {
 std::string drawMapfInstance(const std::string& out_dir, const std::string& name, int index,
                              const std::string& title, const MapfInstance& instance,
                              const std::vector<std::pair<std::string, const MapfTrial*>>& trials) {
-  ReproductionMap fig = gridMap(title, instance.grid, instance.starts.front(), instance.goals.front());
+  ReproductionMap fig =
+      gridMap(title, instance.grid, instance.starts.front(), instance.goals.front());
   for (std::size_t a = 1; a < instance.starts.size(); ++a) {
     fig.more_starts.emplace_back(instance.starts[a].x + 0.5, instance.starts[a].y + 0.5);
     fig.more_goals.emplace_back(instance.goals[a].x + 0.5, instance.goals[a].y + 0.5);
   }
   for (const auto& [label, trial] : trials)
     for (std::size_t a = 0; a < trial->paths.size(); ++a)
-      fig.paths.push_back({label + ", robot " + std::to_string(a + 1), cellCentres(trial->paths[a])});
+      fig.paths.push_back(
+          {label + ", robot " + std::to_string(a + 1), cellCentres(trial->paths[a])});
   return writeReproductionMap(out_dir, name, index, fig);
 }
 
@@ -40,7 +42,8 @@ std::string failureCauses(const std::vector<MapfTrial>& trials) {
     ++causes[cause];
   }
   std::string s;
-  for (const auto& [cause, n] : causes) s += (s.empty() ? "" : ", ") + cause + " " + std::to_string(n);
+  for (const auto& [cause, n] : causes)
+    s += (s.empty() ? "" : ", ") + cause + " " + std::to_string(n);
   return s.empty() ? "none" : s;
 }
 

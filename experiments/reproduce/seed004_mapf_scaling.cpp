@@ -10,9 +10,9 @@
 
 #include "experiments/reproduce/agreement_section.h"
 #include "experiments/reproduce/mapf_trial.h"
+#include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/reproduction_map.h"
 #include "experiments/reproduce/seed004_figures.h"
-#include "experiments/reproduce/reproduction.h"
 #include "planning/grid/movingai.h"
 #include "planning/mapf/movingai_instance.h"
 
@@ -39,15 +39,17 @@ std::vector<Finding> scalingFindings(const SuccessByMap& success) {
     for (const auto& [n, s] : rows)
       if (s.first > s.second) {
         ++whca_ahead;
-        if (ahead.empty()) ahead = map + " at " + std::to_string(n) + " agents (" +
-                                   formatFixed(s.first, 0) + " vs " + formatFixed(s.second, 0) + " %)";
+        if (ahead.empty())
+          ahead = map + " at " + std::to_string(n) + " agents (" + formatFixed(s.first, 0) +
+                  " vs " + formatFixed(s.second, 0) + " %)";
       }
   }
   f.push_back(checkedFinding(
       "WHCA* is the most promising method (§3.6): decoupled, it keeps solving where an optimal "
       "planner runs out of time",
-      whca_ahead > 0, "WHCA* ahead of CBS in " + std::to_string(whca_ahead) + " map/size cells" +
-                          (ahead.empty() ? "" : ", first " + ahead),
+      whca_ahead > 0,
+      "WHCA* ahead of CBS in " + std::to_string(whca_ahead) + " map/size cells" +
+          (ahead.empty() ? "" : ", first " + ahead),
       "at these sizes and time limits CBS solved every instance WHCA* solved"));
   f.push_back(checkedFinding(
       "A window of about the number of agents is needed (§3.5): with a fixed w = 8, success "
@@ -109,7 +111,8 @@ Report seed004MapfScaling(const Options& options) {
       "success % | CBS mean SOC | CBS mean ms | SOC both (WHCA*/CBS) |\n"
       "|---|---|---|---|---|---|---|---|---|---|\n";
   std::vector<JsonObject> rows;
-  std::map<std::string, std::vector<std::pair<int, std::pair<double, double>>>> success;  // map -> (n, whca, cbs)
+  std::map<std::string, std::vector<std::pair<int, std::pair<double, double>>>>
+      success;  // map -> (n, whca, cbs)
   std::string map_file, map_how;
   for (const auto& map : maps) {
     const auto map_path = dir / (map + ".map");

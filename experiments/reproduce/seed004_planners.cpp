@@ -5,16 +5,16 @@
 // numbers, so the seed column holds its qualitative claims.
 #include <cmath>
 #include <map>
-#include <tuple>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "experiments/reproduce/agreement_section.h"
 #include "experiments/reproduce/mapf_trial.h"
-#include "experiments/reproduce/reproduction_map.h"
-#include "experiments/reproduce/seed004_figures.h"
 #include "experiments/reproduce/reproduction.h"
+#include "experiments/reproduce/reproduction_map.h"
 #include "experiments/reproduce/seed004_environments.h"
+#include "experiments/reproduce/seed004_figures.h"
 
 namespace cosim::reproduce {
 
@@ -72,18 +72,23 @@ std::vector<Finding> plannerFindings(const PlannerOutcomes& o, const std::vector
   }
   f.push_back(checkedFinding(
       "The potential field fails in maze-like maps: robots stuck in local minima (§2.3, §4.6)",
-      pf_maze < 50, "maze: " + percentRow(o, E::kMaze, n, "potential_field") + "; in the open "
-      "room, where the thesis claims nothing, " + formatFixed(pf_open, 0) + " % on average",
+      pf_maze < 50,
+      "maze: " + percentRow(o, E::kMaze, n, "potential_field") +
+          "; in the open "
+          "room, where the thesis claims nothing, " +
+          formatFixed(pf_open, 0) + " % on average",
       "our potential field escapes some minima"));
   f.push_back(checkedFinding(
       "WHCA* reaches a higher success rate than LRA* in narrow-corridor mazes (Ch. 3, 7)",
-      whca_maze > lra_maze, "maze, mean over robot counts: WHCA* " + formatFixed(whca_maze, 0) +
-                                " %, LRA* " + formatFixed(lra_maze, 0) + " %",
+      whca_maze > lra_maze,
+      "maze, mean over robot counts: WHCA* " + formatFixed(whca_maze, 0) + " %, LRA* " +
+          formatFixed(lra_maze, 0) + " %",
       "in our 15 x 15 mazes LRA*'s local repair resolves the few encounters as well"));
   f.push_back(checkedFinding(
       "LRA* does badly in bottlenecks (cycles, §3.2.1); CA* is better (§3.6)",
-      lra_bottle < ca_bottle, "bottleneck, mean over robot counts: LRA* " +
-                                  formatFixed(lra_bottle, 0) + " %, CA* " + formatFixed(ca_bottle, 0) + " %",
+      lra_bottle < ca_bottle,
+      "bottleneck, mean over robot counts: LRA* " + formatFixed(lra_bottle, 0) + " %, CA* " +
+          formatFixed(ca_bottle, 0) + " %",
       "with a one-cell door and random goals, LRA*'s waits resolve the jams our instances make"));
   const int big = n.back();
   const double whca_big = o.at(E::kBottleneck, big, "whca_star");
@@ -157,9 +162,8 @@ Report seed004Planners(const Options& options) {
       std::vector<int> ratio_n(planners.size(), 0);
       for (int i = 0; i < runs; ++i) {
         const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(i);
-        const MapfInstance inst =
-            randomlyPlacedRobots(seed004Map(env, size, size, seed), robots, seed * 7919 + robots,
-                                 connectivity);
+        const MapfInstance inst = randomlyPlacedRobots(seed004Map(env, size, size, seed), robots,
+                                                       seed * 7919 + robots, connectivity);
         std::vector<MapfTrial> trials;
         for (const auto& p : planners)
           trials.push_back(runMapfTrial(p.planner, p.params, inst, time_limit_s, seed));
@@ -168,9 +172,13 @@ Report seed004Planners(const Options& options) {
           map_files.push_back(drawMapfInstance(
               options.out_dir, "seed004-planners", static_cast<int>(map_files.size()) + 1,
               std::string(seed004EnvironmentName(env)) + ", " + std::to_string(robots) + " robots",
-              inst, {{"CBS", &trials[6]}, {"WHCA*", &trials[4]}, {"LRA*", &trials[1]},
-                     {"potential field", &trials[5]}}));
-        if (env == Seed004Environment::kBottleneck) outcomes.door_share[robots] += doorCrossingShare(inst) / runs;
+              inst,
+              {{"CBS", &trials[6]},
+               {"WHCA*", &trials[4]},
+               {"LRA*", &trials[1]},
+               {"potential field", &trials[5]}}));
+        if (env == Seed004Environment::kBottleneck)
+          outcomes.door_share[robots] += doorCrossingShare(inst) / runs;
         for (std::size_t k = 0; k < planners.size(); ++k) {
           summary[k].add(trials[k]);
           if (trials[k].solved && cbs.solved && cbs.sum_of_costs > 0) {
@@ -200,10 +208,11 @@ Report seed004Planners(const Options& options) {
         rows.push_back(row);
       }
     }
-  md.append("\n").append(mapFiguresMarkdown(map_files, {"maze: the thesis's own generator (§4.1), exact",
-                                             "open: an empty room (the thesis's \"open\")",
-                                             "bottleneck: two rooms and a one-cell door, built "
-                                             "from §4.4's description"}));
+  md.append("\n").append(
+      mapFiguresMarkdown(map_files, {"maze: the thesis's own generator (§4.1), exact",
+                                     "open: an empty room (the thesis's \"open\")",
+                                     "bottleneck: two rooms and a one-cell door, built "
+                                     "from §4.4's description"}));
   md += agreementSection(plannerFindings(outcomes, robot_counts));
   return {md, rows};
 }

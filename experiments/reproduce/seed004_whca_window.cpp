@@ -5,16 +5,16 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <tuple>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "experiments/reproduce/agreement_section.h"
 #include "experiments/reproduce/mapf_trial.h"
-#include "experiments/reproduce/reproduction_map.h"
-#include "experiments/reproduce/seed004_figures.h"
 #include "experiments/reproduce/reproduction.h"
+#include "experiments/reproduce/reproduction_map.h"
 #include "experiments/reproduce/seed004_environments.h"
+#include "experiments/reproduce/seed004_figures.h"
 
 namespace cosim::reproduce {
 
@@ -36,9 +36,9 @@ std::string windowMap(const Options& options, const std::vector<MapfInstance>& d
   const auto& lo = cells.at({Environment::kBottleneck, 5, false, windows.front()});
   const auto& hi = cells.at({Environment::kBottleneck, 5, false, windows.back()});
   const std::string file = drawMapfInstance(
-      options.out_dir, "seed004-whca-window", 1, "bottleneck, 5 robots, fixed priorities",
-      drawn[0], {{"WHCA* w=" + std::to_string(windows.front()), &lo[0]},
-                 {"WHCA* w=" + std::to_string(windows.back()), &hi[0]}});
+      options.out_dir, "seed004-whca-window", 1, "bottleneck, 5 robots, fixed priorities", drawn[0],
+      {{"WHCA* w=" + std::to_string(windows.front()), &lo[0]},
+       {"WHCA* w=" + std::to_string(windows.back()), &hi[0]}});
   return mapFiguresMarkdown({file}, {"bottleneck: two rooms and a one-cell door, built from §4.4's "
                                      "description (the thesis has no map)"});
 }
@@ -60,14 +60,17 @@ std::vector<Finding> windowFindings(const WindowCells& cells, const std::vector<
       if (drop > 100.0 / runs + 1e-9) {
         ++falling;
         failed_wide.insert(failed_wide.end(), wide.begin(), wide.end());
-        if (drop > worst_drop) worst_drop = drop, worst = std::string(seed004EnvironmentName(env)) + " " + std::to_string(r);
+        if (drop > worst_drop)
+          worst_drop = drop,
+          worst = std::string(seed004EnvironmentName(env)) + " " + std::to_string(r);
       }
     }
   f.push_back(checkedFinding(
       "Success improves as the window w grows, at a higher cost (§3.5)", falling == 0,
-      "fixed priorities: success at w = " + std::to_string(windows.back()) + " below w = " +
-          std::to_string(windows.front()) + " (by more than one instance) in " + std::to_string(falling) +
-          " of " + std::to_string(rows) + " rows" + (worst.empty() ? "" : ", most in " + worst + " robots"),
+      "fixed priorities: success at w = " + std::to_string(windows.back()) +
+          " below w = " + std::to_string(windows.front()) + " (by more than one instance) in " +
+          std::to_string(falling) + " of " + std::to_string(rows) + " rows" +
+          (worst.empty() ? "" : ", most in " + worst + " robots"),
       "the failures at the widest window are: " + failureCauses(failed_wide) +
           (failureCauses(failed_wide).find("no route") != std::string::npos
                ? ". A wider window reserves each higher-priority agent's cells further ahead, so a "
@@ -112,8 +115,8 @@ std::vector<Finding> windowFindings(const WindowCells& cells, const std::vector<
     }
   f.push_back(checkedFinding(
       "A larger window helps also when priorities change (§3.5 with §4.5)", dyn_falling == 0,
-      "dynamic priorities: success at w = " + std::to_string(windows.back()) + " below w = " +
-          std::to_string(windows.front()) + " (by more than one instance) in " +
+      "dynamic priorities: success at w = " + std::to_string(windows.back()) +
+          " below w = " + std::to_string(windows.front()) + " (by more than one instance) in " +
           std::to_string(dyn_falling) + " of " + std::to_string(rows) + " rows",
       "the failures at the widest starting window there are: " + failureCauses(dyn_wide_fail) +
           "; a wide window is also replanned less often (every w/2 steps), which may let jams "
@@ -121,11 +124,13 @@ std::vector<Finding> windowFindings(const WindowCells& cells, const std::vector<
       false));
   double best_big = 0;
   for (int w : windows)
-    best_big = std::max({best_big, success(cells.at({Environment::kBottleneck, robots.back(), false, w})),
-                         success(cells.at({Environment::kBottleneck, robots.back(), true, w}))});
+    best_big =
+        std::max({best_big, success(cells.at({Environment::kBottleneck, robots.back(), false, w})),
+                  success(cells.at({Environment::kBottleneck, robots.back(), true, w}))});
   f.push_back(checkedFinding(
       "The thesis's WHCA* solves the bottleneck only for about 2 agents (§4.4)", best_big < 50,
-      "ours, " + std::to_string(robots.back()) + " robots, best window: " + formatFixed(best_big, 0) + " %",
+      "ours, " + std::to_string(robots.back()) +
+          " robots, best window: " + formatFixed(best_big, 0) + " %",
       "ours is a complete WHCA* with swap-conflict reservations and a reverse-resumable A* "
       "heuristic, the thesis's an unfinished draft; and with random starts and goals only some "
       "robots must pass the door (seed004-planners gives the share)"));
@@ -178,16 +183,17 @@ Report seed004WhcaWindow(const Options& options) {
       std::vector<MapfInstance> instances;
       for (int i = 0; i < runs; ++i) {
         const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(i);
-        instances.push_back(
-            randomlyPlacedRobots(seed004Map(env, size, size, seed), robots, seed * 7919 + robots,
-                                 8));
+        instances.push_back(randomlyPlacedRobots(seed004Map(env, size, size, seed), robots,
+                                                 seed * 7919 + robots, 8));
       }
       if (env == Seed004Environment::kBottleneck && robots == 5) drawn = {instances[0]};
       for (const char* priorities : {"fixed", "dynamic"}) {
         const bool dynamic = std::string(priorities) == "dynamic";
         md += std::string("| ") + seed004EnvironmentName(env) + " | " + std::to_string(robots) +
-              " | " + (dynamic ? "dynamic (window widened up to max(w, " + std::to_string(robots) + "))"
-                               : std::string("fixed (window w)")) + " |";
+              " | " +
+              (dynamic ? "dynamic (window widened up to max(w, " + std::to_string(robots) + "))"
+                       : std::string("fixed (window w)")) +
+              " |";
         for (const int w : windows) {
           MapfTrialSummary s;
           std::vector<MapfTrial>& cell = cells[{env, robots, dynamic, w}];

@@ -13,11 +13,11 @@
 namespace cosim {
 
 struct TurningObstacleSpec {
-  Cell start;                  // a free cell inside the rectangle
-  int direction = 0;           // initial direction, 0..7 counter-clockwise from +x
-  double speed = 1.0;          // cells per time unit (the robot moves at 1)
-  Cell box_min, box_max;       // the bounding rectangle, inclusive
-  double travel = 4000.0;      // cells of route to draw (beyond it, the obstacle retraces it)
+  Cell start;              // a free cell inside the rectangle
+  int direction = 0;       // initial direction, 0..7 counter-clockwise from +x
+  double speed = 1.0;      // cells per time unit (the robot moves at 1)
+  Cell box_min, box_max;   // the bounding rectangle, inclusive
+  double travel = 4000.0;  // cells of route to draw (beyond it, the obstacle retraces it)
 };
 
 // The obstacle's route: the cells where it turns, from its start. Diagonal steps need both side

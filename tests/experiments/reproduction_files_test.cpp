@@ -74,7 +74,8 @@ TEST_P(ThesisReproduction, QuickRunDrawsItsMapsAndEndsWithTheVerdicts) {
   const std::string tail = md.substr(closing);
   const auto count = [&](const std::string& what) {
     std::size_t n = 0;
-    for (std::size_t at = tail.find(what); at != std::string::npos; at = tail.find(what, at + 1)) ++n;
+    for (std::size_t at = tail.find(what); at != std::string::npos; at = tail.find(what, at + 1))
+      ++n;
     return n;
   };
   EXPECT_GE(count("\n- "), 2u) << tail;
@@ -82,16 +83,17 @@ TEST_P(ThesisReproduction, QuickRunDrawsItsMapsAndEndsWithTheVerdicts) {
   std::filesystem::remove_all(dir);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    All, ThesisReproduction,
-    ::testing::Values("seed000-msac", "seed000-sacodm", "seed000-rna", "seed002-maklink",
-                      "seed002-ant-vs-ga", "seed003-discrete", "seed003-sampling", "seed003-flight",
-                      "seed004-planners", "seed004-whca-window", "seed004-mapf-scaling"),
-    [](const ::testing::TestParamInfo<const char*>& info) {
-      std::string s = info.param;
-      std::replace(s.begin(), s.end(), '-', '_');
-      return s;
-    });
+INSTANTIATE_TEST_SUITE_P(All, ThesisReproduction,
+                         ::testing::Values("seed000-msac", "seed000-sacodm", "seed000-rna",
+                                           "seed002-maklink", "seed002-ant-vs-ga",
+                                           "seed003-discrete", "seed003-sampling", "seed003-flight",
+                                           "seed004-planners", "seed004-whca-window",
+                                           "seed004-mapf-scaling"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                           std::string s = info.param;
+                           std::replace(s.begin(), s.end(), '-', '_');
+                           return s;
+                         });
 
 // Acceptance of issue 17: the rebuilt workspaces 2 and 3 get harder as the seed's do (its
 // first query: 610 -> 919 -> 914 cm), every optimum stays below the seed's ant length.

@@ -31,7 +31,7 @@ TEST(Seed004DiagonalRule, ADiagonalMoveNeedsAllFourCellsFree) {
   EXPECT_FALSE(hasMove(g, {1, 1, 0}, {0, 0, 0}));
   EXPECT_FALSE(hasMove(g, {1, 1, 0}, {2, 0, 0}));  // touches (1,0) as well
   EXPECT_TRUE(hasMove(g, {0, 0, 0}, {0, 1, 0}));
-  EXPECT_TRUE(hasMove(g, {1, 1, 0}, {0, 2, 0}));  // touches (0,1), (1,2): both free
+  EXPECT_TRUE(hasMove(g, {1, 1, 0}, {0, 2, 0}));        // touches (0,1), (1,2): both free
   EXPECT_EQ(g.neighbours(g.id({1, 1, 0})).size(), 5u);  // 3 straight + 2 diagonals left
   // 4-connected: never a diagonal.
   EXPECT_FALSE(hasMove(MapfGrid(open, 4), {0, 0, 0}, {1, 1, 0}));
