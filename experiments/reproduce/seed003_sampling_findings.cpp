@@ -41,7 +41,8 @@ Finding fnShorter(const std::vector<TableFinding>& findings) {
   }
   std::string why =
       "our cap removes the childless node farthest from the goal and changes nothing else, so "
-      "RRT*FN can only be as short as RRT* or longer (fewer nodes to rewire through)";
+      "our RRT*FN stays within " + range(lo, hi) + " of RRT* (fewer nodes to rewire through "
+      "where the cap binds)";
   if (unbound > 0)
     why += "; and in the " + std::to_string(unbound) +
            " mode-1 columns where the cap never binds (the first path comes before it), RRT*FN "
