@@ -28,6 +28,9 @@ MapfTrial runMapfTrial(const std::string& planner,
   trial.solved = result.success && check.valid();
   trial.time_ms = result.time_ms;
   trial.conflicts = static_cast<int>(check.conflicts.size());
+  trial.paths = result.paths;
+  trial.message =
+      trial.solved ? "" : (result.message.empty() ? "conflicting paths" : result.message);
   if (trial.solved) {
     trial.sum_of_costs = sumOfCosts(result.paths);
     trial.makespan = makespan(result.paths);

@@ -15,7 +15,9 @@ struct MapfTrial {
   long sum_of_costs = 0;  // valid when solved
   int makespan = 0;
   double time_ms = 0.0;
-  int conflicts = 0;  // found by the validator in whatever the planner returned
+  int conflicts = 0;            // found by the validator in whatever the planner returned
+  std::string message;          // the planner's reason for failing (empty when solved)
+  std::vector<MapfPath> paths;  // what the planner returned (for the map figures)
 };
 
 // Success rate and means over repeated trials of one configuration.

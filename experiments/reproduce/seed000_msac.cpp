@@ -6,6 +6,9 @@
 #include <limits>
 #include <sstream>
 
+#include "experiments/reproduce/agreement_section.h"
+#include "experiments/reproduce/reproduction_map.h"
+#include "experiments/reproduce/seed000_msac_findings.h"
 #include "experiments/reproduce/seed000_runs.h"
 #include "planning/swarm/msac.h"
 
@@ -45,8 +48,9 @@ Report seed000Msac(const Options& options) {
                          "shorter); the seed's always ran MAX iterations.");
 
   // Table 6.1: tabu table versions (time only; 100 searches in the seed).
+  std::vector<Seed000Column> tabu_cols, post_cols[2];
   {
-    std::vector<Seed000Column> cols;
+    std::vector<Seed000Column>& cols = tabu_cols;
     const double seed_t[3] = {0.586, 0.130, 0.104};
     for (int v = 1; v <= 3; ++v)
       cols.push_back({"version " + std::to_string(v), seed_t[v - 1], kNone, kNone,
@@ -62,7 +66,7 @@ Report seed000Msac(const Options& options) {
     const double seed_t[2] = {scene_no == 1 ? 0.1010 : 3.694, scene_no == 1 ? 0.0860 : 3.070};
     const double seed_mean[2] = {scene_no == 1 ? 73.84 : 149.12, scene_no == 1 ? 73.84 : 1018.16};
     const double seed_min[2] = {scene_no == 1 ? 73.84 : 140.17, scene_no == 1 ? 73.84 : 808.67};
-    std::vector<Seed000Column> cols;
+    std::vector<Seed000Column>& cols = post_cols[scene_no - 1];
     for (int k = 0; k < 2; ++k)
       cols.push_back({k == 0 ? "yes" : "no", seed_t[k], seed_mean[k], seed_min[k],
                       msacRuns(scene, 4, 3, k == 0, 3, runs, seed)});
@@ -139,34 +143,8 @@ Report seed000Msac(const Options& options) {
         << "| scene 1: avg. length with / without processing | - | "
         << seed000Number(s1_on.mean_length, 2) << " / " << seed000Number(s1_off.mean_length, 2)
         << " |\n\n";
-    // The seed's findings on scene 2, set beside ours (computed above).
-    const auto& max3 = sweep_cols[0];
-    const auto& max1 = sweep_cols[1];
-    auto best_m = [](const std::vector<Seed000Column>& cols, bool ours) {
-      std::size_t b = 0;
-      for (std::size_t k = 1; k < cols.size(); ++k) {
-        const double v = ours ? cols[k].ours.mean_length : cols[k].seed_mean;
-        const double w = ours ? cols[b].ours.mean_length : cols[b].seed_mean;
-        if (!std::isnan(v) && (std::isnan(w) || v < w)) b = k;
-      }
-      return cols[b].label;
-    };
-    int max1_longer = 0;
-    for (std::size_t k = 0; k < max3.size(); ++k)
-      max1_longer += max1[k].ours.mean_length > max3[k].ours.mean_length;
-    out << "### Where we agree and where we differ (scene 2)\n\n"
-        << "Scene 2 is rebuilt to give lengths of the seed's size (see the scene list above), so "
-           "its lengths agree by construction; the trends are the findings:\n\n"
-        << "- best m at MAX 3 (shortest average, Table 6.4): seed m = " << best_m(max3, false)
-        << ", ours m = " << best_m(max3, true) << " ("
-        << (best_m(max3, false) == best_m(max3, true) ? "agrees" : "differs") << ").\n"
-        << "- MAX 1 gives longer averages than MAX 3 (seed: for every m, by 4-7 %): ours for "
-        << max1_longer << " of " << max3.size() << " m.\n"
-        << "- MAX 1 with m 1 fails in about 30 % of runs (seed); ours "
-        << seed000Number(100.0 * s2.failures / s2.runs, 0) << " %.\n"
-        << "- The differences between settings are within the run-to-run spread of 10 runs "
-           "(compare each average with its minimum), for the seed as for us: a reversed order "
-           "of two averages a few % apart is not a contradiction.\n\n";
+    MsacResults results{tabu_cols, post_cols[0], post_cols[1], sweep_cols, s2};
+    out << msacMaps(options, scenes, results) << agreementSection(msacFindings(results, scenes));
     JsonObject row;
     row.add("table", "MAX 1, m 1 (6.1.4)")
         .add("scene2_failure_percent", 100.0 * s2.failures / s2.runs)

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "experiments/reproduce/reproduction_map.h"
 #include "planning/grid/astar.h"
 
 namespace cosim::reproduce {
@@ -15,7 +16,7 @@ Seed000Stats runSeed000(GridPlanner& planner, const Seed000Scene& scene, int run
   Seed000Stats s;
   s.runs = runs;
   s.min_length = std::numeric_limits<double>::infinity();
-  double time_sum = 0.0, length_sum = 0.0;
+  double time_sum = 0.0, length_sum = 0.0, length_sq = 0.0;
   for (int i = 0; i < runs; ++i) {
     GridQuery q;
     q.grid = &scene.grid;
@@ -25,17 +26,22 @@ Seed000Stats runSeed000(GridPlanner& planner, const Seed000Scene& scene, int run
     q.time_limit_s = time_limit_s;
     const GridPlanResult r = planner.solveGrid(q);
     time_sum += r.time_ms;
+    if (r.counters.count("steps")) s.mean_steps += r.counters.at("steps") / runs;
     if (!r.success) {
       ++s.failures;
       continue;
     }
     length_sum += r.length;
+    length_sq += r.length * r.length;
+    if (r.length < s.min_length) s.best_path = r.cells;
     s.min_length = std::min(s.min_length, r.length);
   }
   const int ok = runs - s.failures;
   s.mean_ms = runs > 0 ? time_sum / runs : 0.0;
   s.mean_length = ok > 0 ? length_sum / ok : std::nan("");
   if (ok == 0) s.min_length = std::nan("");
+  if (ok > 1)
+    s.sd_length = std::sqrt(std::max(0.0, (length_sq - length_sum * length_sum / ok) / (ok - 1)));
   return s;
 }
 
@@ -123,6 +129,15 @@ std::string seed000Preamble(const std::string& title, const Seed000SceneSet& sce
          "on the free scene). So scene 2 was rebuilt to give the seed's lengths (see its "
          "description), not to put its optimum just below 132.41.\n\n";
   return out.str();
+}
+
+std::string drawSeed000Scene(const Options& options, const std::string& name, int index,
+                             const Seed000Scene& scene,
+                             const std::vector<std::pair<std::string, std::vector<Cell>>>& paths) {
+  ReproductionMap fig = gridMap(scene.name, scene.grid, scene.start, scene.goal);
+  for (const auto& [label, cells] : paths)
+    if (!cells.empty()) fig.paths.push_back({label, cellCentres(cells)});
+  return writeReproductionMap(options.out_dir, name, index, fig);
 }
 
 double seed000Optimum(const Seed000Scene& scene, bool conditional_diagonal) {

@@ -5,16 +5,19 @@
 #include <string>
 #include <vector>
 
+#include "core/json_writer.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/seed000_scenes.h"
 #include "planning/grid/grid_planner.h"
-#include "core/json_writer.h"
 
 namespace cosim::reproduce {
 
 struct Seed000Stats {
   int runs = 0, failures = 0;
   double mean_ms = 0.0, mean_length = 0.0, min_length = 0.0;
+  double sd_length = 0.0;       // sample standard deviation of the successful runs' lengths
+  double mean_steps = 0.0;      // the planner's "steps" counter (MSAC: synchronised steps), mean
+  std::vector<Cell> best_path;  // the shortest path found (for the map figures)
 };
 
 // Run i uses seed options.seed + i.
@@ -51,6 +54,12 @@ std::string seed000Preamble(const std::string& title, const Seed000SceneSet& sce
 
 // "12.3" with the given decimals; "-" for a NaN (no successful run).
 std::string seed000Number(double v, int decimals);
+
+// Draws `scene` with labelled paths (cells) as NAME_map<index>.png/.svg in options.out_dir;
+// returns the file base (for mapFiguresMarkdown, with scene.origin as how it was rebuilt).
+std::string drawSeed000Scene(const Options& options, const std::string& name, int index,
+                             const Seed000Scene& scene,
+                             const std::vector<std::pair<std::string, std::vector<Cell>>>& paths);
 
 // The optimum of a scene for the given diagonal mode (A*).
 double seed000Optimum(const Seed000Scene& scene, bool conditional_diagonal);

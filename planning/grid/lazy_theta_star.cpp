@@ -36,7 +36,7 @@ GridPlanResult LazyThetaStar::solveGrid(const GridQuery& query) {
           }
         }
         nodes.set(u, best, best_parent, State::OpenVerified);
-        if (best <= top.g) return true;
+        if (variant_ == Variant::kExpandAtOnce || best <= top.g) return true;
         // The deviation described in the header: back into OPEN under the true key.
         work_.open.push({best + euclideanDistance(c.x - gc.x, c.y - gc.y, c.z - gc.z), best, u});
         counters.pushes += 1;

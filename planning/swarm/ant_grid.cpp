@@ -74,6 +74,9 @@ GridPlanResult AntGrid::solveGrid(const GridQuery& query) {
     int ants_done = 0;
     for (int k = 0; k < p_.ants; ++k) {
       if (!search.walk(choose, path, dirs)) break;
+      if (p_.local_evaporation > 0.0)
+        for (std::size_t i = 1; i < path.size(); ++i)
+          tau[grid.index(path[i])] *= 1.0 - p_.local_evaporation;
       if (p_.local_search) shortcut.improve(path);
       search.offer(path, gridPathLength(path), it + 1);
       iteration_paths[ants_done++] = path;

@@ -34,6 +34,11 @@ struct AntGridParams {
   double initial_pheromone = 0.5;
   int directions = 8;  // 4, 8, 16, 24 or 32
   AntHeading heading = AntHeading::TurnAndGoal;
+  // The slides' step 3: "each time an ant moves from one vertex to the next, local evaporation
+  // happens: the pheromone concentration is multiplied by a number < 1". They give no number;
+  // this is 1 minus it, applied to every cell an ant enters (0 = off, our default). Ants walk
+  // one after another, so the next ant sees the previous ants' marks, as with per-move updates.
+  double local_evaporation = 0.0;
   // Not in the seed: shorten every ant's path with the staircase local search before the update.
   bool local_search = false;
 };

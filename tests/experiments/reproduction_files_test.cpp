@@ -3,6 +3,7 @@
 // structure is what makes the reproductions comparable with the seed, so it is pinned here.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 
 #include "experiments/reproduce/report_files.h"
@@ -48,10 +49,51 @@ TEST(ReproductionFiles, TheCommandWritesBothFilesForAQuickRun) {
   const std::string md = test::slurp(dir / "seed003-discrete.md");
   EXPECT_TRUE(test::jsonTrue(json, "quick"));
   EXPECT_NE(json.find("\"planner\": \"lazy_theta_star\""), std::string::npos);
+  EXPECT_NE(json.find("\"planner\": \"lazy_theta_star_requeue\""), std::string::npos);
   EXPECT_NE(json.find("\"map\": \"3d-3\""), std::string::npos);
   EXPECT_NE(md.find("Quick run"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
+
+// Every thesis reproduction, in a --quick run, draws its rebuilt maps beside its report (PNG and
+// SVG) and ends with the closing section, one verdict per thesis finding.
+class ThesisReproduction : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ThesisReproduction, QuickRunDrawsItsMapsAndEndsWithTheVerdicts) {
+  const std::string name = GetParam();
+  const auto dir = test::freshDir("reproduce-" + name);
+  const auto r = test::runCosim("reproduce " + name + " --quick --out " + dir.string());
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string md = test::slurp(dir / (name + ".md"));
+  EXPECT_GT(std::filesystem::file_size(dir / (name + "_map1.png")), 2000u);
+  EXPECT_NE(test::slurp(dir / (name + "_map1.svg")).find("<svg"), std::string::npos);
+  EXPECT_NE(md.find("](" + name + "_map1.png)"), std::string::npos) << md;
+  const std::size_t closing = md.find("## Where we agree and where we differ");
+  ASSERT_NE(closing, std::string::npos) << md;
+  EXPECT_EQ(md.find("\n## ", closing + 1), std::string::npos) << "not the last section";
+  const std::string tail = md.substr(closing);
+  const auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = tail.find(what); at != std::string::npos; at = tail.find(what, at + 1))
+      ++n;
+    return n;
+  };
+  EXPECT_GE(count("\n- "), 2u) << tail;
+  EXPECT_EQ(count("\n- "), count("**agrees**") + count("**differs")) << tail;
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(All, ThesisReproduction,
+                         ::testing::Values("seed000-msac", "seed000-sacodm", "seed000-rna",
+                                           "seed002-maklink", "seed002-ant-vs-ga",
+                                           "seed003-discrete", "seed003-sampling", "seed003-flight",
+                                           "seed004-planners", "seed004-whca-window",
+                                           "seed004-mapf-scaling"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                           std::string s = info.param;
+                           std::replace(s.begin(), s.end(), '-', '_');
+                           return s;
+                         });
 
 // Acceptance of issue 17: the rebuilt workspaces 2 and 3 get harder as the seed's do (its
 // first query: 610 -> 919 -> 914 cm), every optimum stays below the seed's ant length.
