@@ -7,6 +7,7 @@
 #include "experiments/bench/grid_astar_vs_boost.h"
 #include "experiments/bench/mapf_planners.h"
 #include "experiments/bench/physics_loop.h"
+#include "experiments/bench/reference_flight.h"
 #include "experiments/bench/team_scale.h"
 #include "experiments/bench/render_pipeline.h"
 #include "experiments/bench/sweep_throughput.h"
@@ -27,6 +28,7 @@ const std::vector<NamedSection>& sections() {
   static const std::vector<NamedSection> list = {
       {"physics_loop", bench::benchPhysicsLoop},
       {"sensing_loop", bench::benchSensingLoop},
+      {"reference_flight", bench::benchReferenceFlight},
       {"team_scale", bench::benchTeamScale},
       {"render_pipeline", bench::benchRenderPipeline},
       {"trajectory_generation", bench::benchTrajectoryGeneration},

@@ -6,6 +6,7 @@
 #include "cli/command.h"
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
+#include "control/piecewise_polynomial_reference.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
 #include "core/json_reading.h"
@@ -132,6 +133,8 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
     for (std::size_t v = 0; v < log.vehicles.size() && v < s.vehicles.size(); ++v) {
       log.vehicles[v].goal = s.vehicles[v].goal();
       log.vehicles[v].radius = world.vehicles()[v].params.radius;
+      if (s.vehicles[v].reference)  // its tracking error covers the reference's duration
+        log.vehicles[v].reference_end = s.vehicles[v].reference->duration();
     }
     RunRenderer renderer(world, s, log, s.render.width, s.render.height);
     if (one_frame) {

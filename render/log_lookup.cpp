@@ -17,6 +17,8 @@ ErrorReference errorReference(const Scenario& scenario, std::size_t index) {
   for (const VehicleSpec& v : scenario.vehicles) has_ground = has_ground || v.ground;
   if (index < scenario.vehicles.size() && scenario.vehicles[index].ground)
     return ErrorReference::TimedPlan;
+  if (index < scenario.vehicles.size() && scenario.vehicles[index].reference)
+    return ErrorReference::Trajectory;  // a given reference, flown in time
   // With ground robots, the top-level sections are theirs and `aerial` is the quadrotors'.
   const std::string& mode = has_ground ? scenario.aerial.trajectory_mode : scenario.trajectory_mode;
   return mode != "waypoints" ? ErrorReference::Trajectory : ErrorReference::PlannedPath;

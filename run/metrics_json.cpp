@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "control/piecewise_polynomial_reference.h"
+
 namespace cosim {
 
 namespace {
@@ -120,6 +122,10 @@ JsonObject quadrotorEntry(const RunRecord& r, std::size_t v) {
   const VehicleLog& vl = r.log.vehicles[v];
   JsonObject j = flightMetricsJson(r.metrics.vehicles[v]);
   j.add("name", vl.name).add("model", r.scenario.vehicles[v].model);
+  if (const auto& given = r.scenario.vehicles[v].reference)  // rmse_m covers its duration
+    j.add("reference_file", r.scenario.vehicles[v].reference_file.string())
+        .add("reference_duration_s", given->duration())
+        .add("reference_timescale", given->placement().timescale);
   if (r.setup.ground())
     j.add("kind", "quadrotor").add("arrival_time_s", vl.arrival_time).add("radius_m", vl.radius);
   return j;

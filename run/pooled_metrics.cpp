@@ -17,7 +17,7 @@ double pooledRms(double weighted_squares, double samples) {
 
 std::size_t trackedSamples(const VehicleLog& v) {
   if (v.samples.empty()) return 0;
-  const double t_end = v.reached_goal ? v.arrival_time : v.samples.back().t;
+  const double t_end = trackingEnd(v);
   return static_cast<std::size_t>(std::count_if(
       v.samples.begin(), v.samples.end(), [t_end](const LogSample& s) { return s.t <= t_end; }));
 }

@@ -11,7 +11,7 @@
 namespace cosim {
 
 // The samples of a vehicle's log its tracking error covers (computeFlightMetrics,
-// sim/flight_metrics.h: up to its arrival, or the whole run if it did not arrive).
+// sim/flight_metrics.h: up to its given reference's end, else its arrival, else the whole run).
 std::size_t trackedSamples(const VehicleLog& vehicle);
 
 // Pools each[m] for m in `members` (each[i] computed from log.vehicles[i]):

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "control/piecewise_polynomial_reference.h"
 #include "control/waypoint_reference.h"
 #include "planning/trajectory/minimum_snap_trajectory.h"
 #include "run/quadrotor_team_planning.h"
@@ -35,11 +36,29 @@ MinimumSnapResult fitMinimumSnap(const Scenario& s, const QuadrotorParams& q,
                                       plan.via_indices);
 }
 
+// A vehicle flying a given reference is not planned: its path is the reference, sampled (every
+// 20 ms, at most 2000 points) for path.csv and the figures.
+VehiclePlan givenReferencePlan(const VehicleSpec& spec, double inflation) {
+  VehiclePlan plan;
+  plan.success = true;
+  plan.status = PlannerStatus::ExactSolution;
+  plan.inflation = inflation;
+  plan.path.waypoints = spec.reference->sampledPath(2000, 0.02);
+  plan.via_indices = {plan.path.waypoints.size() - 1};
+  return plan;
+}
+
 // Each quadrotor its own path; the last failure, if any, is the group's.
 void planEachQuadrotor(const Scenario& s, const WorldModel& world,
                        const std::vector<std::size_t>& vehicles, const RunRequest& request,
                        const RunReporter& report, QuadrotorPlans& q) {
   for (std::size_t v : vehicles) {
+    if (s.vehicles[v].reference) {
+      report.message(s.vehicles[v].name + " flies its reference " +
+                     s.vehicles[v].reference_file.filename().string() + " (not planned)");
+      q.plans.push_back(givenReferencePlan(s.vehicles[v], world.vehicles()[v].params.radius));
+      continue;
+    }
     report.message("planning " + s.vehicles[v].name + " with " +
                    (s.planner_name.empty() ? std::string("given waypoints") : s.planner_name));
     const double radius = request.plan_as_point_mass ? 0.0 : world.vehicles()[v].params.radius;
@@ -80,6 +99,7 @@ void planQuadrotorTeam(const Scenario& s, const WorldModel& world,
 // fit of its path (nullptr on failure, with q's status and failure set).
 std::unique_ptr<ReferenceSource> singleReference(const Scenario& s, const VehicleSpec& spec,
                                                  std::size_t k, QuadrotorPlans& q) {
+  if (spec.reference) return std::make_unique<PiecewisePolynomialReference>(*spec.reference);
   ParamSet traj = s.trajectory_params;
   if (s.trajectory_mode == "waypoints") {
     const double radius = traj.getDouble("switch_radius", 0.2, 0.01, 100.0);

@@ -1,8 +1,10 @@
 #include "run/run_evaluation.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
 
+#include "control/piecewise_polynomial_reference.h"
 #include "run/navigation_driver.h"
 #include "run/pooled_metrics.h"
 
@@ -11,14 +13,16 @@ namespace cosim {
 namespace {
 
 // A robot's tracking error is against its timed plan (a time-parametrised reference); a
-// quadrotor's against its trajectory, or its path when it switches between waypoints.
+// quadrotor's against its trajectory or given reference, or its path when it switches between
+// waypoints.
 std::vector<FlightMetrics> eachVehicle(const Scenario& s, const RunSetup& setup,
                                        const RunLog& log) {
   const bool quadrotor_trajectory = setup.quadrotorSections(s).trajectory_mode != "waypoints";
   std::vector<FlightMetrics> each;
   for (std::size_t v = 0; v < log.vehicles.size(); ++v)
-    each.push_back(computeFlightMetrics(log.vehicles[v], s.world,
-                                        s.vehicles[v].ground || quadrotor_trajectory));
+    each.push_back(computeFlightMetrics(
+        log.vehicles[v], s.world,
+        s.vehicles[v].ground || quadrotor_trajectory || s.vehicles[v].reference));
   return each;
 }
 
@@ -46,10 +50,36 @@ std::optional<UavSeparationMetrics> separation(const RunSetup& setup, const Worl
   return uavSeparationMetrics(log, setup.quadrotors, ellipsoids);
 }
 
+std::string formatSeconds(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4g s", s);
+  return buf;
+}
+
+// Why a vehicle flying a given reference did not reach its last point, or "" for none: the
+// reference outlasts sim.max_time, or the vehicle had not settled there by the end of the run.
+std::string givenReferenceShortfall(const Scenario& s, const RunLog& log) {
+  std::string why;
+  for (std::size_t v = 0; v < s.vehicles.size() && v < log.vehicles.size() && why.empty(); ++v) {
+    const auto& given = s.vehicles[v].reference;
+    if (!given || log.vehicles[v].reached_goal) continue;
+    const std::string who = s.vehicles.size() > 1 ? s.vehicles[v].name + ": " : std::string();
+    if (given->duration() > s.sim.max_time)
+      why = who + "the reference lasts " + formatSeconds(given->duration()) +
+            ", longer than sim.max_time " + formatSeconds(s.sim.max_time);
+    else
+      why = who + "the reference ended at " + formatSeconds(given->duration()) +
+            " but the vehicle had not settled within sim.goal_tolerance of its last point by " +
+            "the end of the run at " + formatSeconds(log.sim_time);
+  }
+  return why;
+}
+
 // Why the run failed its task, or "" if it did not: the plan's failure, else the simulation's
-// end, else a vehicle that missed its goal or touched something. A team plan with conflicts
-// fails the run whatever the physics made of it.
-std::string failureMessage(const RunPlan& plan, const RunMetrics& m) {
+// end, else a vehicle that missed its goal (for a given reference: why) or touched something. A
+// team plan with conflicts fails the run whatever the physics made of it.
+std::string failureMessage(const Scenario& s, const RunPlan& plan, const RunLog& log,
+                           const RunMetrics& m) {
   std::string why;
   if (!plan.drivable())
     why = plan.message;
@@ -61,14 +91,16 @@ std::string failureMessage(const RunPlan& plan, const RunMetrics& m) {
   else if (isFault(m.end))
     why = faultMessage(m.end);
   else if (m.end != RunEnd::Goal || !m.reached_goal)
-    why = "goal not reached within sim.max_time";
+    why = givenReferenceShortfall(s, log);
   else if (m.collisions > 0)
     why = "collision";
+  if (why.empty() && plan.drivable() && (m.end != RunEnd::Goal || !m.reached_goal))
+    why = "goal not reached within sim.max_time";
   if (plan.status == PlanStatus::Conflicting) why = plan.message + (why.empty() ? "" : "; " + why);
   return why;
 }
 
-void evaluateOutcome(const RunPlan& plan, const RunLog& log, RunMetrics& m) {
+void evaluateOutcome(const Scenario& s, const RunPlan& plan, const RunLog& log, RunMetrics& m) {
   m.end = runEndOf(log.end_reason);
   m.reached_goal = plan.drivable();
   m.min_clearance_m = m.vehicles.empty() ? 0.0 : std::numeric_limits<double>::infinity();
@@ -77,7 +109,7 @@ void evaluateOutcome(const RunPlan& plan, const RunLog& log, RunMetrics& m) {
     m.min_clearance_m = std::min(m.min_clearance_m, v.min_clearance_m);
   }
   m.collisions = m.contacts.total();
-  m.message = failureMessage(plan, m);
+  m.message = failureMessage(s, plan, log, m);
   m.status = m.message.empty() ? 0 : 1;
 }
 
@@ -99,7 +131,7 @@ RunMetrics evaluateRun(const Scenario& scenario, const RunSetup& setup, const Wo
   m.separation = separation(setup, world, log);
   for (std::size_t v : setup.quadrotors)
     m.longest_saturation_s = std::max(m.longest_saturation_s, longestSaturation(log.vehicles[v]));
-  evaluateOutcome(plan, log, m);
+  evaluateOutcome(scenario, plan, log, m);
   return m;
 }
 

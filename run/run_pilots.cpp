@@ -5,6 +5,7 @@
 #include "control/ground_feedback_linearization.h"
 #include "control/ground_velocity_tracker.h"
 #include "control/controller_factory.h"
+#include "control/piecewise_polynomial_reference.h"
 
 namespace cosim {
 
@@ -62,6 +63,8 @@ void buildQuadrotorPilots(const Scenario& s, const RunSetup& setup, QuadrotorPla
     pilot.reference = plans.references[k].get();
     pilot.goal = s.vehicles[setup.quadrotors[k]].goal();
     pilot.planned_path = plans.plans[k].path.waypoints;
+    if (const auto& given = s.vehicles[setup.quadrotors[k]].reference)
+      pilot.reference_end = given->duration();
   }
 }
 

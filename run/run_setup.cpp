@@ -53,6 +53,23 @@ void resolveGroundRun(Scenario& s, RunSetup& setup) {
   setup.aerial = aerialSections(s);
 }
 
+// A quadrotor team whose members all fly given references is not planned (each flies its own);
+// a team planner plans all of a team or none of it, so a team with some references is refused.
+bool flyGivenReferences(const Scenario& s) {
+  std::size_t given = 0;
+  for (const VehicleSpec& v : s.vehicles) given += v.reference ? 1 : 0;
+  if (given == 0) return false;
+  if (given == s.vehicles.size()) return true;
+  for (std::size_t i = 0; i < s.vehicles.size(); ++i)
+    if (s.vehicles[i].reference)
+      throw InputError(s.file, "vehicles[" + std::to_string(i) + "].reference",
+                       "team planner '" + s.planner_name +
+                           "' plans every quadrotor together: give every vehicle a reference, or "
+                           "none (or use a single-agent planner, which plans each vehicle "
+                           "without a reference alone)");
+  return false;
+}
+
 }  // namespace
 
 bool isGroundRun(const Scenario& s) {
@@ -75,7 +92,7 @@ RunSetup resolveRun(Scenario& s, bool plan_as_point_mass) {
                      "quadrotors do not sense them");
   if (setup.ground()) {
     resolveGroundRun(s, setup);
-  } else if (isMapfPlanner(s.planner_name)) {
+  } else if (isMapfPlanner(s.planner_name) && !flyGivenReferences(s)) {
     setup.quadrotor_planning = Planning::Team;
     // A quadrotor team flies in its members' downwash. Without a controller section it gets indi
     // rather than the single vehicle's cascade: measured on swarm32.yaml, cascade let a vehicle

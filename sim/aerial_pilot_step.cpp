@@ -26,6 +26,7 @@ VehicleLog AerialPilotStep::begin(const mjData* d, std::size_t expected_samples)
   vl.max_thrust = vehicle_->params.max_thrust;
   vl.goal = pilot_->goal;
   vl.planned_path = pilot_->planned_path;
+  vl.reference_end = pilot_->reference_end;
   vl.samples.reserve(expected_samples);
   pilot_->controller->reset();
   estimator_.begin(d, *vehicle_);

@@ -24,6 +24,8 @@ struct VehiclePilot {
   ReferenceSource* reference = nullptr;
   Eigen::Vector3d goal = Eigen::Vector3d::Zero();
   std::vector<Eigen::Vector3d> planned_path;  // for the log
+  // s: when a given reference ends (VehicleLog::reference_end); negative: none.
+  double reference_end = -1.0;
   // What the flight software believes of the airframe (sim/model_error.h); nullptr: the truth.
   const QuadrotorParams* believed_airframe = nullptr;
 };

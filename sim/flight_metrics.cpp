@@ -18,6 +18,12 @@ double distanceToPolyline(const Eigen::Vector3d& p, const std::vector<Eigen::Vec
   return best;
 }
 
+double trackingEnd(const VehicleLog& log) {
+  if (log.reference_end >= 0.0) return log.reference_end + 1e-9;  // the sample at the end too
+  if (log.reached_goal) return log.arrival_time;
+  return log.samples.empty() ? 0.0 : log.samples.back().t;
+}
+
 FlightMetrics computeFlightMetrics(const VehicleLog& log, const World& world,
                                    bool error_against_trajectory) {
   FlightMetrics m;
@@ -30,6 +36,7 @@ FlightMetrics computeFlightMetrics(const VehicleLog& log, const World& world,
 
   const double t_end = log.reached_goal ? log.arrival_time : log.samples.back().t;
   m.flight_time_s = t_end - log.samples.front().t;
+  const double tracking_end = trackingEnd(log);
   double sum_sq = 0.0, estimation_sq = 0.0;
   std::size_t n = 0, saturated = 0;
   m.min_clearance_m = std::numeric_limits<double>::infinity();
@@ -48,7 +55,7 @@ FlightMetrics computeFlightMetrics(const VehicleLog& log, const World& world,
     estimation_sq += (s.est_pos - s.pos).squaredNorm();
     // Clearance over the whole run (hovering at the goal can be close to something too).
     m.min_clearance_m = std::min(m.min_clearance_m, world.distanceToObstacles(s.pos) - log.radius);
-    if (s.t > t_end) continue;  // tracking error only up to arrival
+    if (s.t > tracking_end) continue;  // tracking error only up to arrival or a reference's end
     const double e = error_against_trajectory ? (s.pos - s.ref_pos).norm()
                                               : distanceToPolyline(s.pos, log.planned_path);
     sum_sq += e * e;

@@ -28,6 +28,10 @@ struct FlightMetrics {
   double estimation_rmse_m = 0.0;
 };
 
+// Until when a vehicle's tracking error is taken: the end of its given reference
+// (VehicleLog::reference_end), else its arrival, else the end of its log.
+double trackingEnd(const VehicleLog& log);
+
 // error_against_trajectory: true when the reference is a time-parametrised trajectory.
 FlightMetrics computeFlightMetrics(const VehicleLog& log, const World& world,
                                    bool error_against_trajectory);

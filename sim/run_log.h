@@ -43,6 +43,9 @@ struct VehicleLog {
   std::vector<ContactEvent> collisions;  // onsets of contact with anything but the landing spot
   bool reached_goal = false;
   double arrival_time = -1.0;  // s, when the goal was reached
+  // s: when the vehicle's given reference ends (its duration as flown, from t = 0); its tracking
+  // error covers the samples up to then. Negative: no given reference (sim/flight_metrics.h).
+  double reference_end = -1.0;
 };
 
 // A moving obstacle's centre over time (sampled with the vehicles), for metrics and rendering.

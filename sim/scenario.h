@@ -3,6 +3,7 @@
 // MuJoCo model, the planners' worlds, the controller, rendering) is built from this value.
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +18,8 @@
 
 namespace cosim {
 
+class PiecewisePolynomialReference;  // control/piecewise_polynomial_reference.h
+
 struct VehicleSpec {
   std::string name;   // unique; prefixes every MuJoCo name of the vehicle ("uav1/base")
   std::string model;  // a model name from models/ (cf2, quad_1500g, ...) or a URDF path
@@ -30,6 +33,11 @@ struct VehicleSpec {
   // gets this mass and the model's inertia scaled by the same ratio (constant radii of
   // gyration); what a flight controller believes is its own business (docs/crazyflie.md).
   double mass = 0.0;
+  // vehicles[i].reference (sim/scenario_reference.h): a given reference flown instead of a
+  // planned path, placed (its timescale, and the start added with `relative`); then `waypoints`
+  // holds its last point alone, the goal. Null: the vehicle is planned.
+  std::shared_ptr<const PiecewisePolynomialReference> reference;
+  std::filesystem::path reference_file;  // resolved
   const Eigen::Vector3d& goal() const { return waypoints.back(); }
 };
 

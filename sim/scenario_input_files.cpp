@@ -51,6 +51,8 @@ std::vector<std::filesystem::path> scenarioInputFiles(const std::string& text,
   const YAML::Node vehicles = member(root, "vehicles");
   if (vehicles.IsDefined() && vehicles.IsSequence())
     for (const auto& v : vehicles) {
+      if (const std::string ref = scalarText(member(member(v, "reference"), "file")); !ref.empty())
+        files.push_back(relativeTo(dir, ref));
       const std::string model = scalarText(member(v, "model"));
       if (model.empty()) continue;
       bool ground = false;

@@ -1,9 +1,9 @@
 #pragma once
 // Every file a run of a scenario reads besides the scenario text itself: the grid map, the world
-// fragment (world.include) and the files it names, each vehicle's model file and a URDF's
-// meshes. A sweep's job fingerprint hashes their contents, so that a resumed sweep reruns the
-// jobs whose inputs changed (an edited fragment changed the collisions of a job whose scenario
-// text stayed the same).
+// fragment (world.include) and the files it names, each vehicle's reference file, model file and
+// a URDF's meshes. A sweep's job fingerprint hashes their contents, so that a resumed sweep
+// reruns the jobs whose inputs changed (an edited fragment changed the collisions of a job whose
+// scenario text stayed the same).
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -9,6 +9,7 @@
 #include "planning/worlds/grid_map_world.h"
 #include "sim/scenario.h"
 #include "control/crazyflie_controller_factory.h"
+#include "sim/scenario_reference.h"
 #include "sim/scenario_sensing.h"
 #include "sim/yaml_document.h"
 #include "sim/yaml_reader.h"
@@ -266,7 +267,7 @@ std::string vehicleNameProblem(const std::string& name) {
 
 void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& key,
                  const std::filesystem::path& scenario_dir, Scenario& s) {
-  r.checkKeys(n, key, {"name", "model", "start", "goal", "waypoints", "yaw", "mass"});
+  r.checkKeys(n, key, {"name", "model", "start", "goal", "waypoints", "yaw", "reference", "mass"});
   VehicleSpec v;
   v.name =
       n["name"] ? r.text(n["name"], key + ".name") : "uav" + std::to_string(s.vehicles.size() + 1);
@@ -284,6 +285,7 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
   if (!n["start"]) r.fail(n, key, "vehicle needs 'start: [x, y, z]'");
   v.start = r.vec3(n["start"], key + ".start");
   checkPointPlacement(r, n["start"], key + ".start", s, v.start);
+  if (n["reference"]) readVehicleReference(r, n, key, scenario_dir, s, v);
   if (n["waypoints"]) {
     const YAML::Node w = n["waypoints"];
     if (!w.IsSequence() || w.size() == 0)
@@ -299,7 +301,7 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
     v.waypoints.push_back(r.vec3(n["goal"], key + ".goal"));
     checkPointPlacement(r, n["goal"], key + ".goal", s, v.waypoints.back());
   }
-  if (v.waypoints.empty()) r.fail(n, key, "vehicle needs a 'goal' or 'waypoints'");
+  if (v.waypoints.empty()) r.fail(n, key, "vehicle needs a 'goal', 'waypoints' or a 'reference'");
   if (n["yaw"]) v.yaw_deg = r.number(n["yaw"], key + ".yaw", -3600, 3600);
   if (n["mass"]) {
     if (v.ground) r.fail(n["mass"], key + ".mass", "mass applies to quadrotor models, not URDFs");
@@ -524,6 +526,7 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
         root["sim"] ? root["sim"] : root, "sim.max_time",
         "max_time x control_rate x vehicles = " + std::to_string(static_cast<long long>(samples)) +
             " log samples, more than 20 million: shorten sim.max_time or lower sim.control_rate");
+  checkReferenceStarts(r, root, s);
 
   // disturbances
   if (root["disturbances"]) {

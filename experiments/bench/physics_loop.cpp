@@ -1,11 +1,10 @@
 #include "experiments/bench/physics_loop.h"
 
-#include <chrono>
 #include <cstdio>
 
 #include "control/cascade_controller.h"
 #include "control/waypoint_reference.h"
-#include "sim/aerodynamics.h"
+#include "experiments/bench/bare_replay.h"
 #include "sim/flight_simulation.h"
 #include "sim/sensors/sensor_presets.h"
 #include "sim/world_model.h"
@@ -45,7 +44,6 @@ Scenario benchScenario(double seconds) {
 Section measureLoop(const Scenario& s, const std::string& name, const std::string& what,
                     double target) {
   const WorldModel world = WorldModel::build(s);
-  const mjModel* m = world.model();
 
   // Full loop: controller at 500 Hz, logging, contacts.
   CascadeController controller(world.vehicles()[0].params, CascadeGains{});
@@ -61,30 +59,9 @@ Section measureLoop(const Scenario& s, const std::string& name, const std::strin
   options.hold_after_arrival = 1e9;  // fly for exactly max_time
   const RunLog log = simulateFlight(world, s, pilots, options);
 
-  // Bare engine: the same model replaying the same rotor commands, so it integrates the same
-  // motion (same contacts, same work per step) with no controller, logging or bookkeeping.
-  mjData* d = mj_makeData(m);
-  const auto& v = world.vehicles()[0];
-  const auto& samples = log.vehicles[0].samples;
-  const int per_control =
-      static_cast<int>(std::lround(1.0 / (s.sim.timestep * s.sim.control_rate)));
+  // Bare engine: the same flight replayed (experiments/bench/bare_replay.h).
   const long steps = log.physics_steps;
-  const auto t0 = std::chrono::steady_clock::now();
-  Eigen::Vector3d force_body, torque_body;
-  for (long k = 0; k < steps; ++k) {
-    if (k % per_control == 0)  // the rotor thrusts the loop applied, held over the period
-      rotorWrench(v.params,
-                  samples[std::min<std::size_t>(k / per_control, samples.size() - 1)].rotor_thrust,
-                  force_body, torque_body);
-    // The thrust turns with the body: the same O(1) write the loop makes.
-    const mjtNum* q = d->qpos + v.qpos_adr + 3;
-    setFreeJointWrench(
-        d, v, Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized() * force_body, torque_body);
-    mj_step(m, d);
-  }
-  const double bare_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  mj_deleteData(d);
+  const double bare_s = bareReplaySeconds(world, log, s.sim);
 
   Section out;
   out.name = name;

@@ -1,36 +1,34 @@
 // `cosim reproduce crazyflie-figure8`: a prediction of how a real Crazyflie 2.1 Brushless (37 g,
 // crazyflie-firmware's controllers with their default gains, motion capture into the onboard
-// EKF) tracks Crazyswarm2's figure-eight (figure8.csv, relative to a 1 m hover point) at
-// timescales 1.0 down to 0.5, and what makes the error grow with speed: the same flights of
-// crazyflie_lee with one effect switched off at a time (sensing and estimation latency, the
-// rotors' speed limit, rotor drag, motor lag, the firmware's belief of the mass).
-//
-// Each flight hovers at the start for kHoverBefore seconds (the real vehicle takes off and
-// settles before startTrajectory), then flies the figure once; RMSE and max error are the true
-// position against the reference over the figure's duration only.
+// EKF) tracks Crazyswarm2's figure-eight at timescales 1.0 down to 0.5, and what makes the error
+// grow with speed. Every flight is the bundled experiments/scenarios/crazyflie_figure8.yaml (what
+// `cosim run` flies) with its timescale and controller set, and, for the effect rows,
+// crazyflie_lee with one effect switched off at a time: sensing and estimation (mocap latency,
+// EKF), the rotors' speed limit (and so the firmware's capping), rotor drag, motor lag, the
+// firmware's belief of the mass. RMSE and max error as `cosim run` reports them: the true
+// position against the reference over the reference's duration.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
 #include "control/controller_factory.h"
+#include "control/piecewise_polynomial_reference.h"
 #include "core/atomic_file.h"
 #include "core/json_writer.h"
-#include "experiments/reproduce/crazyflie_figure8_reference.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "render/figures.h"
+#include "sim/flight_metrics.h"
 #include "sim/flight_simulation.h"
 #include "sim/model_error.h"
-#include "sim/sensors/sensor_presets.h"
 #include "sim/world_model.h"
 
 namespace cosim::reproduce {
 
 namespace {
 
-constexpr double kHoverBefore = 3.0;  // s of hover at the start before the figure begins
-constexpr double kFlownMass = 0.037;  // kg: the flown vehicle with uSD and RPM decks, battery
+constexpr double kFlownMass = 0.037;  // kg: the bundled scenario's vehicles[0].mass
 
 // One configuration of the study: a controller, and which effects are switched off.
 struct Variant {
@@ -55,33 +53,20 @@ const Variant kEffects[] = {
     {"lee/true_mass", "crazyflie_lee", false, false, false, false, true},
     {"lee/all_off", "crazyflie_lee", true, true, true, true, true}};
 
-// The real setup: cf21_brushless at 37 g hovering at (0, 0, 1) in an empty room, rotor drag on,
-// motion capture into the EKF. Mocap at 100 Hz with 11 ms from the cameras to the vehicle:
-// Preiss et al., "Crazyswarm: A large nano-quadcopter swarm", ICRA 2017, Sec. XI.A: 8 ms
-// software-estimated latency for one vehicle, measured 3 ms higher (their VICON ran at 100 Hz).
-Scenario setupScenario(const Variant& v, double seconds, std::uint64_t seed) {
-  Scenario s;
-  s.file = "crazyflie-figure8";
-  s.world.bounds_min = {-2.5, -2.5, 0};
-  s.world.bounds_max = {2.5, 2.5, 3};
-  VehicleSpec cf;
-  cf.name = "cf";
-  cf.model = "cf21_brushless";
-  cf.model_file = modelsDirectory() / "cf21_brushless.xml";
-  cf.mass = kFlownMass;
-  cf.start = {0, 0, 1};
-  cf.waypoints = {cf.start};
-  s.vehicles.push_back(cf);
-  s.sim.max_time = seconds;
-  s.sim.seed = seed;
-  s.controller_name = v.controller;
-  s.disturbances.rotor_drag = !v.no_rotor_drag;
-  if (!v.ideal_sensing) {
-    s.sensors = sensorPreset("mocap");
-    s.sensors.position.latency = 0.011;
-    s.sensors.attitude.latency = 0.011;
-    s.estimator.name = "ekf";
+// The bundled scenario at `timescale` under v's controller, with v's effects off.
+Scenario studyScenario(const Variant& v, double timescale, std::uint64_t seed) {
+  std::ostringstream ts;
+  ts << timescale;
+  Scenario s = loadScenario(COSIM_SCENARIOS_DIR "/crazyflie_figure8.yaml",
+                            {"vehicles[0].reference.timescale=" + ts.str(),
+                             "controller.name=" + std::string(v.controller),
+                             "sim.seed=" + std::to_string(seed)});
+  if (v.ideal_sensing) {
+    s.sensors = SensorSettings{};
+    s.estimator.name = "ground_truth";
   }
+  if (v.no_rotor_drag) s.disturbances.rotor_drag = false;
+  if (v.true_mass) s.controller_gains.set("mass", std::to_string(kFlownMass));
   return s;
 }
 
@@ -101,9 +86,7 @@ struct Row {
 };
 
 Row fly(const Variant& v, double timescale, const Options& options) {
-  FigureEightFlight reference(kHoverBefore, timescale, {0, 0, 1});
-  const double duration = reference.figureDuration();
-  const Scenario s = setupScenario(v, kHoverBefore + duration + 1.0, options.seed);
+  const Scenario s = studyScenario(v, timescale, options.seed);
   std::string xml = composeWorldXml(s);
   if (v.unlimited_thrust) setRotorConstant(xml, "max_rotor_speed", "100000");
   if (v.no_motor_lag) {
@@ -112,34 +95,28 @@ Row fly(const Variant& v, double timescale, const Options& options) {
   }
   const WorldModel world = WorldModel::fromXml(xml, s);
   const QuadrotorParams believed = believedAirframe(world.vehicles()[0].params, s.model_error);
-  ParamSet gains("crazyflie-figure8");
-  if (v.true_mass) gains.set("mass", std::to_string(kFlownMass));
+  ParamSet gains = s.controller_gains;
   std::unique_ptr<FlightController> controller = makeFlightController(v.controller, gains, believed);
+  PiecewisePolynomialReference reference = *s.vehicles[0].reference;
   std::vector<VehiclePilot> pilots(1);
   pilots[0].controller = controller.get();
   pilots[0].reference = &reference;
-  pilots[0].goal = s.vehicles[0].start;
+  pilots[0].goal = s.vehicles[0].goal();
   pilots[0].believed_airframe = &believed;
+  pilots[0].reference_end = reference.duration();
   FlightOptions flight;
   flight.settings = s.sim;
-  flight.hold_after_arrival = 0.5;
   const RunLog log = simulateFlight(world, s, pilots, flight);
 
   Row row;
   row.controller = v.label;
   row.timescale = timescale;
   row.end_reason = log.end_reason;
-  double sum = 0.0;
-  int n = 0;
-  for (const LogSample& x : log.vehicles[0].samples) {
-    if (x.t < kHoverBefore - 1e-9 || x.t > kHoverBefore + duration + 1e-9) continue;
-    const double e = (x.pos - x.ref_pos).norm();
-    sum += e * e;
-    ++n;
-    row.max_error = std::max(row.max_error, e);
-    row.peak_speed = std::max(row.peak_speed, x.ref_vel.norm());
-  }
-  row.rmse = n > 0 ? std::sqrt(sum / n) : 0.0;
+  const FlightMetrics m = computeFlightMetrics(log.vehicles[0], s.world, true);
+  row.rmse = m.rmse_m;
+  row.max_error = m.max_error_m;
+  for (const LogSample& x : log.vehicles[0].samples)
+    if (x.t <= reference.duration()) row.peak_speed = std::max(row.peak_speed, x.ref_vel.norm());
   return row;
 }
 
@@ -154,14 +131,14 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<double>& sc
                      const std::vector<const Variant*>& effects, const Options& options) {
   std::ostringstream md;
   md << "# Crazyflie 2.1 Brushless on Crazyswarm2's figure-eight: predicted tracking error\n\n"
-     << "cf21_brushless at 37 g, crazyflie-firmware's controllers with their default gains and "
-        "loop rates, the Brushless build's power distribution and capping, rotor drag, motor "
-        "lag, motion capture (100 Hz, 1 mm, 11 ms late) into the EKF; figure8.csv relative to a "
-        "1 m hover point, after "
-     << fixed(kHoverBefore, 0)
-     << " s of hover. MuJoCo at 1 kHz, control at 500 Hz, seed " << options.seed
-     << ". RMSE and max error: true position against the reference over the figure's "
-        "duration.\n\n| timescale | peak speed [m/s] |";
+     << "experiments/scenarios/crazyflie_figure8.yaml: cf21_brushless at 37 g, crazyflie-firmware's "
+        "controllers with their default gains and loop rates, the Brushless build's power "
+        "distribution and capping, rotor drag, motor lag, motion capture (100 Hz, 1 mm, 11 ms "
+        "late) into the EKF; figure8.csv relative to the 1 m start, flown from hover at t = 0. "
+        "MuJoCo at 1 kHz, control at 500 Hz, seed "
+     << options.seed
+     << ". RMSE and max error: true position against the reference over the reference's "
+        "duration, as `cosim run` reports them.\n\n| timescale | peak speed [m/s] |";
   for (const Variant* c : controllers) md << " " << c->label << " RMSE / max [m] |";
   md << "\n|---|---|";
   for (std::size_t i = 0; i < controllers.size(); ++i) md << "---|";

@@ -127,8 +127,32 @@ std::string aliasSharedMovingPath() {
   return y + "vehicles: [{name: r, model: omni_base, start: [2, 2, 0], goal: [18, 2, 0]}]\n";
 }
 
+// The valid scenario's vehicle flying `reference` instead of its goal.
+std::string withReference(const std::string& reference) {
+  return withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], reference: " +
+                      reference + "}]\n");
+}
+
+// A uav_trajectories file whose one piece lasts `duration` (all coefficients zero).
+std::string polynomialReference(const std::string& duration) {
+  std::string text = "duration";
+  for (const char* axis : {"x", "y", "z", "yaw"})
+    for (int k = 0; k < 8; ++k) text += std::string(",") + axis + "^" + std::to_string(k);
+  text += "\n" + duration;
+  for (int i = 0; i < 32; ++i) text += ",0";
+  return text + "\n";
+}
+
+// A sampled reference of `rows` rows, 10 ms apart, standing still.
+std::string manySamples(int rows) {
+  std::string text = "t,x,y,z\n";
+  for (int i = 0; i < rows; ++i) text += std::to_string(i * 0.01) + ",0,0,0\n";
+  return text;
+}
+
 std::vector<BadInput> badInputs() {
   const std::string plan = "plan {in} --out {out}";
+  const std::string run = "run {in} --no-video --out {out}";
   const std::string bench = "grid-bench {in} {in2} --planner astar --out {out}/bench.csv";
   const std::string scen8 = "version 1\n0\tx.map\t8\t8\t0\t0\t7\t7\t9.89949494\n";
   std::string rows8;
@@ -206,7 +230,43 @@ std::vector<BadInput> badInputs() {
        "", 2, "no model 'robots/none.urdf'"},
       {"vehicle_without_goal", plan,
        withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2, 1]}]\n"), "", 2,
-       "needs a 'goal' or 'waypoints'"},
+       "needs a 'goal', 'waypoints' or a 'reference'"},
+      // A given reference (vehicles[i].reference): bad files named with their line, misuses.
+      {"reference_unknown_header", run, withReference("{file: ref.csv}"), "", 2,
+       "{dir}/ref.csv: line 1: unknown header 'time,x,y,z'",
+       {{"ref.csv", "time,x,y,z\n0,0,0,0\n1,1,0,0\n"}}},
+      {"reference_times_going_back", run, withReference("{file: ref.csv, relative: true}"), "", 2,
+       "{dir}/ref.csv: line 4, column t: time 0.5 is not after the previous row's 1",
+       {{"ref.csv", "t,x,y,z\n0,0,0,0\n1,1,0,0\n0.5,1,1,0\n"}}},
+      {"reference_nan", run, withReference("{file: ref.csv, relative: true}"), "", 2,
+       "{dir}/ref.csv: line 3, column y: 'NaN' is not a finite number",
+       {{"ref.csv", "t,x,y,z\n0,0,0,0\n1,1,NaN,0\n"}}},
+      {"reference_zero_duration", run, withReference("{file: ref.csv, relative: true}"), "", 2,
+       "{dir}/ref.csv: line 2, column duration: duration 0 s is not > 0",
+       {{"ref.csv", polynomialReference("0")}}},
+      {"reference_row_too_short", run, withReference("{file: ref.csv, relative: true}"), "", 2,
+       "{dir}/ref.csv: line 3: 3 values, expected 33 (as the header)",
+       {{"ref.csv", polynomialReference("1") + "1,0,0\n"}}},
+      {"reference_empty_file", run, withReference("{file: ref.csv}"), "", 2,
+       "{dir}/ref.csv: line 1: empty file", {{"ref.csv", ""}}},
+      {"reference_too_many_rows", run, withReference("{file: ref.csv, relative: true}"), "", 2,
+       "{dir}/ref.csv: line 100003: more than 100000 intervals between samples",
+       {{"ref.csv", manySamples(100002)}}},
+      {"reference_and_goal", run,
+       withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [18, 18, 1],\n"
+                    "             reference: {file: ref.csv}}]\n"),
+       "", 2, "key vehicles[0].goal: a vehicle with a 'reference' flies it instead of a goal",
+       {{"ref.csv", "t,x,y,z\n0,2,2,1\n1,3,2,1\n"}}},
+      {"reference_missing_file", run, withReference("{file: none.csv}"), "", 2,
+       "key vehicles[0].reference.file: {dir}/none.csv: "},
+      {"reference_and_team_planner_for_some", run,
+       kWorld + "vehicles: [{name: a, model: cf2, start: [2, 2, 1], goal: [18, 18, 1]},\n"
+                "           {name: b, model: cf2, start: [2, 5, 1], reference: {file: ref.csv,\n"
+                "            relative: true}}]\nplanner: {name: cbs, resolution: 1}\n",
+       "", 2,
+       "vehicles[1].reference: team planner 'cbs' plans every quadrotor together: give every "
+       "vehicle a reference, or none",
+       {{"ref.csv", "t,x,y,z\n0,0,0,0\n1,1,0,0\n"}}},
       // Planner, trajectory, controller, simulation settings.
       {"unknown_planner", plan, withPlanner("planner: {name: teleport}\n"), "", 2,
        "unknown planner 'teleport'"},

@@ -48,6 +48,7 @@ const std::vector<std::pair<std::string, std::string>> kLoaderSections = {
     {"`world.moving_obstacles[i]` (box)", "world.moving_obstacles[1]"},
     {"`world.grid_map`", "world.grid_map"},
     {"`vehicles[i]`", "vehicles[0]"},
+    {"`vehicles[i].reference`", "vehicles[0].reference"},
     {"`controller`", "controller"},
     {"`aerial`", "aerial"},
     {"`sim`", "sim"},

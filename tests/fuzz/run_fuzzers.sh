@@ -40,6 +40,7 @@ seeds() {
     fuzz_movingai_scen) ls tests/data/movingai/*.scen ;;
     fuzz_urdf) ls models/*.urdf ;;
     fuzz_world_fragment) ls tests/fuzz/corpus/fuzz_world_fragment/*.xml ;;
+    fuzz_reference_file) ls experiments/references/*.csv ;;
   esac
   [ -d "tests/fuzz/corpus/$1" ] && find "tests/fuzz/corpus/$1" -type f
 }
@@ -53,7 +54,7 @@ dictionary() {
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   for t in fuzz_scenario fuzz_sweep fuzz_movingai_map fuzz_movingai_scen fuzz_urdf fuzz_urdf_tree \
-      fuzz_world_fragment; do
+      fuzz_world_fragment fuzz_reference_file; do
     [ -x "$BUILD/tests/fuzz/$t" ] && targets+=("$t")
   done
 fi

@@ -1,0 +1,80 @@
+#include "experiments/bench/reference_flight.h"
+
+#include <cstdio>
+#include <memory>
+
+#include "control/controller_factory.h"
+#include "control/piecewise_polynomial_reference.h"
+#include "experiments/bench/bare_replay.h"
+#include "sim/flight_metrics.h"
+#include "sim/flight_simulation.h"
+#include "sim/model_error.h"
+
+namespace cosim::bench {
+
+namespace {
+
+constexpr double kTarget = 0.8;
+
+// One flight of the figure-eight for sim.max_time in the full loop, as `cosim run` flies it.
+RunLog flyOnce(const Scenario& s, const WorldModel& world) {
+  const QuadrotorParams believed = believedAirframe(world.vehicles()[0].params, s.model_error);
+  ParamSet gains = s.controller_gains;
+  const std::unique_ptr<FlightController> controller =
+      makeFlightController(s.controller_name, gains, believed, s.controller_drag_compensation);
+  PiecewisePolynomialReference reference = *s.vehicles[0].reference;
+  std::vector<VehiclePilot> pilots(1);
+  pilots[0].controller = controller.get();
+  pilots[0].reference = &reference;
+  pilots[0].goal = s.vehicles[0].goal();
+  pilots[0].believed_airframe = &believed;
+  pilots[0].reference_end = reference.duration();
+  FlightOptions options;
+  options.settings = s.sim;
+  options.hold_after_arrival = 1e9;  // fly for exactly max_time
+  return simulateFlight(world, s, pilots, options);
+}
+
+}  // namespace
+
+Section measureReferenceFlight(bool quick, const std::string& controller) {
+  std::vector<std::string> sets;
+  if (!controller.empty()) sets.push_back("controller.name=" + controller);
+  if (quick) sets.push_back("sim.max_time=2");
+  const Scenario s = loadScenario(COSIM_SCENARIOS_DIR "/crazyflie_figure8.yaml", sets);
+  const WorldModel world = WorldModel::build(s);
+  // Several flights (one in quick mode), each loop against its own bare replay, summed: a
+  // 12 s flight takes a fraction of a second here, too short to time alone.
+  const int flights = quick ? 1 : 5;
+  double loop_s = 0.0, bare_s = 0.0, sim_s = 0.0, rmse = 0.0;
+  long steps = 0;
+  for (int i = 0; i < flights; ++i) {
+    const RunLog log = flyOnce(s, world);
+    loop_s += log.wall_time;
+    bare_s += bareReplaySeconds(world, log, s.sim);
+    sim_s += log.sim_time;
+    steps += log.physics_steps;
+    rmse = computeFlightMetrics(log.vehicles[0], s.world, true).rmse_m;
+  }
+  const double ratio = bare_s / loop_s;  // same steps: the ratio of the step rates
+  Section out;
+  out.name = "reference_flight";
+  out.figures = {{"bare_mj_step_steps_per_s", steps / bare_s, "1/s"},
+                 {"full_loop_steps_per_s", steps / loop_s, "1/s"},
+                 {"full_loop_sim_speed", sim_s / loop_s, "x real time"},
+                 {"ratio_to_bare", ratio, "x"},
+                 {"rmse_m", rmse, "m"}};
+  char target[32];
+  std::snprintf(target, sizeof target, "%.2f", kTarget);
+  out.note = s.vehicles[0].model + " flying the figure-eight reference under " + s.controller_name +
+             ", motion capture + IMU + EKF, " +
+             std::to_string(static_cast<int>(s.sim.control_rate)) + " Hz control; target " +
+             "ratio >= " + target + ": " + (ratio >= kTarget ? "met" : "NOT met");
+  return out;
+}
+
+Section benchReferenceFlight(bool quick) {
+  return measureReferenceFlight(quick, "");
+}
+
+}  // namespace cosim::bench
