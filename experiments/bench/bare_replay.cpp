@@ -8,7 +8,8 @@
 
 namespace cosim::bench {
 
-double bareReplaySeconds(const WorldModel& world, const RunLog& log, const SimSettings& sim) {
+double bareReplaySeconds(const WorldModel& world, const RunLog& log, const SimSettings& sim,
+                         bool follow_logged_state) {
   const mjModel* m = world.model();
   mjData* d = mj_makeData(m);
   const auto& v = world.vehicles()[0];
@@ -18,10 +19,23 @@ double bareReplaySeconds(const WorldModel& world, const RunLog& log, const SimSe
   const auto t0 = std::chrono::steady_clock::now();
   Eigen::Vector3d force_body, torque_body;
   for (long k = 0; k < steps; ++k) {
-    if (k % per_control == 0)  // the rotor thrusts the loop applied, held over the period
-      rotorWrench(v.params,
-                  samples[std::min<std::size_t>(k / per_control, samples.size() - 1)].rotor_thrust,
-                  force_body, torque_body);
+    if (k % per_control == 0) {  // the rotor thrusts the loop applied, held over the period
+      const LogSample& x = samples[std::min<std::size_t>(k / per_control, samples.size() - 1)];
+      rotorWrench(v.params, x.rotor_thrust, force_body, torque_body);
+      if (follow_logged_state) {  // free joint: x y z qw qx qy qz; v (world), w (body)
+        mjtNum* q = d->qpos + v.qpos_adr;
+        mjtNum* u = d->qvel + v.qvel_adr;
+        for (int i = 0; i < 3; ++i) {
+          q[i] = x.pos[i];
+          u[i] = x.vel[i];
+          u[3 + i] = x.omega[i];
+        }
+        q[3] = x.att.w();
+        q[4] = x.att.x();
+        q[5] = x.att.y();
+        q[6] = x.att.z();
+      }
+    }
     // The thrust turns with the body: the same O(1) write the loop makes.
     const mjtNum* q = d->qpos + v.qpos_adr + 3;
     setFreeJointWrench(d, v, Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized() * force_body,

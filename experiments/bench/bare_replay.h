@@ -10,7 +10,12 @@
 namespace cosim::bench {
 
 // Wall-clock seconds of log.physics_steps bare mj_step calls replaying log.vehicles[0]'s
-// thrusts on `world` (the world the log was flown in, `sim` its settings).
-double bareReplaySeconds(const WorldModel& world, const RunLog& log, const SimSettings& sim);
+// thrusts on `world` (the world the log was flown in, `sim` its settings). With
+// `follow_logged_state` the vehicle is also put back on the logged state at each control step
+// (a write of 13 numbers): an open-loop replay of a small, agile airframe drifts off the flight
+// within seconds (into the floor, where contacts make each step dearer), so only this keeps the
+// bare engine on the same motion over a long flight.
+double bareReplaySeconds(const WorldModel& world, const RunLog& log, const SimSettings& sim,
+                         bool follow_logged_state = false);
 
 }  // namespace cosim::bench

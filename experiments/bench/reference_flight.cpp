@@ -51,7 +51,7 @@ Section measureReferenceFlight(bool quick, const std::string& controller) {
   for (int i = 0; i < flights; ++i) {
     const RunLog log = flyOnce(s, world);
     loop_s += log.wall_time;
-    bare_s += bareReplaySeconds(world, log, s.sim);
+    bare_s += bareReplaySeconds(world, log, s.sim, true);
     sim_s += log.sim_time;
     steps += log.physics_steps;
     rmse = computeFlightMetrics(log.vehicles[0], s.world, true).rmse_m;

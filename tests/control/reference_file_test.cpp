@@ -81,7 +81,7 @@ struct BadFile {
 std::vector<BadFile> badFiles() {
   const std::string h = polynomialHeader() + "\n";
   std::string many = "t,x,y,z\n";
-  for (int i = 0; i <= 100001; ++i) many += std::to_string(i) + ",0,0,1\n";
+  for (int i = 0; i <= 100001; ++i) many += std::to_string(i * 0.001) + ",0,0,1\n";
   return {
       {"empty", "", "line 1", "empty file"},
       {"blank_lines_only", "\n  \n", "line 1", "empty file"},

@@ -262,7 +262,7 @@ std::vector<BadInput> badInputs() {
       {"reference_and_team_planner_for_some", run,
        kWorld + "vehicles: [{name: a, model: cf2, start: [2, 2, 1], goal: [18, 18, 1]},\n"
                 "           {name: b, model: cf2, start: [2, 5, 1], reference: {file: ref.csv,\n"
-                "            relative: true}}]\nplanner: {name: cbs, resolution: 1}\n",
+                "            relative: true}}]\nplanner: {name: cbs}\n",
        "", 2,
        "vehicles[1].reference: team planner 'cbs' plans every quadrotor together: give every "
        "vehicle a reference, or none",

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "control/piecewise_polynomial_reference.h"
 #include "core/input_error.h"
 
 namespace cosim {
