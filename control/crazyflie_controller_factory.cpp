@@ -75,10 +75,12 @@ CrazyfliePidGains readPid(ParamSet& p) {
 
 std::unique_ptr<FlightController> makeCrazyflieController(const std::string& name, ParamSet& gains,
                                                           const QuadrotorParams& params) {
-  if (name == "crazyflie_lee") return std::make_unique<CrazyflieLeeController>(params, readLee(gains));
+  if (name == "crazyflie_lee")
+    return std::make_unique<CrazyflieLeeController>(params, readLee(gains));
   if (name == "crazyflie_mellinger")
     return std::make_unique<CrazyflieMellingerController>(params, readMellinger(gains));
-  if (name == "crazyflie_pid") return std::make_unique<CrazyfliePidController>(params, readPid(gains));
+  if (name == "crazyflie_pid")
+    return std::make_unique<CrazyfliePidController>(params, readPid(gains));
   return nullptr;
 }
 

@@ -6,7 +6,9 @@ namespace cosim {
 
 namespace {
 
-Eigen::Vector3d vee(const Eigen::Matrix3d& S) { return {S(2, 1), S(0, 2), S(1, 0)}; }
+Eigen::Vector3d vee(const Eigen::Matrix3d& S) {
+  return {S(2, 1), S(0, 2), S(1, 0)};
+}
 
 Eigen::Vector3d clampEach(const Eigen::Vector3d& v, double limit) {
   return v.cwiseMax(-limit).cwiseMin(limit);
@@ -27,7 +29,7 @@ void CrazyflieLeeController::resetLaw() {
 }
 
 CrazyflieLeeController::Command CrazyflieLeeController::law(const VehicleState& s,
-                                                             const FlatReference& sp) {
+                                                            const FlatReference& sp) {
   const double dt = 1.0 / kCrazyflieAttitudeRate;
   const Eigen::Vector3d e3 = Eigen::Vector3d::UnitZ();
   const Eigen::Matrix3d R = s.attitude.toRotationMatrix();
@@ -37,9 +39,9 @@ CrazyflieLeeController::Command CrazyflieLeeController::law(const VehicleState& 
   const Eigen::Vector3d pos_e = clampEach(sp.position - s.position, gains_.kpos_p_limit);
   const Eigen::Vector3d vel_e = clampEach(sp.velocity - s.velocity, gains_.kpos_d_limit);
   i_error_pos_ += dt * pos_e;
-  const Eigen::Vector3d F_d = sp.acceleration + platform_.gravity * e3 +
-                              gains_.kpos_d.cwiseProduct(vel_e) + gains_.kpos_p.cwiseProduct(pos_e) +
-                              gains_.kpos_i.cwiseProduct(i_error_pos_);
+  const Eigen::Vector3d F_d =
+      sp.acceleration + platform_.gravity * e3 + gains_.kpos_d.cwiseProduct(vel_e) +
+      gains_.kpos_p.cwiseProduct(pos_e) + gains_.kpos_i.cwiseProduct(i_error_pos_);
   c.thrust = mass_ * F_d.dot(R.col(2));
   if (c.thrust < 0.01) resetLaw();  // on the ground: no accumulated error
 

@@ -23,14 +23,14 @@ namespace cosim {
 
 // controller_lee.c's g_self defaults (ctrlLee parameters).
 struct CrazyflieLeeGains {
-  Eigen::Vector3d kpos_p{7.0, 7.0, 7.0};  // Kpos_P, 1/s^2
-  Eigen::Vector3d kpos_d{4.0, 4.0, 4.0};  // Kpos_D, 1/s
-  Eigen::Vector3d kpos_i{0.0, 0.0, 0.0};  // Kpos_I, 1/s^3
-  double kpos_p_limit = 100.0;            // Kpos_P_limit, m: bound on each position error
-  double kpos_d_limit = 100.0;            // Kpos_D_limit, m/s: bound on each velocity error
-  Eigen::Vector3d k_r{0.007, 0.007, 0.008};      // KR, N m per unit e_R
+  Eigen::Vector3d kpos_p{7.0, 7.0, 7.0};     // Kpos_P, 1/s^2
+  Eigen::Vector3d kpos_d{4.0, 4.0, 4.0};     // Kpos_D, 1/s
+  Eigen::Vector3d kpos_i{0.0, 0.0, 0.0};     // Kpos_I, 1/s^3
+  double kpos_p_limit = 100.0;               // Kpos_P_limit, m: bound on each position error
+  double kpos_d_limit = 100.0;               // Kpos_D_limit, m/s: bound on each velocity error
+  Eigen::Vector3d k_r{0.007, 0.007, 0.008};  // KR, N m per unit e_R
   Eigen::Vector3d k_omega{0.00115, 0.00115, 0.002};  // Komega, N m per rad/s
-  Eigen::Vector3d k_i{0.03, 0.03, 0.03};         // KI, N m per (unit e_R s)
+  Eigen::Vector3d k_i{0.03, 0.03, 0.03};             // KI, N m per (unit e_R s)
   // J: Foerster 2015's Crazyflie 2.0 inertia, kg m^2 (used only in w x J w).
   Eigen::Vector3d inertia{16.571710e-6, 16.655602e-6, 29.261652e-6};
   double mass = -1.0;  // ctrlLee.mass, kg; negative: the platform's CF_MASS

@@ -6,7 +6,9 @@
 namespace cosim {
 
 namespace {
-Eigen::Vector3d vee(const Eigen::Matrix3d& S) { return {S(2, 1), S(0, 2), S(1, 0)}; }
+Eigen::Vector3d vee(const Eigen::Matrix3d& S) {
+  return {S(2, 1), S(0, 2), S(1, 0)};
+}
 }  // namespace
 
 CrazyflieMellingerController::CrazyflieMellingerController(const QuadrotorParams& airframe,
@@ -23,8 +25,8 @@ void CrazyflieMellingerController::resetLaw() {
   has_prev_ = false;
 }
 
-CrazyflieMellingerController::Command CrazyflieMellingerController::law(
-    const VehicleState& s, const FlatReference& sp) {
+CrazyflieMellingerController::Command CrazyflieMellingerController::law(const VehicleState& s,
+                                                                        const FlatReference& sp) {
   const double dt = 1.0 / kCrazyflieAttitudeRate;
   const CrazyflieMellingerGains& k = gains_;
   Command c;

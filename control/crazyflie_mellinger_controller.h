@@ -21,7 +21,7 @@ namespace cosim {
 
 // controller_mellinger.c's g_self defaults (ctrlMel parameters).
 struct CrazyflieMellingerGains {
-  double mass = -1.0;          // ctrlMel.mass, kg; negative: the platform's CF_MASS
+  double mass = -1.0;           // ctrlMel.mass, kg; negative: the platform's CF_MASS
   double mass_thrust = 132000;  // massThrust, PWM per N
   double kp_xy = 0.4, kd_xy = 0.2, ki_xy = 0.05, i_range_xy = 2.0;  // N/m, N s/m, N/(m s), m s
   double kp_z = 1.25, kd_z = 0.4, ki_z = 0.05, i_range_z = 0.4;
@@ -40,8 +40,8 @@ class CrazyflieMellingerController : public CrazyflieFirmwareController {
   // One 500 Hz step: the legacy command, right-handed moments (roll, pitch, yaw about body x, y,
   // z) before the firmware's sign conventions are applied (exposed for tests).
   struct Command {
-    double thrust_pwm = 0.0;                           // massThrust T
-    Eigen::Vector3d force = Eigen::Vector3d::Zero();   // F_des, N
+    double thrust_pwm = 0.0;                          // massThrust T
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();  // F_des, N
     Eigen::Vector3d e_R = Eigen::Vector3d::Zero();
     Eigen::Vector3d moment = Eigen::Vector3d::Zero();  // PWM scale, clamped
   };

@@ -7,10 +7,12 @@ namespace cosim {
 
 namespace {
 
-double wrap180(double a) { return std::remainder(a, 360.0); }
+double wrap180(double a) {
+  return std::remainder(a, 360.0);
+}
 
 constexpr double kRadToDeg = 180.0 / M_PI;
-constexpr double kVelMaxOverhead = 1.10;  // position_controller_pid.c velMaxOverhead
+constexpr double kVelMaxOverhead = 1.10;   // position_controller_pid.c velMaxOverhead
 constexpr double kRpLimitOverhead = 1.10;  // rpLimitOverhead
 constexpr double kThrustScale = 1000.0;    // thrustScale
 constexpr double kFullScale = 65535.0;     // UINT16_MAX
@@ -84,15 +86,18 @@ void CrazyfliePidController::positionStep(const VehicleState& s, const FlatRefer
   };
   const Eigen::Vector3d sp_b = body(sp.position), x_b = body(s.position), v_b = body(s.velocity);
   // Position -> velocity set-point (the reference velocity is not added: position mode).
-  pos_.velocity_setpoint = {pid_x_.update(sp_b.x(), x_b.x(), dt), pid_y_.update(sp_b.y(), x_b.y(), dt),
+  pos_.velocity_setpoint = {pid_x_.update(sp_b.x(), x_b.x(), dt),
+                            pid_y_.update(sp_b.y(), x_b.y(), dt),
                             pid_z_.update(sp_b.z(), x_b.z(), dt)};
   // Velocity -> tilt (right-handed: +pitch tilts the thrust towards +x, +roll towards -y).
   const double rp_max = gains_.rp_max_deg;
-  pos_.pitch_deg = std::clamp(pid_vx_.update(pos_.velocity_setpoint.x(), v_b.x(), dt), -rp_max, rp_max);
-  pos_.roll_deg = std::clamp(-pid_vy_.update(pos_.velocity_setpoint.y(), v_b.y(), dt), -rp_max, rp_max);
+  pos_.pitch_deg =
+      std::clamp(pid_vx_.update(pos_.velocity_setpoint.x(), v_b.x(), dt), -rp_max, rp_max);
+  pos_.roll_deg =
+      std::clamp(-pid_vy_.update(pos_.velocity_setpoint.y(), v_b.y(), dt), -rp_max, rp_max);
   const double raw = pid_vz_.update(pos_.velocity_setpoint.z(), v_b.z(), dt);
-  pos_.thrust = std::clamp(std::max(raw * kThrustScale + gains_.thrust_base, gains_.thrust_min), 0.0,
-                           kFullScale);
+  pos_.thrust = std::clamp(std::max(raw * kThrustScale + gains_.thrust_base, gains_.thrust_min),
+                           0.0, kFullScale);
 }
 
 void CrazyfliePidController::attitudeStep(const VehicleState& s, const Eigen::Vector3d& rpy,
@@ -117,8 +122,8 @@ Eigen::Vector4d CrazyfliePidController::lawStep(const VehicleState& s, const Fla
     pid_x_.prev_measured = s.position.x();
     pid_y_.prev_measured = s.position.y();
     pid_z_.prev_measured = s.position.z();
-    for (CrazyfliePid* p : {&pid_vx_, &pid_vy_, &pid_vz_, &pid_roll_rate_, &pid_pitch_rate_,
-                            &pid_yaw_rate_})
+    for (CrazyfliePid* p :
+         {&pid_vx_, &pid_vy_, &pid_vz_, &pid_roll_rate_, &pid_pitch_rate_, &pid_yaw_rate_})
       p->reset(0.0);
     pid_roll_.reset(rpy.x());
     pid_pitch_.reset(rpy.y());

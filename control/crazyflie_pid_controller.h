@@ -24,8 +24,8 @@ namespace cosim {
 // pid.c's PidObject, as far as these loops use it.
 struct CrazyfliePid {
   double kp = 0.0, ki = 0.0, kd = 0.0;
-  double i_limit = 5000.0;      // DEFAULT_PID_INTEGRATION_LIMIT
-  double output_limit = 0.0;    // 0: none (DEFAULT_PID_OUTPUT_LIMIT)
+  double i_limit = 5000.0;    // DEFAULT_PID_INTEGRATION_LIMIT
+  double output_limit = 0.0;  // 0: none (DEFAULT_PID_OUTPUT_LIMIT)
   double integ = 0.0, prev_measured = 0.0;
   void reset(double measured) {
     integ = 0.0;
@@ -37,14 +37,14 @@ struct CrazyfliePid {
 
 // Defaults: platform_defaults_cf21bl.h (PID_*), position_controller_pid.c (limits, scales).
 struct CrazyfliePidGains {
-  double pos_kp_xy = 2.0, pos_ki_xy = 0.0;     // PID_POS_X_KP, PID_POS_X_KI (Y the same)
-  double pos_kp_z = 2.0, pos_ki_z = 0.5;       // PID_POS_Z_KP, PID_POS_Z_KI
-  double vel_kp_xy = 25.0, vel_ki_xy = 1.0;    // PID_VEL_X_KP, PID_VEL_X_KI, deg per m/s
-  double vel_kp_z = 25.0, vel_ki_z = 15.0;     // PID_VEL_Z_KP, PID_VEL_Z_KI
-  double vel_max = 1.0;                         // PID_POS_VEL_X/Y/Z_MAX, m/s (x 1.10 overhead)
-  double rp_max_deg = 20.0;                     // PID_VEL_ROLL_MAX, PID_VEL_PITCH_MAX
-  double thrust_base = 30000.0;                 // PID_VEL_THRUST_BASE
-  double thrust_min = 20000.0;                  // PID_VEL_THRUST_MIN
+  double pos_kp_xy = 2.0, pos_ki_xy = 0.0;   // PID_POS_X_KP, PID_POS_X_KI (Y the same)
+  double pos_kp_z = 2.0, pos_ki_z = 0.5;     // PID_POS_Z_KP, PID_POS_Z_KI
+  double vel_kp_xy = 25.0, vel_ki_xy = 1.0;  // PID_VEL_X_KP, PID_VEL_X_KI, deg per m/s
+  double vel_kp_z = 25.0, vel_ki_z = 15.0;   // PID_VEL_Z_KP, PID_VEL_Z_KI
+  double vel_max = 1.0;                      // PID_POS_VEL_X/Y/Z_MAX, m/s (x 1.10 overhead)
+  double rp_max_deg = 20.0;                  // PID_VEL_ROLL_MAX, PID_VEL_PITCH_MAX
+  double thrust_base = 30000.0;              // PID_VEL_THRUST_BASE
+  double thrust_min = 20000.0;               // PID_VEL_THRUST_MIN
   double att_kp_rp = 6.0, att_ki_rp = 3.0, att_i_limit_rp = 20.0;  // PID_ROLL_KP/KI/INT_LIMIT
   double att_kp_yaw = 6.0, att_ki_yaw = 1.0, att_kd_yaw = 0.35, att_i_limit_yaw = 360.0;
   double rate_kp_rp = 200.0, rate_ki_rp = 400.0, rate_kd_rp = 2.5, rate_i_limit_rp = 33.3;

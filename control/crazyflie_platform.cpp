@@ -14,15 +14,15 @@ CrazyfliePlatform crazyflie21BrushlessPlatform() {
   CrazyfliePlatform p;
   // crazyflie-firmware src/platform/interface/platform_defaults_cf21bl.h (2025-10 onwards, with
   // CONFIG_ENABLE_THRUST_BAT_COMPENSATED, which Kconfig enables by default for CF21BL):
-  p.mass = 0.0393;                              // CF_MASS (guards, 350 mAh battery, LH deck)
-  p.arm_length = 0.050;                         // ARM_LENGTH
-  p.thrust_to_torque = 0.00569278844371417;     // THRUST2TORQUE
-  p.thrust_max = 0.2;                           // THRUST_MAX (THRUST_BAT_COMPENSATION_MAX_THRUST 200 mN)
-  p.thrust_min = 0.02136263065537499;           // THRUST_MIN
-  p.vmotor2thrust = {-0.014058926705279723,     // VMOTOR2THRUST0
-                     0.04265273261724981,       // VMOTOR2THRUST1
-                     0.0018327760144017432,     // VMOTOR2THRUST2
-                     0.0020576974784587178};    // VMOTOR2THRUST3
+  p.mass = 0.0393;                           // CF_MASS (guards, 350 mAh battery, LH deck)
+  p.arm_length = 0.050;                      // ARM_LENGTH
+  p.thrust_to_torque = 0.00569278844371417;  // THRUST2TORQUE
+  p.thrust_max = 0.2;                  // THRUST_MAX (THRUST_BAT_COMPENSATION_MAX_THRUST 200 mN)
+  p.thrust_min = 0.02136263065537499;  // THRUST_MIN
+  p.vmotor2thrust = {-0.014058926705279723,   // VMOTOR2THRUST0
+                     0.04265273261724981,     // VMOTOR2THRUST1
+                     0.0018327760144017432,   // VMOTOR2THRUST2
+                     0.0020576974784587178};  // VMOTOR2THRUST3
   p.gravity = 9.81;  // src/utils/interface/physicalConstants.h GRAVITY_MAGNITUDE
   return p;
 }
@@ -30,7 +30,8 @@ CrazyfliePlatform crazyflie21BrushlessPlatform() {
 CrazyflieMotors::CrazyflieMotors(const CrazyfliePlatform& platform, double max_rotor_thrust)
     : p_(platform),
       full_scale_volts_(std::isfinite(max_rotor_thrust) ? voltageForThrust(max_rotor_thrust)
-                                                        : std::numeric_limits<double>::infinity()) {}
+                                                        : std::numeric_limits<double>::infinity()) {
+}
 
 double CrazyflieMotors::thrustAtVoltage(double v) const {
   const Eigen::Vector4d& c = p_.vmotor2thrust;

@@ -10,8 +10,8 @@
 //  1. power distribution: a force/torque command (Lee) becomes per-motor forces
 //       f_i = T/4 -+ tau_x / (4 l / sqrt 2) -+ tau_y / (4 l / sqrt 2) -+ tau_z / (4 k)
 //     (l = ARM_LENGTH, k = THRUST2TORQUE), each floored at 0; a legacy command (PID, Mellinger:
-//     thrust, roll, pitch, yaw in the 16-bit PWM scale) becomes u_i = T -+ roll/2 -+ pitch/2 -+ yaw,
-//     whose force is u_i / 65535 THRUST_MAX;
+//     thrust, roll, pitch, yaw in the 16-bit PWM scale) becomes u_i = T -+ roll/2 -+ pitch/2 -+
+//     yaw, whose force is u_i / 65535 THRUST_MAX;
 //  2. battery compensation: the motor voltage that makes f_i by the platform's thrust curve
 //     f = c0 + c1 v + c2 v^2 + c3 v^3 (VMOTOR2THRUST0..3), over the supply voltage, is the duty
 //     cycle; a force below THRUST_MIN gives duty 0 (the motor stops);
@@ -25,13 +25,13 @@
 namespace cosim {
 
 struct CrazyfliePlatform {
-  double mass;                // CF_MASS, kg: what the firmware's Lee and Mellinger believe
-  double arm_length;          // ARM_LENGTH, m, centre to motor
-  double thrust_to_torque;    // THRUST2TORQUE, m
-  double thrust_max;          // THRUST_MAX, N per motor at 65535 of the thrust scale
-  double thrust_min;          // THRUST_MIN, N per motor: below it the motor is off
+  double mass;                    // CF_MASS, kg: what the firmware's Lee and Mellinger believe
+  double arm_length;              // ARM_LENGTH, m, centre to motor
+  double thrust_to_torque;        // THRUST2TORQUE, m
+  double thrust_max;              // THRUST_MAX, N per motor at 65535 of the thrust scale
+  double thrust_min;              // THRUST_MIN, N per motor: below it the motor is off
   Eigen::Vector4d vmotor2thrust;  // VMOTOR2THRUST0..3: N per motor from motor volts
-  double gravity;             // GRAVITY_MAGNITUDE, m/s^2
+  double gravity;                 // GRAVITY_MAGNITUDE, m/s^2
 };
 
 // The Crazyflie 2.1 Brushless build's defaults.

@@ -32,13 +32,13 @@ constexpr double kFlownMass = 0.037;  // kg: the bundled scenario's vehicles[0].
 
 // One configuration of the study: a controller, and which effects are switched off.
 struct Variant {
-  const char* label;       // the row's "controller"
-  const char* controller;  // controller.name
+  const char* label;              // the row's "controller"
+  const char* controller;         // controller.name
   bool ideal_sensing = false;     // the controller reads the true state (no mocap, no EKF)
   bool unlimited_thrust = false;  // no rotor speed limit (and so no firmware capping)
   bool no_rotor_drag = false;
-  bool no_motor_lag = false;      // rotors reach their commanded speed at once
-  bool true_mass = false;         // the firmware's mass parameter set to the flown 37 g
+  bool no_motor_lag = false;  // rotors reach their commanded speed at once
+  bool true_mass = false;     // the firmware's mass parameter set to the flown 37 g
 };
 
 const Variant kControllers[] = {{"crazyflie_lee", "crazyflie_lee"},
@@ -57,10 +57,10 @@ const Variant kEffects[] = {
 Scenario studyScenario(const Variant& v, double timescale, std::uint64_t seed) {
   std::ostringstream ts;
   ts << timescale;
-  Scenario s = loadScenario(COSIM_SCENARIOS_DIR "/crazyflie_figure8.yaml",
-                            {"vehicles[0].reference.timescale=" + ts.str(),
-                             "controller.name=" + std::string(v.controller),
-                             "sim.seed=" + std::to_string(seed)});
+  Scenario s = loadScenario(
+      COSIM_SCENARIOS_DIR "/crazyflie_figure8.yaml",
+      {"vehicles[0].reference.timescale=" + ts.str(),
+       "controller.name=" + std::string(v.controller), "sim.seed=" + std::to_string(seed)});
   if (v.ideal_sensing) {
     s.sensors = SensorSettings{};
     s.estimator.name = "ground_truth";
@@ -96,7 +96,8 @@ Row fly(const Variant& v, double timescale, const Options& options) {
   const WorldModel world = WorldModel::fromXml(xml, s);
   const QuadrotorParams believed = believedAirframe(world.vehicles()[0].params, s.model_error);
   ParamSet gains = s.controller_gains;
-  std::unique_ptr<FlightController> controller = makeFlightController(v.controller, gains, believed);
+  std::unique_ptr<FlightController> controller =
+      makeFlightController(v.controller, gains, believed);
   PiecewisePolynomialReference reference = *s.vehicles[0].reference;
   std::vector<VehiclePilot> pilots(1);
   pilots[0].controller = controller.get();
@@ -131,7 +132,8 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<double>& sc
                      const std::vector<const Variant*>& effects, const Options& options) {
   std::ostringstream md;
   md << "# Crazyflie 2.1 Brushless on Crazyswarm2's figure-eight: predicted tracking error\n\n"
-     << "experiments/scenarios/crazyflie_figure8.yaml: cf21_brushless at 37 g, crazyflie-firmware's "
+     << "experiments/scenarios/crazyflie_figure8.yaml: cf21_brushless at 37 g, "
+        "crazyflie-firmware's "
         "controllers with their default gains and loop rates, the Brushless build's power "
         "distribution and capping, rotor drag, motor lag, motion capture (100 Hz, 1 mm, 11 ms "
         "late) into the EKF; figure8.csv relative to the 1 m start, flown from hover at t = 0. "
@@ -144,8 +146,8 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<double>& sc
   for (std::size_t i = 0; i < controllers.size(); ++i) md << "---|";
   md << "\n";
   for (double ts : scales) {
-    md << "| " << fixed(ts, 1) << " | " << fixed(find(rows, controllers[0]->label, ts).peak_speed, 2)
-       << " |";
+    md << "| " << fixed(ts, 1) << " | "
+       << fixed(find(rows, controllers[0]->label, ts).peak_speed, 2) << " |";
     for (const Variant* c : controllers) {
       const Row& r = find(rows, c->label, ts);
       md << " " << fixed(r.rmse, 4) << " / " << fixed(r.max_error, 4)

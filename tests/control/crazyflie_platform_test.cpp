@@ -38,7 +38,8 @@ TEST(CrazyfliePlatform, ForceTorqueMixMakesTheCommandedWrenchOnTheSimulatedAirfr
   // roll, pitch and yaw, and the motor order, all at once).
   const Mixer mixer(brushlessAirframe());
   const Eigen::Vector3d tau(2e-4, -3e-4, 1.5e-4);
-  const Eigen::Vector4d w = mixer.wrench(crazyflieToRotorOrder(crazyflieForceTorqueMix(p, 0.37, tau)));
+  const Eigen::Vector4d w =
+      mixer.wrench(crazyflieToRotorOrder(crazyflieForceTorqueMix(p, 0.37, tau)));
   EXPECT_NEAR(w[0], 0.37, 1e-12);
   EXPECT_NEAR(w[1], tau.x(), 1e-12);
   EXPECT_NEAR(w[2], tau.y(), 1e-12);
@@ -52,7 +53,9 @@ TEST(CrazyfliePlatform, LegacyMixReadsTheSixteenBitScaleAndTheFirmwareSigns) {
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(hover[i], 0.0915541, 1e-7);
   const Mixer mixer(brushlessAirframe());
   const auto torque = [&](double r, double q, double y) {
-    return mixer.wrench(crazyflieToRotorOrder(crazyflieLegacyMix(p, 30000, r, q, y))).tail<3>().eval();
+    return mixer.wrench(crazyflieToRotorOrder(crazyflieLegacyMix(p, 30000, r, q, y)))
+        .tail<3>()
+        .eval();
   };
   // Roll +1000: half on each motor, 500 / 65535 x 0.2 N = 1.52590e-3 N, left up, right down:
   // tau_x = 4 x 1.525902e-3 x 0.03535534 = 2.157952e-4 N m.

@@ -13,8 +13,8 @@ namespace {
 
 // The rmse_m of the row with this controller and timescale in crazyflie-figure8.json.
 double rmse(const std::string& json, const std::string& controller, const std::string& timescale) {
-  const std::regex row("\\{[^{}]*\"controller\": \"" + controller + "\"[^{}]*\"timescale\": " +
-                       timescale + "[^{}]*\"rmse_m\": ([0-9.eE+-]+)");
+  const std::regex row("\\{[^{}]*\"controller\": \"" + controller +
+                       "\"[^{}]*\"timescale\": " + timescale + "[^{}]*\"rmse_m\": ([0-9.eE+-]+)");
   std::smatch m;
   if (!std::regex_search(json, m, row)) return -1.0;
   return std::stod(m[1]);
