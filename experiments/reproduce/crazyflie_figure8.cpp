@@ -173,7 +173,7 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<double>& sc
   }
   md << "\nFigure: crazyflie-figure8.png (RMSE against peak speed per controller). Rows in "
         "crazyflie-figure8.json.\n";
-  if (options.quick) md << "\n(--quick: timescales 1.0 and 0.5, crazyflie_lee only.)\n";
+  if (options.quick) md << "\n(--quick: timescales 1.0 and 0.5, crazyflie_lee and lee/true_mass only.)\n";
   return md.str();
 }
 
@@ -187,7 +187,7 @@ Report crazyflieFigure8(const Options& options) {
   for (const Variant& v : kControllers)
     if (!options.quick || std::string(v.controller) == "crazyflie_lee") controllers.push_back(&v);
   for (const Variant& v : kEffects)
-    if (!options.quick || std::string(v.label) == "lee/ideal_sensing") effects.push_back(&v);
+    if (!options.quick || std::string(v.label) == "lee/true_mass") effects.push_back(&v);
   std::vector<Row> rows;
   for (double ts : scales) {
     for (const Variant* v : controllers) rows.push_back(fly(*v, ts, options));
