@@ -23,6 +23,7 @@ Report seed000Rna(const Options& options);
 Report seed003Flight(const Options& options);
 Report trackingAcceptance(const Options& options);
 Report controllerStudy(const Options& options);
+Report crazyflieFigure8(const Options& options);
 }  // namespace cosim::reproduce
 
 namespace cosim::cli {
@@ -35,6 +36,10 @@ const std::vector<reproduce::Entry>& reproductions() {
        "realism: figure-eight at rising speed, rotor drag, model error, mocap + EKF; geometric, "
        "geometric_drag, indi, indi_drag, dsl_pid (Sun et al. 2022)",
        reproduce::controllerStudy},
+      {"crazyflie-figure8",
+       "Crazyflie 2.1 Brushless on Crazyswarm2's figure-eight at timescales 1.0-0.5: predicted "
+       "RMSE per firmware controller, and each effect's share",
+       reproduce::crazyflieFigure8},
       {"tracking", "issue 6: every bundled 3D world, quad_1500g at 3 m/s and cf2 at 1 m/s, tracking errors",
        reproduce::trackingAcceptance},
       {"seed003-flight",

@@ -1,6 +1,7 @@
 #include "control/controller_factory.h"
 
 #include "control/cascade_controller.h"
+#include "control/crazyflie_controller_factory.h"
 #include "control/dsl_pid_controller.h"
 #include "control/geometric_controller.h"
 #include "control/indi_controller.h"
@@ -102,6 +103,8 @@ std::unique_ptr<FlightController> makeFlightController(const std::string& name, 
     c = std::make_unique<IndiController>(params, readIndiGains(gains), drag_compensation);
   } else if (name == "dsl_pid") {
     c = std::make_unique<DslPidController>(params, readDslPidGains(gains));
+  } else if (auto cf = makeCrazyflieController(name, gains, params)) {
+    c = std::move(cf);
   } else {
     throw InputError(gains.file(), "key controller.name", "unknown controller '" + name + "'");
   }

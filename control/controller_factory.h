@@ -1,5 +1,6 @@
 #pragma once
-// Builds the scenario's flight controller by name (cascade, geometric, indi, dsl_pid), with gains
+// Builds the scenario's flight controller by name (cascade, geometric, indi, dsl_pid,
+// crazyflie_lee, crazyflie_mellinger, crazyflie_pid), with gains
 // from the scenario's controller.gains (every gain optional, misspelt ones an error).
 // drag_compensation (controller.drag_compensation) puts the rotor drag of Faessler et al. 2018
 // into the feed-forward of geometric and indi; with another controller it is bad input.

@@ -29,6 +29,10 @@ struct VehicleSpec {
   // Points to visit after the start; the last one is the goal.
   std::vector<Eigen::Vector3d> waypoints;
   double yaw_deg = 0.0;  // initial and reference heading
+  // The real total mass in kg (decks, battery, markers); 0: the model file's own. The physics
+  // gets this mass and the model's inertia scaled by the same ratio (constant radii of
+  // gyration); what a flight controller believes is its own business (docs/crazyflie.md).
+  double mass = 0.0;
   // vehicles[i].reference (sim/scenario_reference.h): a given reference flown instead of a
   // planned path, placed (its timescale, and the start added with `relative`); then `waypoints`
   // holds its last point alone, the goal. Null: the vehicle is planned.
@@ -121,7 +125,7 @@ struct Scenario {
   std::string trajectory_mode = "waypoints";  // waypoints | minimum_snap
   ParamSet trajectory_params;                 // max_speed, switch_radius, ...
 
-  std::string controller_name = "cascade";  // cascade | geometric | indi | dsl_pid
+  std::string controller_name = "cascade";  // cascade | geometric | indi | dsl_pid | crazyflie_*
   // A controller section was written; without one a quadrotor team flies indi (run_pipeline.cpp).
   bool controller_given = false;
   // controller.drag_compensation: rotor drag in the flatness feed-forward (geometric, indi).

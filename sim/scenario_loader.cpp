@@ -8,6 +8,7 @@
 #include "core/input_file.h"
 #include "planning/worlds/grid_map_world.h"
 #include "sim/scenario.h"
+#include "control/crazyflie_controller_factory.h"
 #include "sim/scenario_reference.h"
 #include "sim/scenario_sensing.h"
 #include "sim/yaml_document.h"
@@ -266,7 +267,7 @@ std::string vehicleNameProblem(const std::string& name) {
 
 void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& key,
                  const std::filesystem::path& scenario_dir, Scenario& s) {
-  r.checkKeys(n, key, {"name", "model", "start", "goal", "waypoints", "yaw", "reference"});
+  r.checkKeys(n, key, {"name", "model", "start", "goal", "waypoints", "yaw", "reference", "mass"});
   VehicleSpec v;
   v.name =
       n["name"] ? r.text(n["name"], key + ".name") : "uav" + std::to_string(s.vehicles.size() + 1);
@@ -302,6 +303,10 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
   }
   if (v.waypoints.empty()) r.fail(n, key, "vehicle needs a 'goal', 'waypoints' or a 'reference'");
   if (n["yaw"]) v.yaw_deg = r.number(n["yaw"], key + ".yaw", -3600, 3600);
+  if (n["mass"]) {
+    if (v.ground) r.fail(n["mass"], key + ".mass", "mass applies to quadrotor models, not URDFs");
+    v.mass = r.number(n["mass"], key + ".mass", 1e-4, 1e4);
+  }
   s.vehicles.push_back(std::move(v));
 }
 
@@ -349,9 +354,11 @@ void readMotionSections(const YamlReader& r, const YAML::Node& parent, const std
     out.controller_given = true;
     if (c["name"]) out.controller_name = r.text(c["name"], prefix + "controller.name");
     const std::string& name = out.controller_name;
-    if (name != "cascade" && name != "geometric" && name != "indi" && name != "dsl_pid")
+    if (name != "cascade" && name != "geometric" && name != "indi" && name != "dsl_pid" &&
+        name != "crazyflie_lee" && name != "crazyflie_mellinger" && name != "crazyflie_pid")
       r.fail(c["name"], prefix + "controller.name",
-             "must be 'cascade', 'geometric', 'indi' or 'dsl_pid'");
+             "must be 'cascade', 'geometric', 'indi', 'dsl_pid', 'crazyflie_lee', "
+             "'crazyflie_mellinger' or 'crazyflie_pid'");
     if (c["drag_compensation"]) {
       out.controller_drag_compensation =
           r.boolean(c["drag_compensation"], prefix + "controller.drag_compensation");
@@ -508,6 +515,10 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
       r.fail(n["control_rate"] ? n["control_rate"] : n, "sim.control_rate",
              "the physics rate (1/timestep) must be a whole multiple of the control rate");
   }
+  for (const std::string& name : {s.controller_name, s.aerial.controller_name})
+    if (const std::string why = crazyflieControlRateProblem(name, s.sim.control_rate); !why.empty())
+      r.fail(root["sim"] && root["sim"]["control_rate"] ? root["sim"]["control_rate"] : root,
+             "sim.control_rate", why);
   if (const double samples =
           s.sim.max_time * s.sim.control_rate * static_cast<double>(s.vehicles.size());
       samples > kMaxLogSamples)

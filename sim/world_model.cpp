@@ -71,6 +71,32 @@ void addObstacleGeom(XMLDocument& doc, XMLElement* worldbody, const Obstacle& o,
   }
 }
 
+// vehicles[i].mass: the base's <inertial> gets the flown total mass, and its principal inertia
+// the same ratio. Scaling at constant radii of gyration is the first-order guess for mass added
+// over the airframe's own footprint (a battery under the centre, decks on top, markers on the
+// arms); keeping the inertia would treat every added gram as a point at the centre.
+void setTotalMass(XMLElement* base, const VehicleSpec& v) {
+  XMLElement* inertial = base->FirstChildElement("inertial");
+  double mass = 0.0;
+  if (!inertial || inertial->QueryDoubleAttribute("mass", &mass) != tinyxml2::XML_SUCCESS ||
+      !(mass > 0.0) || base->FirstChildElement("body"))
+    throw InputError(v.model_file.string(), "<body name=\"base\">",
+                     "vehicle '" + v.name + "' sets mass: the model needs one base body with an "
+                     "<inertial mass=...> and no child bodies");
+  const double ratio = v.mass / mass;
+  inertial->SetAttribute("mass", fmt(v.mass).c_str());
+  if (const char* d = inertial->Attribute("diaginertia")) {
+    std::istringstream in(d);
+    Eigen::Vector3d j;
+    if (!(in >> j.x() >> j.y() >> j.z()))
+      throw InputError(v.model_file.string(), "<inertial diaginertia>", "needs three numbers");
+    inertial->SetAttribute("diaginertia", fmt(ratio * j).c_str());
+  } else if (inertial->Attribute("fullinertia")) {
+    throw InputError(v.model_file.string(), "<inertial>",
+                     "vehicle '" + v.name + "' sets mass: use diaginertia, not fullinertia");
+  }
+}
+
 void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* custom,
                 const VehicleSpec& v) {
   const std::string text = readInputFile(v.model_file.string(), kMaxModelFileBytes, "model file");
@@ -91,6 +117,7 @@ void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* custom,
   // The start pose is the body's own pose, so qpos0 (and a reset) puts the vehicle at its start.
   copy->SetAttribute("pos", fmt(v.start).c_str());
   copy->SetAttribute("euler", ("0 0 " + fmt(v.yaw_deg)).c_str());
+  if (v.mass > 0.0) setTotalMass(copy, v);
   worldbody->InsertEndChild(copy);
 
   // The rotor constants of <custom> (sim/ reads them as "<name>/thrust_coefficient" and so on),

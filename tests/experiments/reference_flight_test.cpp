@@ -91,7 +91,7 @@ TEST(ReferenceFlight, FigureEightRmseCoversTheReferencesDurationAndRefColumnsAre
   EXPECT_NEAR(f.metrics["rmse_m"].get<double>(), rmse, 1e-6 * rmse);
   std::size_t all = 0;
   EXPECT_GT(std::abs(rmseUntil(f.rows, 1e9, all) - rmse), 1e-6);  // the window matters
-  // Centimetres at 1.2 m/s peak with the geometric controller on motion capture and the EKF.
+  // Centimetres at 1.2 m/s peak with the firmware's Lee controller on motion capture and the EKF.
   EXPECT_GT(rmse, 0.002);
   EXPECT_LT(rmse, 0.10);
   // The logged reference is the reference at each logged time.

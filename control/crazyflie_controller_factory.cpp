@@ -1,0 +1,96 @@
+#include "control/crazyflie_controller_factory.h"
+
+#include <cmath>
+
+#include "control/crazyflie_lee_controller.h"
+#include "control/crazyflie_mellinger_controller.h"
+#include "control/crazyflie_pid_controller.h"
+
+namespace cosim {
+
+namespace {
+
+// x and y share one gain; z has its own (the firmware's defaults are symmetric in x and y).
+Eigen::Vector3d readXyZ(ParamSet& p, const std::string& prefix, const Eigen::Vector3d& fallback,
+                        double hi) {
+  const double xy = p.getDouble(prefix + "_xy", fallback.x(), 0.0, hi);
+  return {xy, xy, p.getDouble(prefix + "_z", fallback.z(), 0.0, hi)};
+}
+
+CrazyflieLeeGains readLee(ParamSet& p) {
+  CrazyflieLeeGains g;
+  g.kpos_p = readXyZ(p, "kpos_p", g.kpos_p, 1e4);
+  g.kpos_d = readXyZ(p, "kpos_d", g.kpos_d, 1e4);
+  g.kpos_i = readXyZ(p, "kpos_i", g.kpos_i, 1e4);
+  g.kpos_p_limit = p.getDouble("kpos_p_limit", g.kpos_p_limit, 0.0, 1e4);
+  g.kpos_d_limit = p.getDouble("kpos_d_limit", g.kpos_d_limit, 0.0, 1e4);
+  g.k_r = readXyZ(p, "kr", g.k_r, 10.0);
+  g.k_omega = readXyZ(p, "komega", g.k_omega, 10.0);
+  g.k_i = readXyZ(p, "ki", g.k_i, 10.0);
+  g.mass = p.getDouble("mass", -1.0, -1.0, 100.0);
+  return g;
+}
+
+CrazyflieMellingerGains readMellinger(ParamSet& p) {
+  CrazyflieMellingerGains g;
+  g.mass = p.getDouble("mass", -1.0, -1.0, 100.0);
+  g.mass_thrust = p.getDouble("mass_thrust", g.mass_thrust, 0.0, 1e7);
+  g.kp_xy = p.getDouble("kp_xy", g.kp_xy, 0.0, 1e3);
+  g.kd_xy = p.getDouble("kd_xy", g.kd_xy, 0.0, 1e3);
+  g.ki_xy = p.getDouble("ki_xy", g.ki_xy, 0.0, 1e3);
+  g.kp_z = p.getDouble("kp_z", g.kp_z, 0.0, 1e3);
+  g.kd_z = p.getDouble("kd_z", g.kd_z, 0.0, 1e3);
+  g.ki_z = p.getDouble("ki_z", g.ki_z, 0.0, 1e3);
+  g.kR_xy = p.getDouble("kr_xy", g.kR_xy, 0.0, 1e7);
+  g.kw_xy = p.getDouble("kw_xy", g.kw_xy, 0.0, 1e7);
+  g.kR_z = p.getDouble("kr_z", g.kR_z, 0.0, 1e7);
+  g.kw_z = p.getDouble("kw_z", g.kw_z, 0.0, 1e7);
+  g.ki_m_z = p.getDouble("ki_m_z", g.ki_m_z, 0.0, 1e7);
+  g.kd_omega_rp = p.getDouble("kd_omega_rp", g.kd_omega_rp, 0.0, 1e7);
+  return g;
+}
+
+CrazyfliePidGains readPid(ParamSet& p) {
+  CrazyfliePidGains g;
+  g.pos_kp_xy = p.getDouble("pos_kp_xy", g.pos_kp_xy, 0.0, 1e3);
+  g.pos_kp_z = p.getDouble("pos_kp_z", g.pos_kp_z, 0.0, 1e3);
+  g.pos_ki_z = p.getDouble("pos_ki_z", g.pos_ki_z, 0.0, 1e3);
+  g.vel_kp_xy = p.getDouble("vel_kp_xy", g.vel_kp_xy, 0.0, 1e3);
+  g.vel_ki_xy = p.getDouble("vel_ki_xy", g.vel_ki_xy, 0.0, 1e3);
+  g.vel_kp_z = p.getDouble("vel_kp_z", g.vel_kp_z, 0.0, 1e3);
+  g.vel_ki_z = p.getDouble("vel_ki_z", g.vel_ki_z, 0.0, 1e3);
+  g.vel_max = p.getDouble("vel_max", g.vel_max, 0.01, 100.0);
+  g.rp_max_deg = p.getDouble("rp_max_deg", g.rp_max_deg, 1.0, 89.0);
+  g.thrust_base = p.getDouble("thrust_base", g.thrust_base, 0.0, 65535.0);
+  g.thrust_min = p.getDouble("thrust_min", g.thrust_min, 0.0, 65535.0);
+  g.rate_kp_rp = p.getDouble("rate_kp_rp", g.rate_kp_rp, 0.0, 1e4);
+  g.rate_ki_rp = p.getDouble("rate_ki_rp", g.rate_ki_rp, 0.0, 1e4);
+  g.rate_kd_rp = p.getDouble("rate_kd_rp", g.rate_kd_rp, 0.0, 1e4);
+  g.att_kp_rp = p.getDouble("att_kp_rp", g.att_kp_rp, 0.0, 1e3);
+  g.att_ki_rp = p.getDouble("att_ki_rp", g.att_ki_rp, 0.0, 1e3);
+  return g;
+}
+
+}  // namespace
+
+std::unique_ptr<FlightController> makeCrazyflieController(const std::string& name, ParamSet& gains,
+                                                          const QuadrotorParams& params) {
+  if (name == "crazyflie_lee")
+    return std::make_unique<CrazyflieLeeController>(params, readLee(gains));
+  if (name == "crazyflie_mellinger")
+    return std::make_unique<CrazyflieMellingerController>(params, readMellinger(gains));
+  if (name == "crazyflie_pid")
+    return std::make_unique<CrazyfliePidController>(params, readPid(gains));
+  return nullptr;
+}
+
+std::string crazyflieControlRateProblem(const std::string& name, double rate_hz) {
+  if (name.rfind("crazyflie_", 0) != 0) return "";
+  const double ratio = rate_hz / 500.0;
+  if (ratio >= 1.0 && std::abs(ratio - std::round(ratio)) < 1e-9) return "";
+  return "= " + std::to_string(rate_hz) + " Hz: " + name +
+         " runs the firmware's 500 Hz stabilizer loop and needs a control rate that is a multiple "
+         "of 500 Hz";
+}
+
+}  // namespace cosim

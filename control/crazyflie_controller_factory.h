@@ -1,0 +1,21 @@
+#pragma once
+// Builds crazyflie_lee, crazyflie_mellinger and crazyflie_pid with gains from controller.gains
+// (every gain optional, named after the firmware's parameters; misspelt ones are an error at the
+// caller's requireAllUsed). Defaults are the firmware's (docs/crazyflie.md).
+#include <memory>
+
+#include "control/flight_controller.h"
+#include "control/quadrotor_params.h"
+#include "core/param_set.h"
+
+namespace cosim {
+
+// nullptr if `name` is none of the three.
+std::unique_ptr<FlightController> makeCrazyflieController(const std::string& name, ParamSet& gains,
+                                                          const QuadrotorParams& params);
+
+// The firmware's stabilizer runs its controllers at 500 Hz: sim.control_rate must be a multiple
+// of it. An empty string if `rate_hz` suits `name`, else why not.
+std::string crazyflieControlRateProblem(const std::string& name, double rate_hz);
+
+}  // namespace cosim

@@ -1,0 +1,54 @@
+#pragma once
+// What the three crazyflie-firmware controllers (crazyflie_lee, crazyflie_mellinger,
+// crazyflie_pid) share: the stabilizer's clock and the path from their output to the motors.
+// cosim calls a controller every control period (sim.control_rate, a multiple of 500 Hz for
+// these); the firmware's own rates hold whatever that period is:
+//  - the high-level commander evaluates the trajectory at 100 Hz (RATE_HL_COMMANDER): the
+//    reference is sampled at those ticks and held in between;
+//  - the control law runs at 500 Hz (ATTITUDE_RATE); the PID's position loop at 100 Hz
+//    (POSITION_RATE) inside it;
+//  - its output goes through the platform's power distribution, battery compensation and
+//    capping (control/crazyflie_platform.h) to the thrust each motor makes, held until the next
+//    law step.
+#include "control/crazyflie_platform.h"
+#include "control/flight_controller.h"
+#include "control/mixer.h"
+
+namespace cosim {
+
+class CrazyflieFirmwareController : public FlightController {
+ public:
+  // airframe: what the flight software's motor model needs of the vehicle, i.e. each rotor's
+  // thrust at full duty (max_thrust); the control laws use the platform's own constants.
+  CrazyflieFirmwareController(const QuadrotorParams& airframe, const CrazyfliePlatform& platform);
+  void reset() override;
+  ControlOutput update(const VehicleState& state, const FlatReference& ref, double dt) override;
+
+ protected:
+  // Per-motor forces, N, firmware order (M1..M4), from the law's 500 Hz step. `clock` says
+  // whether slower parts (the PID's 100 Hz position loop) are due at this step.
+  virtual Eigen::Vector4d lawStep(const VehicleState& state, const FlatReference& setpoint,
+                                  const CrazyflieClock& clock) = 0;
+  virtual void resetLaw() = 0;
+
+  const CrazyfliePlatform platform_;
+
+ private:
+  CrazyflieMotors motors_;
+  Mixer mixer_;  // the airframe's geometry, for the wrench the delivered thrusts make (logging)
+  CrazyflieClock clock_;
+  FlatReference setpoint_;
+  ControlOutput output_;
+};
+
+// The body rates the high-level commander puts into the setpoint (attitudeRate), from the
+// reference by differential flatness (pptraj.c, after Mellinger and Kumar 2011 eq. 7):
+// z_b = (a + g e3) / |a + g e3|, x from the yaw, h = (j - (j . z_b) z_b) / |a + g e3|,
+// w = (-h . y_b, h . x_b, z_b,z yaw_rate), rad/s.
+Eigen::Vector3d highLevelCommanderRates(const FlatReference& ref, double gravity);
+
+// The law's step length: 1 / ATTITUDE_RATE.
+constexpr double kCrazyflieAttitudeRate = 500.0;  // Hz, stabilizer_types.h ATTITUDE_RATE
+constexpr double kCrazyfliePositionRate = 100.0;  // Hz, stabilizer_types.h POSITION_RATE
+
+}  // namespace cosim

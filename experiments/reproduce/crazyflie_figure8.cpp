@@ -1,0 +1,218 @@
+// `cosim reproduce crazyflie-figure8`: a prediction of how a real Crazyflie 2.1 Brushless (37 g,
+// crazyflie-firmware's controllers with their default gains, motion capture into the onboard
+// EKF) tracks Crazyswarm2's figure-eight at timescales 1.0 down to 0.5, and what makes the error
+// grow with speed. Every flight is the bundled experiments/scenarios/crazyflie_figure8.yaml (what
+// `cosim run` flies) with its timescale and controller set, and, for the effect rows,
+// crazyflie_lee with one effect switched off at a time: sensing and estimation (mocap latency,
+// EKF), the rotors' speed limit (and so the firmware's capping), rotor drag, motor lag, the
+// firmware's belief of the mass. RMSE and max error as `cosim run` reports them: the true
+// position against the reference over the reference's duration.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include "control/controller_factory.h"
+#include "control/piecewise_polynomial_reference.h"
+#include "core/atomic_file.h"
+#include "core/json_writer.h"
+#include "experiments/reproduce/report_files.h"
+#include "experiments/reproduce/reproduction.h"
+#include "render/figures.h"
+#include "sim/flight_metrics.h"
+#include "sim/flight_simulation.h"
+#include "sim/model_error.h"
+#include "sim/world_model.h"
+
+namespace cosim::reproduce {
+
+namespace {
+
+constexpr double kFlownMass = 0.037;  // kg: the bundled scenario's vehicles[0].mass
+
+// One configuration of the study: a controller, and which effects are switched off.
+struct Variant {
+  const char* label;              // the row's "controller"
+  const char* controller;         // controller.name
+  bool ideal_sensing = false;     // the controller reads the true state (no mocap, no EKF)
+  bool unlimited_thrust = false;  // no rotor speed limit (and so no firmware capping)
+  bool no_rotor_drag = false;
+  bool no_motor_lag = false;  // rotors reach their commanded speed at once
+  bool true_mass = false;     // the firmware's mass parameter set to the flown 37 g
+};
+
+const Variant kControllers[] = {{"crazyflie_lee", "crazyflie_lee"},
+                                {"crazyflie_mellinger", "crazyflie_mellinger"},
+                                {"crazyflie_pid", "crazyflie_pid"}};
+
+const Variant kEffects[] = {
+    {"lee/ideal_sensing", "crazyflie_lee", true, false, false, false, false},
+    {"lee/unlimited_thrust", "crazyflie_lee", false, true, false, false, false},
+    {"lee/no_rotor_drag", "crazyflie_lee", false, false, true, false, false},
+    {"lee/no_motor_lag", "crazyflie_lee", false, false, false, true, false},
+    {"lee/true_mass", "crazyflie_lee", false, false, false, false, true},
+    {"lee/all_off", "crazyflie_lee", true, true, true, true, true}};
+
+// The bundled scenario at `timescale` under v's controller, with v's effects off.
+Scenario studyScenario(const Variant& v, double timescale, std::uint64_t seed) {
+  std::ostringstream ts;
+  ts << timescale;
+  Scenario s = loadScenario(
+      COSIM_SCENARIOS_DIR "/crazyflie_figure8.yaml",
+      {"vehicles[0].reference.timescale=" + ts.str(),
+       "controller.name=" + std::string(v.controller), "sim.seed=" + std::to_string(seed)});
+  if (v.ideal_sensing) {
+    s.sensors = SensorSettings{};
+    s.estimator.name = "ground_truth";
+  }
+  if (v.no_rotor_drag) s.disturbances.rotor_drag = false;
+  if (v.true_mass) s.controller_gains.set("mass", std::to_string(kFlownMass));
+  return s;
+}
+
+// The composed model with one of the vehicle's rotor constants replaced.
+void setRotorConstant(std::string& xml, const std::string& name, const std::string& value) {
+  const std::string key = "name=\"cf/" + name + "\" data=\"";
+  const std::size_t at = xml.find(key);
+  if (at == std::string::npos) throw std::logic_error("no rotor constant " + name);
+  const std::size_t from = at + key.size();
+  xml.replace(from, xml.find('"', from) - from, value);
+}
+
+struct Row {
+  std::string controller;
+  double timescale = 1.0, peak_speed = 0.0, rmse = 0.0, max_error = 0.0;
+  std::string end_reason;
+};
+
+Row fly(const Variant& v, double timescale, const Options& options) {
+  const Scenario s = studyScenario(v, timescale, options.seed);
+  std::string xml = composeWorldXml(s);
+  if (v.unlimited_thrust) setRotorConstant(xml, "max_rotor_speed", "100000");
+  if (v.no_motor_lag) {
+    setRotorConstant(xml, "time_constant_up", "0.0001");
+    setRotorConstant(xml, "time_constant_down", "0.0001");
+  }
+  const WorldModel world = WorldModel::fromXml(xml, s);
+  const QuadrotorParams believed = believedAirframe(world.vehicles()[0].params, s.model_error);
+  ParamSet gains = s.controller_gains;
+  std::unique_ptr<FlightController> controller =
+      makeFlightController(v.controller, gains, believed);
+  PiecewisePolynomialReference reference = *s.vehicles[0].reference;
+  std::vector<VehiclePilot> pilots(1);
+  pilots[0].controller = controller.get();
+  pilots[0].reference = &reference;
+  pilots[0].goal = s.vehicles[0].goal();
+  pilots[0].believed_airframe = &believed;
+  pilots[0].reference_end = reference.duration();
+  FlightOptions flight;
+  flight.settings = s.sim;
+  const RunLog log = simulateFlight(world, s, pilots, flight);
+
+  Row row;
+  row.controller = v.label;
+  row.timescale = timescale;
+  row.end_reason = log.end_reason;
+  const FlightMetrics m = computeFlightMetrics(log.vehicles[0], s.world, true);
+  row.rmse = m.rmse_m;
+  row.max_error = m.max_error_m;
+  for (const LogSample& x : log.vehicles[0].samples)
+    if (x.t <= reference.duration()) row.peak_speed = std::max(row.peak_speed, x.ref_vel.norm());
+  return row;
+}
+
+const Row& find(const std::vector<Row>& rows, const std::string& label, double ts) {
+  for (const Row& r : rows)
+    if (r.controller == label && std::abs(r.timescale - ts) < 1e-9) return r;
+  throw std::logic_error("no row " + label);
+}
+
+std::string markdown(const std::vector<Row>& rows, const std::vector<double>& scales,
+                     const std::vector<const Variant*>& controllers,
+                     const std::vector<const Variant*>& effects, const Options& options) {
+  std::ostringstream md;
+  md << "# Crazyflie 2.1 Brushless on Crazyswarm2's figure-eight: predicted tracking error\n\n"
+     << "experiments/scenarios/crazyflie_figure8.yaml: cf21_brushless at 37 g, "
+        "crazyflie-firmware's "
+        "controllers with their default gains and loop rates, the Brushless build's power "
+        "distribution and capping, rotor drag, motor lag, motion capture (100 Hz, 1 mm, 11 ms "
+        "late) into the EKF; figure8.csv relative to the 1 m start, flown from hover at t = 0. "
+        "MuJoCo at 1 kHz, control at 500 Hz, seed "
+     << options.seed
+     << ". RMSE and max error: true position against the reference over the reference's "
+        "duration, as `cosim run` reports them.\n\n| timescale | peak speed [m/s] |";
+  for (const Variant* c : controllers) md << " " << c->label << " RMSE / max [m] |";
+  md << "\n|---|---|";
+  for (std::size_t i = 0; i < controllers.size(); ++i) md << "---|";
+  md << "\n";
+  for (double ts : scales) {
+    md << "| " << fixed(ts, 1) << " | "
+       << fixed(find(rows, controllers[0]->label, ts).peak_speed, 2) << " |";
+    for (const Variant* c : controllers) {
+      const Row& r = find(rows, c->label, ts);
+      md << " " << fixed(r.rmse, 4) << " / " << fixed(r.max_error, 4)
+         << (r.end_reason == "goal" ? "" : " (" + r.end_reason + ")") << " |";
+    }
+    md << "\n";
+  }
+  md << "\nWhat drives crazyflie_lee's error: the same flights with one effect switched off; "
+        "each cell is the RMSE [m] and, in brackets, the share of the full model's RMSE that "
+        "goes away without that effect.\n\n| timescale | full model |";
+  for (const Variant* e : effects) md << " " << e->label << " |";
+  md << "\n|---|---|";
+  for (std::size_t i = 0; i < effects.size(); ++i) md << "---|";
+  md << "\n";
+  for (double ts : scales) {
+    const double full = find(rows, "crazyflie_lee", ts).rmse;
+    md << "| " << fixed(ts, 1) << " | " << fixed(full, 4) << " |";
+    for (const Variant* e : effects) {
+      const double r = find(rows, e->label, ts).rmse;
+      md << " " << fixed(r, 4) << " (" << fixed(100.0 * (full - r) / full, 0) << " %) |";
+    }
+    md << "\n";
+  }
+  md << "\nFigure: crazyflie-figure8.png (RMSE against peak speed per controller). Rows in "
+        "crazyflie-figure8.json.\n";
+  if (options.quick) md << "\n(--quick: timescales 1.0 and 0.5, crazyflie_lee and lee/true_mass only.)\n";
+  return md.str();
+}
+
+}  // namespace
+
+Report crazyflieFigure8(const Options& options) {
+  const std::vector<double> scales = options.quick
+                                         ? std::vector<double>{1.0, 0.5}
+                                         : std::vector<double>{1.0, 0.9, 0.8, 0.7, 0.6, 0.5};
+  std::vector<const Variant*> controllers, effects;
+  for (const Variant& v : kControllers)
+    if (!options.quick || std::string(v.controller) == "crazyflie_lee") controllers.push_back(&v);
+  for (const Variant& v : kEffects)
+    if (!options.quick || std::string(v.label) == "lee/true_mass") effects.push_back(&v);
+  std::vector<Row> rows;
+  for (double ts : scales) {
+    for (const Variant* v : controllers) rows.push_back(fly(*v, ts, options));
+    for (const Variant* v : effects) rows.push_back(fly(*v, ts, options));
+  }
+
+  const std::filesystem::path dir(options.out_dir);
+  std::vector<JsonObject> json_rows;
+  std::string csv = "controller,timescale,peak_speed_mps,rmse_m,max_error_m\n";
+  for (const Row& r : rows) {
+    JsonObject j;
+    j.add("controller", r.controller)
+        .add("timescale", r.timescale)
+        .add("peak_speed_mps", r.peak_speed)
+        .add("rmse_m", r.rmse)
+        .add("max_error_m", r.max_error)
+        .add("end_reason", r.end_reason);
+    json_rows.push_back(j);
+    csv += r.controller + "," + fixed(r.timescale, 2) + "," + JsonObject::number(r.peak_speed) +
+           "," + JsonObject::number(r.rmse) + "," + JsonObject::number(r.max_error) + "\n";
+  }
+  writeFileAtomically(dir / "crazyflie-figure8.csv", csv);
+  writeComparisonChart(dir / "crazyflie-figure8.csv", "peak_speed_mps", "rmse_m", "controller",
+                       dir / "crazyflie-figure8");
+  return {markdown(rows, scales, controllers, effects, options), json_rows};
+}
+
+}  // namespace cosim::reproduce
