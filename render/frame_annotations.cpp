@@ -86,7 +86,8 @@ mjrRect FrameAnnotations::legend(const std::vector<LegendEntry>& entries) {
 
 mjrRect FrameAnnotations::errorScale(double scale_max, const std::string& title, int slot,
                                      bool compact) {
-  const int bar_w = std::max(60, viewport_.width / (compact ? 8 : 5)), bar_h = std::max(6, con_->charHeight / 2);
+  const int bar_w = std::max(60, viewport_.width / (compact ? 8 : 5));
+  const int bar_h = std::max(6, con_->charHeight / 2);
   // Wide enough for the title too (the end labels stand half outside the bar).
   const int w =
       std::max(bar_w + 2 * con_->charWidth[static_cast<int>('0')], textWidth(title)) + 2 * pad_;

@@ -365,7 +365,8 @@ void RunRenderer::annotate(double t) {
   overlay_boxes_.push_back(
       ann.stateBox(stateBoxLines(t, states, planners, static_cast<std::size_t>(room))));
   const int legend_room = compact ? 3 : std::max(3, ann.linesFitting(0.4));
-  overlay_boxes_.push_back(ann.legend(legendEntries(static_cast<std::size_t>(legend_room), compact)));
+  overlay_boxes_.push_back(
+      ann.legend(legendEntries(static_cast<std::size_t>(legend_room), compact)));
   for (std::size_t k = 0; k < scales_.size(); ++k) {
     // One scale: its full name; one per kind of vehicle: the kind, and short names.
     const ErrorReference r = scales_[k].reference;
