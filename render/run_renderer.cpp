@@ -275,7 +275,11 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
                                   : !v.samples.empty()    ? v.samples.front().pos
                                                           : v.goal;
     if (!several) addSphere(start, 3.0 * line_radius_, kStartColour, 0.95f);
-    addSphere(v.goal, 3.5 * line_radius_, several ? planned : kGoalColour, 0.95f);
+    // A team's goals small and see-through: its vehicles' markers are the solid balls.
+    if (several)
+      addSphere(v.goal, 2.0 * line_radius_, planned, 0.5f);
+    else
+      addSphere(v.goal, 3.5 * line_radius_, kGoalColour, 0.95f);
     if (plans) {
       const Eigen::Vector3d floor(v.goal.x(), v.goal.y(), scenario_.world.bounds_min.z());
       addSegment(floor, v.goal - Eigen::Vector3d(0, 0, 3.0 * line_radius_),

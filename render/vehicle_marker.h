@@ -5,8 +5,8 @@
 // that only tells its colour.
 namespace cosim {
 
-// Pixels: a marker's radius on screen is at least this (an 11 px disc at 720 lines).
-constexpr double kMarkerMinPixels = 5.5;
+// Pixels: a marker's radius on screen is at least this (a 14 px disc).
+constexpr double kMarkerMinPixels = 7.0;
 
 // Metres one pixel covers at `depth` metres from the eye, through a lens of vertical field of
 // view `fovy_deg` onto `height_px` rows (pinhole camera: visible height 2 depth tan(fovy / 2)).
