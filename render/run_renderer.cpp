@@ -19,12 +19,13 @@ namespace {
 constexpr int kTrailSegmentBudget = 250;
 constexpr int kReferenceDashBudget = 60;
 // With many vehicles (a 20-robot team) every vehicle's trail shares this many segments; 250
-// each made 5000 capsules a frame (about 0.4 s in software).
-constexpr int kTeamTrailSegmentBudget = 1500;
+// each made 5000 capsules a frame (about 0.4 s in software), and 1500 shared by 32 Crazyflies
+// still made a team's frame three times a single vehicle's (cosim bench --section team_render).
+constexpr int kTeamTrailSegmentBudget = 800;
 
 int trailBudget(std::size_t vehicles) {
   return std::max(
-      40, std::min(kTrailSegmentBudget, kTeamTrailSegmentBudget / std::max<int>(1, vehicles)));
+      20, std::min(kTrailSegmentBudget, kTeamTrailSegmentBudget / std::max<int>(1, vehicles)));
 }
 // Lines are about this fraction of the visible height thick at the camera's focus
 // (about 4 px in a 720-line frame).
@@ -159,13 +160,38 @@ void RunRenderer::fadeObstacles(const CameraPose& pose, CameraKind camera, doubl
   }
 }
 
+void RunRenderer::hideTinyVehicles(double t) {
+  // A team member under a few pixels is drawn as its marker alone (addOverlays): its airframe's
+  // geoms would cost as much to rasterise as a larger one's and show as a speck.
+  if (log_.vehicles.size() < 2) return;
+  const mjModel* m = world_.model();
+  std::vector<int> hidden;  // root bodies
+  for (std::size_t v = 0; v < world_.vehicles().size() && v < log_.vehicles.size(); ++v) {
+    const VehicleLog& vl = log_.vehicles[v];
+    if (vl.samples.empty() || world_.vehicles()[v].body < 0) continue;
+    const Eigen::Vector3d p = vl.samples[sampleIndexAt(vl, t)].pos;
+    if (vehicleMarker(vl.radius, (p - eye_).norm(), fovy_deg_, ctx_->height()).solid)
+      hidden.push_back(m->body_rootid[world_.vehicles()[v].body]);
+  }
+  if (hidden.empty()) return;
+  int kept = 0;
+  for (int i = 0; i < scene_.ngeom; ++i) {
+    const mjvGeom& g = scene_.geoms[i];
+    const bool tiny = g.objtype == mjOBJ_GEOM && g.objid >= 0 &&
+                      std::find(hidden.begin(), hidden.end(),
+                                m->body_rootid[m->geom_bodyid[g.objid]]) != hidden.end();
+    if (!tiny) scene_.geoms[kept++] = g;
+  }
+  scene_.ngeom = kept;
+}
+
 void RunRenderer::addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                             const Eigen::Vector3f& rgb, double radius, float alpha) {
+                             const Eigen::Vector3f& rgb, double radius, float alpha, int type) {
   if (scene_.ngeom >= scene_.maxgeom || (b - a).norm() < 1e-9) return;
   mjvGeom* g = scene_.geoms + scene_.ngeom;
   const float rgba[4] = {rgb.x(), rgb.y(), rgb.z(), alpha};
-  mjv_initGeom(g, mjGEOM_CAPSULE, nullptr, nullptr, nullptr, rgba);
-  mjv_makeConnector(g, mjGEOM_CAPSULE, radius, a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
+  mjv_initGeom(g, type, nullptr, nullptr, nullptr, rgba);
+  mjv_makeConnector(g, type, radius, a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
   g->emission = 0.7f;  // nearly flat colour: lines keep their colour in shade
   g->specular = 0.0f;
   g->category = mjCAT_DECOR;
@@ -245,11 +271,14 @@ void RunRenderer::addTrail(std::size_t vehicle, double t) {
   const std::vector<std::size_t>& kept = trail_vertices_[vehicle];
   const double scale = errorScale(vehicle);
   const std::size_t last = sampleIndexAt(v, t);
+  // A team's thin trails as cylinders (no round caps: half the triangles of a capsule; the
+  // joints do not show at their width).
+  const int type = log_.vehicles.size() > 1 ? mjGEOM_CYLINDER : mjGEOM_CAPSULE;
   std::size_t from = 0;
   for (std::size_t k = 1; k < kept.size() && from < last; ++k) {
     const std::size_t i = std::min(kept[k], last);  // the trail ends at the vehicle
     addSegment(towardEye(v.samples[from].pos, 2.5), towardEye(v.samples[i].pos, 2.5),
-               errorColour(0.5 * (err[from] + err[i]) / scale), line_radius_);
+               errorColour(0.5 * (err[from] + err[i]) / scale), line_radius_, 1.0f, type);
     from = i;
   }
 }
@@ -492,6 +521,7 @@ void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>&
   // the shadow pass costs a second pass over every triangle.
   scene_.flags[mjRND_SHADOW] = camera == CameraKind::Top || camera == CameraKind::Overview;
   fadeObstacles(pose, camera, t);
+  hideTinyVehicles(t);
   timings_.model_geoms = scene_.ngeom;
   timings_.scene = since(t0);
   addOverlays(t, camera);

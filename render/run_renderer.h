@@ -76,10 +76,12 @@ class RunRenderer {
   void applyCamera(const CameraPose& pose);
   void fadeObstacles(const CameraPose& pose, CameraKind camera, double t);
   void addOverlays(double t, CameraKind camera);
+  // Removes from the scene the airframes of team members smaller than a marker on screen.
+  void hideTinyVehicles(double t);
   void addTrail(std::size_t vehicle, double t);
   void addReference(const VehicleLog& v);
   void addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3f& rgb,
-                  double radius, float alpha = 1.0f);
+                  double radius, float alpha = 1.0f, int type = mjGEOM_CAPSULE);
   void addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector3f& rgb, float alpha);
   // p moved toward the camera by `widths` line radii: drawn in front of the lines behind it
   // (the flown trail in front of the planned band, the reference in front of both) at the
