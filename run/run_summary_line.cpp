@@ -6,9 +6,11 @@ namespace cosim {
 
 namespace {
 
-// A number as the console has always printed it (6 significant digits); "?" if absent.
+// A number as the console has always printed it (6 significant digits); "none" where
+// metrics.json has null (no obstacles to measure a clearance to), "?" if absent.
 std::string number(const nlohmann::ordered_json& j, const char* key) {
   const auto it = j.find(key);
+  if (it != j.end() && it->is_null()) return "none";
   if (it == j.end() || !it->is_number()) return "?";
   std::ostringstream s;
   s << it->get<double>();
