@@ -8,6 +8,7 @@
 #include "experiments/bench/mapf_planners.h"
 #include "experiments/bench/physics_loop.h"
 #include "experiments/bench/reference_flight.h"
+#include "experiments/bench/team_render.h"
 #include "experiments/bench/team_scale.h"
 #include "experiments/bench/render_pipeline.h"
 #include "experiments/bench/sweep_throughput.h"
@@ -31,6 +32,7 @@ const std::vector<NamedSection>& sections() {
       {"reference_flight", bench::benchReferenceFlight},
       {"team_scale", bench::benchTeamScale},
       {"render_pipeline", bench::benchRenderPipeline},
+      {"team_render", bench::benchTeamRender},
       {"trajectory_generation", bench::benchTrajectoryGeneration},
       {"mapf_planners", bench::benchMapfPlanners},
       {"ant_planners", bench::benchAntPlanners},

@@ -12,6 +12,7 @@
 #include "core/output_files.h"
 #include "run/run_files.h"
 #include "run/run_pipeline.h"
+#include "run/run_summary_line.h"
 #include "run/scenario_checks.h"
 #include "core/input_error.h"
 
@@ -88,14 +89,11 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
       ctx.status = 1;
       return;
     }
-    const FlightMetrics& m = s.metrics.front();
+    // metrics.json's top level: for a team, the whole team's figures.
     std::cout << "run: " << request.out_dir.string() << "\n"
-              << "  reached_goal " << (m.reached_goal ? "yes" : "no") << ", collisions "
-              << m.collisions << ", flight " << m.flight_time_s << " s, rmse " << m.rmse_m
-              << " m (against the " << m.error_reference << "), max error " << m.max_error_m
-              << " m, min clearance " << m.min_clearance_m << " m, " << s.sim_speed_x
-              << "x real time\n";
+              << "  " << runSummaryLine(s.metrics_json.json()) << "\n";
     if (s.status != 0) std::cerr << "cosim: " << s.message << "\n";
+    std::cout << runPagesLine(request.out_dir) << "\n";
     ctx.status = s.status;
   });
 }

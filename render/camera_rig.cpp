@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "render/camera_occlusion.h"
 #include "render/log_lookup.h"
 
 namespace cosim {
@@ -41,8 +42,7 @@ CameraRig::CameraRig(const Scenario& scenario, const RunLog& log, double aspect)
   overview_ = overview();
 }
 
-CameraPose CameraRig::chaseAt(double t) const {
-  CameraPose p;
+double CameraRig::chaseHeading(double t) const {
   const VehicleLog& v = log_.vehicles.front();
   const Eigen::Vector3d pos = v.samples[sampleIndexAt(v, t)].pos;
   // Heading from the displacement over the last 1.5 s (an average velocity: no jitter from
@@ -53,7 +53,25 @@ CameraPose CameraRig::chaseAt(double t) const {
   toward.z() = 0.0;
   if (toward.norm() > 1e-9) toward.normalize();
   const Eigen::Vector3d d = moved + 0.3 * toward;
-  p.azimuth = d.head<2>().norm() > 1e-9 ? std::atan2(d.y(), d.x()) / kDeg : 0.0;
+  const double heading = d.head<2>().norm() > 1e-9 ? std::atan2(d.y(), d.x()) / kDeg : 0.0;
+  // Near the world's edge, looking on would show the sky beyond it: turn toward the world's
+  // centre, in 15 degree steps, until even the steepest view (chaseAt) keeps the floor at the
+  // top of the frame.
+  const Eigen::Vector3d centre = 0.5 * (scenario_.world.bounds_min + scenario_.world.bounds_max);
+  const double to_centre = std::atan2(centre.y() - pos.y(), centre.x() - pos.x()) / kDeg;
+  const double turn = std::remainder(to_centre - heading, 360.0);
+  for (double step = 0.0; step < std::abs(turn); step += 15.0) {
+    CameraPose p = chaseAt(t, heading + std::copysign(step, turn));
+    if (topOfFrameInsideWorld(p)) return p.azimuth;
+  }
+  return heading + turn;
+}
+
+CameraPose CameraRig::chaseAt(double t, double azimuth) const {
+  CameraPose p;
+  const VehicleLog& v = log_.vehicles.front();
+  const Eigen::Vector3d pos = v.samples[sampleIndexAt(v, t)].pos;
+  p.azimuth = azimuth;
   p.distance = std::max(1.5, 20.0 * std::max(v.radius, 0.05));
   // Aim a little ahead, where the vehicle will be (the log knows): the path ahead and what
   // stands next to it are in view, the vehicle below the centre. Looking down over the
@@ -70,61 +88,128 @@ CameraPose CameraRig::chaseAt(double t) const {
   return p;
 }
 
-bool CameraRig::topOfFrameInsideWorld(const CameraPose& p) const {
-  const double a = p.azimuth * kDeg, top = (p.elevation + 0.5 * kModelFovy) * kDeg;
-  if (top >= 0.0) return false;  // the top edge looks at the horizon or above
-  const Eigen::Vector3d eye = p.eye();
-  const double drop = eye.z() - scenario_.world.bounds_min.z();
-  const Eigen::Vector3d ray(std::cos(top) * std::cos(a), std::cos(top) * std::sin(a),
-                            std::sin(top));
-  const Eigen::Vector3d hit = eye + ray * (drop / -ray.z());
-  // A margin of a tenth of the world's size: the edge itself may show.
-  const Eigen::Vector3d lo = scenario_.world.bounds_min, hi = scenario_.world.bounds_max;
-  const double margin = 0.1 * (hi - lo).head<2>().norm();
-  return hit.x() > lo.x() - margin && hit.x() < hi.x() + margin && hit.y() > lo.y() - margin &&
-         hit.y() < hi.y() + margin;
+namespace {
+
+// The camera's axes (MuJoCo's free camera: up is forward turned 90 degrees up).
+void cameraAxes(const CameraPose& p, Eigen::Vector3d& forward, Eigen::Vector3d& up,
+                Eigen::Vector3d& right) {
+  const double a = p.azimuth * kDeg, e = p.elevation * kDeg;
+  forward = {std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e)};
+  up = {-std::sin(e) * std::cos(a), -std::sin(e) * std::sin(a), std::cos(e)};
+  right = forward.cross(up);
 }
 
-bool CameraRig::eyeIsClear(const CameraPose& p) const {
-  // The eye stands clear of every obstacle, and so does the first half of its sight line: an
-  // obstacle right in front of the lens would fill the frame (farther ones turn see-through
-  // when they hide the vehicle, run_renderer.cpp).
+}  // namespace
+
+bool CameraRig::topOfFrameInsideWorld(const CameraPose& p) const {
+  // The rays through the frame's top corners and top centre (model lens) all meet the floor
+  // within the world, a thirtieth of its size of slack: no sky beyond its edge shows.
+  Eigen::Vector3d forward, up, right;
+  cameraAxes(p, forward, up, right);
+  const double ty = std::tan(0.5 * kModelFovy * kDeg), tx = ty * aspect_;
   const Eigen::Vector3d eye = p.eye();
-  const double clearance = 0.05 * p.distance;
-  constexpr int kSamples = 8;
-  for (const Obstacle& o : scenario_.world.obstacles)
-    for (int k = 0; k < kSamples; ++k) {
-      const Eigen::Vector3d q = eye + (p.lookat - eye) * (0.5 * k / kSamples);
-      if (o.signedDistance(q) < clearance) return false;
-    }
+  const Eigen::Vector3d lo = scenario_.world.bounds_min, hi = scenario_.world.bounds_max;
+  const double margin = (hi - lo).head<2>().norm() / 30.0;
+  for (double side : {-1.0, 0.0, 1.0}) {
+    const Eigen::Vector3d ray = forward + ty * up + side * tx * right;
+    if (ray.z() >= -1e-6) return false;  // at the horizon or above
+    const Eigen::Vector3d hit = ray * ((eye.z() - lo.z()) / -ray.z()) + eye;
+    if (hit.x() < lo.x() - margin || hit.x() > hi.x() + margin || hit.y() < lo.y() - margin ||
+        hit.y() > hi.y() + margin)
+      return false;
+  }
   return true;
 }
 
-double CameraRig::clearDistance(CameraPose p) const {
+double CameraRig::nearOccludedShare(const CameraPose& p, double depth) const {
+  // Rays through a 6 x 4 grid over the frame, each out to `depth`: the share that meets an
+  // obstacle first. A wall beside the lens fills much of the frame without hiding the vehicle.
+  Eigen::Vector3d forward, up, right;
+  cameraAxes(p, forward, up, right);
+  const double ty = std::tan(0.5 * kModelFovy * kDeg), tx = ty * aspect_;
+  const Eigen::Vector3d eye = p.eye();
+  int blocked = 0;
+  constexpr int kColumns = 6, kRows = 4;
+  for (int i = 0; i < kColumns; ++i)
+    for (int j = 0; j < kRows; ++j) {
+      const double u = (2.0 * i + 1.0) / kColumns - 1.0, v = (2.0 * j + 1.0) / kRows - 1.0;
+      const Eigen::Vector3d ray = (forward + u * tx * right + v * ty * up).normalized();
+      if (firstObstacleHit(scenario_.world.obstacles, eye, eye + depth * ray, 0.0) < 1.0)
+        ++blocked;
+    }
+  return static_cast<double>(blocked) / (kColumns * kRows);
+}
+
+bool CameraRig::eyeIsClear(const CameraPose& p, const Eigen::Vector3d& target) const {
+  // The eye stands over the floor, clear of every obstacle, and so does the first half of its
+  // sight line: an obstacle right in front of the lens would fill the frame (farther ones turn
+  // see-through when they hide the vehicle, run_renderer.cpp). Nothing stands between the
+  // vehicle and the eye: the camera never films the back of a wall.
+  const Eigen::Vector3d eye = p.eye();
+  const Eigen::Vector3d lo = scenario_.world.bounds_min, hi = scenario_.world.bounds_max;
+  if (!overFloor(eye, lo, hi)) return false;
+  const std::vector<Obstacle>& obstacles = scenario_.world.obstacles;
+  const double clearance = 0.05 * p.distance;
+  if (firstObstacleHit(obstacles, eye, eye + 0.5 * (p.lookat - eye), clearance) < 1.0) return false;
+  if (firstObstacleHit(obstacles, target, eye, 0.0) < 1.0) return false;
+  // Obstacles nearer than half the way to the vehicle cover at most a quarter of the frame.
+  return nearOccludedShare(p, 0.5 * (target - eye).norm()) <= kMostNearOccluded;
+}
+
+double CameraRig::clearDistance(CameraPose p, const Eigen::Vector3d& target) const {
   // Walk in from the wanted distance until the eye is clear; the closest allowed is a fifth.
   const double wanted = p.distance;
-  constexpr int kSteps = 32;
+  constexpr int kSteps = 16;
   for (int k = 0; k <= kSteps; ++k) {
     p.distance = wanted * (1.0 - 0.8 * k / kSteps);
-    if (eyeIsClear(p)) return p.distance;
+    if (eyeIsClear(p, target)) return p.distance;
   }
   return p.distance;
 }
 
-CameraPose CameraRig::chase(double t) const {
-  CameraPose p = chaseAt(t);
-  // The distance is the closest of the clear distances around t, so the camera moves in ahead
-  // of an obstacle and out again after it instead of jumping; still a function of t alone.
-  double distance = p.distance;
-  for (double dt : {-1.0, -0.5, 0.0, 0.5, 1.0})
-    distance = std::min(distance, clearDistance(chaseAt(t + dt)));
-  const double wanted = p.distance;
-  p.distance = distance;
-  if (!eyeIsClear(p)) {
-    p.distance = wanted;
-    p.distance = clearDistance(p);
+CameraPose CameraRig::clearPose(CameraPose p, const Eigen::Vector3d& target) const {
+  // Looking down more steeply first (over a wall beside the path, its top is all that shows),
+  // then moving in (in front of a wall behind the vehicle).
+  const double elevation = p.elevation;
+  for (double steeper : {0.0, 12.0, 24.0}) {
+    p.elevation = std::max(-80.0, elevation - steeper);
+    CameraPose q = p;
+    q.distance = clearDistance(p, target);
+    if (eyeIsClear(q, target)) return q;
   }
+  p.elevation = elevation;
+  p.distance = clearDistance(p, target);
   return p;
+}
+
+Eigen::Vector3d CameraRig::chaseTarget(double t) const {
+  const VehicleLog& v = log_.vehicles.front();
+  return v.samples[sampleIndexAt(v, t)].pos;
+}
+
+CameraPose CameraRig::chase(double t) const {
+  // The heading is the circular mean of the headings over +-1 s, and the distance the closest
+  // of the clear distances around t: the camera turns away from the world's edge and moves in
+  // ahead of an obstacle and out again after it instead of jumping; still a function of t alone.
+  constexpr double kWindow[] = {-1.0, -0.5, 0.0, 0.5, 1.0};
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (double dt : kWindow) {
+    const double a = chaseHeading(t + dt) * kDeg;
+    mean += Eigen::Vector2d(std::cos(a), std::sin(a));
+  }
+  const double azimuth = std::atan2(mean.y(), mean.x()) / kDeg;
+  CameraPose p = chaseAt(t, azimuth);
+  double distance = p.distance, elevation = p.elevation;
+  for (double dt : kWindow) {
+    const CameraPose q = clearPose(chaseAt(t + dt, azimuth), chaseTarget(t + dt));
+    distance = std::min(distance, q.distance);
+    elevation = std::min(elevation, q.elevation);
+  }
+  CameraPose smooth = p;
+  smooth.distance = distance;
+  smooth.elevation = elevation;
+  if (eyeIsClear(smooth, chaseTarget(t))) return smooth;
+  return clearPose(p, chaseTarget(t));
 }
 
 CameraPose CameraRig::overview() const {

@@ -44,14 +44,24 @@ class CameraRig {
  private:
   // Seconds ahead the chase camera aims at (where the vehicle will be then).
   static constexpr double kChaseLookAheadSeconds = 2.0;
-  // The chase camera's pose at t before obstacles are considered.
-  CameraPose chaseAt(double t) const;
+  // Where the chase camera looks at t (degrees): along the vehicle's motion, turned toward the
+  // world's centre when that would show the sky beyond the world's edge.
+  double chaseHeading(double t) const;
+  // The chase camera's pose at t looking along `azimuth`, before obstacles are considered.
+  CameraPose chaseAt(double t, double azimuth) const;
+  Eigen::Vector3d chaseTarget(double t) const;  // the chased vehicle's position
   CameraPose chase(double t) const;
-  bool eyeIsClear(const CameraPose& p) const;
+  // The eye over the floor, clear of obstacles, with nothing between it and `target`.
+  bool eyeIsClear(const CameraPose& p, const Eigen::Vector3d& target) const;
   // Whether the floor seen at the top edge of the frame (model lens) is within the world.
   bool topOfFrameInsideWorld(const CameraPose& p) const;
   // The largest eye distance up to p.distance from which the view is clear (eyeIsClear).
-  double clearDistance(CameraPose p) const;
+  double clearDistance(CameraPose p, const Eigen::Vector3d& target) const;
+  // p made clear (eyeIsClear): looking down more steeply, else moving in.
+  CameraPose clearPose(CameraPose p, const Eigen::Vector3d& target) const;
+  // The share of the frame (a grid of rays) that meets an obstacle within `depth` of the eye.
+  double nearOccludedShare(const CameraPose& p, double depth) const;
+  static constexpr double kMostNearOccluded = 0.25;
   CameraPose overview() const;
 
   const Scenario& scenario_;

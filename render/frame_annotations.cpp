@@ -40,7 +40,7 @@ void FrameAnnotations::text(const std::string& s, int x, int y, const Eigen::Vec
             rgb.x(), rgb.y(), rgb.z(), con_);
 }
 
-void FrameAnnotations::stateBox(const std::vector<std::pair<std::string, std::string>>& lines) {
+mjrRect FrameAnnotations::stateBox(const std::vector<std::pair<std::string, std::string>>& lines) {
   int label_w = 0, value_w = 0;
   for (const auto& [l, v] : lines) {
     label_w = std::max(label_w, textWidth(l));
@@ -56,9 +56,10 @@ void FrameAnnotations::stateBox(const std::vector<std::pair<std::string, std::st
     text(lines[i].first, x + pad_, y, {0.3f, 0.3f, 0.35f});
     text(lines[i].second, x + pad_ + label_w + gap, y, kText);
   }
+  return {x, top - h, w, h};
 }
 
-void FrameAnnotations::legend(const std::vector<LegendEntry>& entries) {
+mjrRect FrameAnnotations::legend(const std::vector<LegendEntry>& entries) {
   const int swatch = 2 * con_->charHeight;
   int label_w = 0;
   for (const auto& e : entries) label_w = std::max(label_w, textWidth(e.label));
@@ -80,10 +81,13 @@ void FrameAnnotations::legend(const std::vector<LegendEntry>& entries) {
     }
     text(entries[i].label, x + 2 * pad_ + swatch, y, kText);
   }
+  return {x, y0, w, h};
 }
 
-void FrameAnnotations::errorScale(double scale_max, const std::string& title, int slot) {
-  const int bar_w = std::max(60, viewport_.width / 5), bar_h = std::max(6, con_->charHeight / 2);
+mjrRect FrameAnnotations::errorScale(double scale_max, const std::string& title, int slot,
+                                     bool compact) {
+  const int bar_w = std::max(60, viewport_.width / (compact ? 8 : 5));
+  const int bar_h = std::max(6, con_->charHeight / 2);
   // Wide enough for the title too (the end labels stand half outside the bar).
   const int w =
       std::max(bar_w + 2 * con_->charWidth[static_cast<int>('0')], textWidth(title)) + 2 * pad_;
@@ -104,6 +108,7 @@ void FrameAnnotations::errorScale(double scale_max, const std::string& title, in
   text("0", bx - textWidth("0") / 2, ty, kText);
   text(hi, bx + bar_w - textWidth(hi) / 2, ty, kText);
   text(title, x + (w - textWidth(title)) / 2, by + bar_h + pad_ / 2, kText);
+  return {x, y, w, h};
 }
 
 }  // namespace cosim

@@ -5,6 +5,7 @@
 
 #include "core/atomic_file.h"
 #include "core/json_flatten.h"
+#include "render/metric_card.h"
 #include "render/metric_groups.h"
 
 namespace cosim {
@@ -145,7 +146,7 @@ void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& r) {
     h << "<div class=\"cards\">\n";
     for (const auto& [k, v] : metrics.headline)
       h << "<div class=\"card\"><div class=\"k\">" << htmlEscape(k) << "</div><div class=\"v\">"
-        << htmlEscape(v) << "</div></div>\n";
+        << htmlEscape(cardValue(k, v)) << "</div></div>\n";
     h << "</div>\n";
   }
   writeMedia(h, r);

@@ -8,16 +8,19 @@
 namespace cosim {
 
 Eigen::Vector3f agentColour(std::size_t agent) {
-  static const std::array<Eigen::Vector3f, 7> okabe_ito = {
-      Eigen::Vector3f{0.90f, 0.62f, 0.0f},   // orange
-      Eigen::Vector3f{0.34f, 0.71f, 0.91f},  // sky blue
-      Eigen::Vector3f{0.0f, 0.62f, 0.45f},   // bluish green
-      Eigen::Vector3f{0.80f, 0.47f, 0.65f},  // reddish purple
-      Eigen::Vector3f{0.0f, 0.45f, 0.70f},   // blue
-      Eigen::Vector3f{0.84f, 0.37f, 0.0f},   // vermillion
-      Eigen::Vector3f{0.94f, 0.89f, 0.26f},  // yellow
+  // Reds, purples, a light blue and a grey: none near the viridis error scale's purple, blue, teal,
+  // green or yellow (at least 0.3 apart in RGB from every point of it), neighbours apart.
+  static const std::array<Eigen::Vector3f, 8> palette = {
+      Eigen::Vector3f{0.84f, 0.37f, 0.0f},   // vermillion (Okabe & Ito)
+      Eigen::Vector3f{0.34f, 0.71f, 0.91f},  // sky blue (Okabe & Ito)
+      Eigen::Vector3f{0.80f, 0.47f, 0.65f},  // reddish purple (Okabe & Ito)
+      Eigen::Vector3f{0.62f, 0.10f, 0.42f},  // plum (Okabe & Ito's orange lit up read as yellow)
+      Eigen::Vector3f{0.75f, 0.08f, 0.16f},  // crimson
+      Eigen::Vector3f{1.0f, 0.62f, 0.80f},   // pink
+      Eigen::Vector3f{0.55f, 0.30f, 0.12f},  // brown
+      Eigen::Vector3f{0.50f, 0.50f, 0.50f},  // grey
   };
-  return okabe_ito[agent % okabe_ito.size()];
+  return palette[agent % palette.size()];
 }
 
 Eigen::Vector3f errorColour(double fraction) {

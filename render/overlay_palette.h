@@ -16,9 +16,10 @@ inline const Eigen::Vector3f kGoalColour{0.9f, 0.1f, 0.1f};
 // the grey world).
 inline const Eigen::Vector3f kHeadingColour{0.85f, 0.1f, 0.75f};
 
-// One colour per agent, distinguishable for colour-blind viewers (Okabe & Ito, "Color
-// Universal Design", 2008), starting with the single-vehicle orange. With one agent, the
-// planned path keeps kPlannedPathColour.
+// One colour per agent, eight in turn: Okabe & Ito's colour-blind-safe vermillion, sky blue and
+// reddish purple ("Color Universal Design", 2008), then plum, crimson, pink, brown and grey.
+// None is a colour of the error scale (errorColour) or the heading arrow, so a vehicle's colour
+// is never read as an error. With one agent, the planned path keeps kPlannedPathColour.
 Eigen::Vector3f agentColour(std::size_t agent);
 
 // The flown trail's colour for a tracking error as a fraction of the colour scale (0..1,

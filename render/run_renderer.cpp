@@ -1,11 +1,14 @@
 #include "render/run_renderer.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
+#include "render/heading_arrow.h"
 #include "render/state_box_lines.h"
 #include "render/trail_decimation.h"
+#include "render/vehicle_marker.h"
 #include "sim/ground_vehicle_handles.h"
 
 namespace cosim {
@@ -16,12 +19,13 @@ namespace {
 constexpr int kTrailSegmentBudget = 250;
 constexpr int kReferenceDashBudget = 60;
 // With many vehicles (a 20-robot team) every vehicle's trail shares this many segments; 250
-// each made 5000 capsules a frame (about 0.4 s in software).
-constexpr int kTeamTrailSegmentBudget = 1500;
+// each made 5000 capsules a frame (about 0.4 s in software), and 1500 shared by 32 Crazyflies
+// still made a team's frame three times a single vehicle's (cosim bench --section team_render).
+constexpr int kTeamTrailSegmentBudget = 800;
 
 int trailBudget(std::size_t vehicles) {
   return std::max(
-      40, std::min(kTrailSegmentBudget, kTeamTrailSegmentBudget / std::max<int>(1, vehicles)));
+      20, std::min(kTrailSegmentBudget, kTeamTrailSegmentBudget / std::max<int>(1, vehicles)));
 }
 // Lines are about this fraction of the visible height thick at the camera's focus
 // (about 4 px in a 720-line frame).
@@ -116,6 +120,7 @@ void RunRenderer::applyCamera(const CameraPose& pose) {
   camera_.elevation = pose.elevation;
   camera_.distance = pose.distance;
   eye_ = pose.eye();
+  fovy_deg_ = pose.fovy_deg;
   const double visible_height = 2.0 * pose.distance * std::tan(0.5 * pose.fovy_deg * M_PI / 180.0);
   line_radius_ = 0.5 * kLineWidthFraction * visible_height;
 }
@@ -155,13 +160,38 @@ void RunRenderer::fadeObstacles(const CameraPose& pose, CameraKind camera, doubl
   }
 }
 
+void RunRenderer::hideTinyVehicles(double t) {
+  // A team member under a few pixels is drawn as its marker alone (addOverlays): its airframe's
+  // geoms would cost as much to rasterise as a larger one's and show as a speck.
+  if (log_.vehicles.size() < 2) return;
+  const mjModel* m = world_.model();
+  std::vector<int> hidden;  // root bodies
+  for (std::size_t v = 0; v < world_.vehicles().size() && v < log_.vehicles.size(); ++v) {
+    const VehicleLog& vl = log_.vehicles[v];
+    if (vl.samples.empty() || world_.vehicles()[v].body < 0) continue;
+    const Eigen::Vector3d p = vl.samples[sampleIndexAt(vl, t)].pos;
+    if (vehicleMarker(vl.radius, (p - eye_).norm(), fovy_deg_, ctx_->height()).solid)
+      hidden.push_back(m->body_rootid[world_.vehicles()[v].body]);
+  }
+  if (hidden.empty()) return;
+  int kept = 0;
+  for (int i = 0; i < scene_.ngeom; ++i) {
+    const mjvGeom& g = scene_.geoms[i];
+    const bool tiny = g.objtype == mjOBJ_GEOM && g.objid >= 0 &&
+                      std::find(hidden.begin(), hidden.end(),
+                                m->body_rootid[m->geom_bodyid[g.objid]]) != hidden.end();
+    if (!tiny) scene_.geoms[kept++] = g;
+  }
+  scene_.ngeom = kept;
+}
+
 void RunRenderer::addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                             const Eigen::Vector3f& rgb, double radius, float alpha) {
+                             const Eigen::Vector3f& rgb, double radius, float alpha, int type) {
   if (scene_.ngeom >= scene_.maxgeom || (b - a).norm() < 1e-9) return;
   mjvGeom* g = scene_.geoms + scene_.ngeom;
   const float rgba[4] = {rgb.x(), rgb.y(), rgb.z(), alpha};
-  mjv_initGeom(g, mjGEOM_CAPSULE, nullptr, nullptr, nullptr, rgba);
-  mjv_makeConnector(g, mjGEOM_CAPSULE, radius, a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
+  mjv_initGeom(g, type, nullptr, nullptr, nullptr, rgba);
+  mjv_makeConnector(g, type, radius, a.x(), a.y(), a.z(), b.x(), b.y(), b.z());
   g->emission = 0.7f;  // nearly flat colour: lines keep their colour in shade
   g->specular = 0.0f;
   g->category = mjCAT_DECOR;
@@ -177,11 +207,10 @@ Eigen::Vector3d RunRenderer::towardEye(const Eigen::Vector3d& p, double widths) 
 
 void RunRenderer::addHeadingArrow(const LogSample& s, double radius, double width) {
   if (scene_.ngeom >= scene_.maxgeom) return;
-  // The body's forward (x) axis, level: where a quadrotor's nose or a robot's front points.
-  Eigen::Vector3d forward = s.att.toRotationMatrix().col(0);
-  forward.z() = 0.0;
-  if (forward.norm() < 1e-6) return;
-  forward.normalize();
+  // Where the vehicle is going (its velocity), none while it is nearly still.
+  const std::optional<Eigen::Vector3d> direction = headingArrowDirection(s.vel);
+  if (!direction) return;
+  const Eigen::Vector3d& forward = *direction;
   const Eigen::Vector3d from = s.pos + 0.6 * radius * forward;
   const Eigen::Vector3d to = s.pos + 2.2 * radius * forward;
   mjvGeom* g = scene_.geoms + scene_.ngeom;
@@ -242,66 +271,88 @@ void RunRenderer::addTrail(std::size_t vehicle, double t) {
   const std::vector<std::size_t>& kept = trail_vertices_[vehicle];
   const double scale = errorScale(vehicle);
   const std::size_t last = sampleIndexAt(v, t);
+  // A team's thin trails as cylinders (no round caps: half the triangles of a capsule; the
+  // joints do not show at their width).
+  const int type = log_.vehicles.size() > 1 ? mjGEOM_CYLINDER : mjGEOM_CAPSULE;
   std::size_t from = 0;
   for (std::size_t k = 1; k < kept.size() && from < last; ++k) {
     const std::size_t i = std::min(kept[k], last);  // the trail ends at the vehicle
     addSegment(towardEye(v.samples[from].pos, 2.5), towardEye(v.samples[i].pos, 2.5),
-               errorColour(0.5 * (err[from] + err[i]) / scale), line_radius_);
+               errorColour(0.5 * (err[from] + err[i]) / scale), line_radius_, 1.0f, type);
     from = i;
   }
 }
 
 void RunRenderer::addOverlays(double t, CameraKind camera) {
   const bool several = log_.vehicles.size() > 1;
+  // A team's picture shows where each member flew; the plans (a grid planner's right angles,
+  // one per member) and the references only when the scenario asks (render.team_plans).
+  const bool plans = !several || scenario_.render.team_plans;
   for (std::size_t a = 0; a < log_.vehicles.size(); ++a) {
     const VehicleLog& v = log_.vehicles[a];
     const Eigen::Vector3f planned = plannedColour(a);
     // The planned path as a wide band; the flown trail and the reference are drawn in front of
     // it (towardEye), so all three show where they coincide.
-    const std::vector<Eigen::Vector3d>& plan = planned_paths_[a];
-    for (std::size_t i = 1; i < plan.size(); ++i)
-      addSegment(plan[i - 1], plan[i], planned, 2.0 * line_radius_);
+    if (plans) {
+      const std::vector<Eigen::Vector3d>& plan = planned_paths_[a];
+      for (std::size_t i = 1; i < plan.size(); ++i)
+        addSegment(plan[i - 1], plan[i], planned, 2.0 * line_radius_);
+    }
     // Start and goal; the goal stands on a thin pole to the floor so its height reads in
-    // perspective views.
+    // perspective views. A team's members start where their trails begin: goals only.
     const Eigen::Vector3d start = !v.planned_path.empty() ? v.planned_path.front()
                                   : !v.samples.empty()    ? v.samples.front().pos
                                                           : v.goal;
-    addSphere(start, 3.0 * line_radius_, several ? planned : kStartColour, 0.95f);
-    addSphere(v.goal, 3.5 * line_radius_, several ? planned : kGoalColour, 0.95f);
-    const Eigen::Vector3d floor(v.goal.x(), v.goal.y(), scenario_.world.bounds_min.z());
-    addSegment(floor, v.goal - Eigen::Vector3d(0, 0, 3.0 * line_radius_),
-               several ? planned : kGoalColour, 0.5 * line_radius_);
-    if (v.samples.empty()) continue;
-    // The reference trajectory (only when it is a trajectory; a waypoint reference is the
-    // planned path itself): dashes along the whole flight.
-    if (references_[a] == ErrorReference::Trajectory) {
-      double length = 0.0;
-      for (std::size_t i = 1; i < v.samples.size(); ++i)
-        length += (v.samples[i].ref_pos - v.samples[i - 1].ref_pos).norm();
-      const double dash = std::max(4.0 * line_radius_, length / (2.0 * kReferenceDashBudget));
-      std::size_t from = 0;
-      bool draw = true;
-      for (std::size_t i = 1; i < v.samples.size(); ++i) {
-        if ((v.samples[i].ref_pos - v.samples[from].ref_pos).norm() < dash) continue;
-        if (draw)
-          addSegment(towardEye(v.samples[from].ref_pos, 5.0), towardEye(v.samples[i].ref_pos, 5.0),
-                     kReferenceColour, 0.6 * line_radius_);
-        draw = !draw;
-        from = i;
-      }
+    if (!several) addSphere(start, 3.0 * line_radius_, kStartColour, 0.95f);
+    // A team's goals small and see-through: its vehicles' markers are the solid balls.
+    if (several)
+      addSphere(v.goal, 2.0 * line_radius_, planned, 0.5f);
+    else
+      addSphere(v.goal, 3.5 * line_radius_, kGoalColour, 0.95f);
+    if (plans) {
+      const Eigen::Vector3d floor(v.goal.x(), v.goal.y(), scenario_.world.bounds_min.z());
+      addSegment(floor, v.goal - Eigen::Vector3d(0, 0, 3.0 * line_radius_),
+                 several ? planned : kGoalColour, 0.5 * line_radius_);
     }
+    if (v.samples.empty()) continue;
+    if (plans && references_[a] == ErrorReference::Trajectory) addReference(v);
     addTrail(a, t);
     // Where the vehicle is, for views where it is a few pixels small (and to tell agents apart),
     // and where it heads.
     const LogSample& s = v.samples[sampleIndexAt(v, t)];
+    if (several) {
+      const VehicleMarker m =
+          vehicleMarker(v.radius, (s.pos - eye_).norm(), fovy_deg_, ctx_->height());
+      addSphere(s.pos, m.radius, planned, m.solid ? 1.0f : 0.45f);
+      addHeadingArrow(s, m.radius, 0.25 * m.radius);
+      continue;
+    }
     const double marker = std::max(1.6 * v.radius, 5.0 * line_radius_);
-    if (camera != CameraKind::Chase || several)
-      addSphere(s.pos, marker, several ? planned : Eigen::Vector3f(1, 1, 1), 0.35f);
+    if (camera != CameraKind::Chase) addSphere(s.pos, marker, Eigen::Vector3f(1, 1, 1), 0.35f);
     // Close up (chase) a slim arrow beside the airframe; from afar a bold one past the marker.
     if (camera == CameraKind::Chase)
       addHeadingArrow(s, 1.2 * v.radius, 0.08 * v.radius);
     else
       addHeadingArrow(s, marker, 0.25 * marker);
+  }
+}
+
+void RunRenderer::addReference(const VehicleLog& v) {
+  // The reference trajectory (only when it is a trajectory; a waypoint reference is the
+  // planned path itself): dashes along the whole flight.
+  double length = 0.0;
+  for (std::size_t i = 1; i < v.samples.size(); ++i)
+    length += (v.samples[i].ref_pos - v.samples[i - 1].ref_pos).norm();
+  const double dash = std::max(4.0 * line_radius_, length / (2.0 * kReferenceDashBudget));
+  std::size_t from = 0;
+  bool draw = true;
+  for (std::size_t i = 1; i < v.samples.size(); ++i) {
+    if ((v.samples[i].ref_pos - v.samples[from].ref_pos).norm() < dash) continue;
+    if (draw)
+      addSegment(towardEye(v.samples[from].ref_pos, 5.0), towardEye(v.samples[i].ref_pos, 5.0),
+                 kReferenceColour, 0.6 * line_radius_);
+    draw = !draw;
+    from = i;
   }
 }
 
@@ -337,29 +388,56 @@ void RunRenderer::annotate(double t) {
   } else {
     planners.emplace_back("planner", plannerName(scenario_.planner_name));
   }
+  // MuJoCo 2.2's smallest font is 18 px high (its 50 % scale falls back to 100 %): a frame
+  // with room for fewer than 30 lines (640x360) gets short labels and fewer of them, so the
+  // boxes cover about the same share of it as of a 1280x720 frame.
+  const bool compact = ann.linesFitting(1.0) < 30;
   // The state box may take up to 45 % of the frame's height (the legend is below it).
-  const int room = std::max(5, ann.linesFitting(0.45));
-  ann.stateBox(stateBoxLines(t, states, planners, static_cast<std::size_t>(room)));
-  ann.legend(legendEntries(static_cast<std::size_t>(std::max(3, ann.linesFitting(0.4)))));
+  const int room = compact ? 3 : std::max(5, ann.linesFitting(0.45));
+  overlay_boxes_.clear();
+  overlay_boxes_.push_back(
+      ann.stateBox(stateBoxLines(t, states, planners, static_cast<std::size_t>(room))));
+  const int legend_room = compact ? 3 : std::max(3, ann.linesFitting(0.4));
+  overlay_boxes_.push_back(
+      ann.legend(legendEntries(static_cast<std::size_t>(legend_room), compact)));
   for (std::size_t k = 0; k < scales_.size(); ++k) {
     // One scale: its full name; one per kind of vehicle: the kind, and short names.
     const ErrorReference r = scales_[k].reference;
+    const std::string kind = r == ErrorReference::TimedPlan ? "robots" : "quadrotors";
     const std::string title =
-        scales_.size() == 1
+        compact ? (scales_.size() == 1 ? std::string("error [m]") : kind + " error [m]")
+        : scales_.size() == 1
             ? std::string("error to ") + errorReferenceName(r) + " [m]"
-            : std::string(r == ErrorReference::TimedPlan ? "robots" : "quadrotors") +
-                  ": error to " + errorReferenceShortName(r) + " [m]";
-    ann.errorScale(scales_[k].top, title, static_cast<int>(k));
+            : kind + ": error to " + errorReferenceShortName(r) + " [m]";
+    overlay_boxes_.push_back(ann.errorScale(scales_[k].top, title, static_cast<int>(k), compact));
   }
 }
 
-std::vector<LegendEntry> RunRenderer::legendEntries(std::size_t room) const {
+std::vector<LegendEntry> RunRenderer::legendEntries(std::size_t room, bool compact) const {
   std::vector<LegendEntry> legend;
   const std::size_t n = log_.vehicles.size();
-  const bool has_reference = std::find(references_.begin(), references_.end(),
-                                       ErrorReference::Trajectory) != references_.end();
+  const bool plans = n == 1 || scenario_.render.team_plans;
+  const bool has_reference = plans && std::find(references_.begin(), references_.end(),
+                                                ErrorReference::Trajectory) != references_.end();
+  if (compact) {
+    // Three short lines: the path (or the vehicles' colours), the reference, the error.
+    if (n == 1) {
+      legend.push_back({"plan", kPlannedPathColour});
+    } else {
+      LegendEntry all{plans ? "plans" : "vehicles", agentColour(0)};
+      for (std::size_t a = 0; a < n && a < 8; ++a) all.stripes.push_back(agentColour(a));
+      legend.push_back(all);
+    }
+    if (has_reference) legend.push_back({"reference", kReferenceColour});
+    legend.push_back({"flown (error)", errorColour(0.6), /*gradient=*/true});
+    return legend;
+  }
   if (n == 1) {
     legend.push_back({"planned path", kPlannedPathColour});
+  } else if (!plans) {
+    LegendEntry all{"vehicles and their goals (one colour each)", agentColour(0)};
+    for (std::size_t a = 0; a < n && a < 8; ++a) all.stripes.push_back(agentColour(a));
+    legend.push_back(all);
   } else if (n + 1 + (has_reference ? 1 : 0) > room) {
     // A small frame: every vehicle's planned path in one striped entry.
     LegendEntry all{"planned paths (one colour each)", agentColour(0)};
@@ -401,6 +479,14 @@ std::vector<LegendEntry> RunRenderer::legendEntries(std::size_t room) const {
 void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>& rgb,
                          bool annotate_frame) {
   const mjModel* m = world_.model();
+  using Clock = std::chrono::steady_clock;
+  const auto since = [](Clock::time_point& t0) {
+    const Clock::time_point now = Clock::now();
+    const double s = std::chrono::duration<double>(now - t0).count();
+    t0 = now;
+    return s;
+  };
+  Clock::time_point t0 = Clock::now();
   poseVehicles(t);
   const CameraPose pose = rig_.pose(camera, t);
   applyCamera(pose);
@@ -435,10 +521,18 @@ void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>&
   // the shadow pass costs a second pass over every triangle.
   scene_.flags[mjRND_SHADOW] = camera == CameraKind::Top || camera == CameraKind::Overview;
   fadeObstacles(pose, camera, t);
+  hideTinyVehicles(t);
+  timings_.model_geoms = scene_.ngeom;
+  timings_.scene = since(t0);
   addOverlays(t, camera);
+  timings_.overlay_geoms = scene_.ngeom - timings_.model_geoms;
+  timings_.overlays = since(t0);
   mjr_render(ctx_->viewport(), &scene_, ctx_->context());
+  timings_.render = since(t0);
   if (annotate_frame && !log_.vehicles.empty()) annotate(t);
+  timings_.annotate = since(t0);
   ctx_->readRgb(rgb);
+  timings_.read = since(t0);
 }
 
 bool RunRenderer::project(const Eigen::Vector3d& p, Eigen::Vector2d& pixel) const {

@@ -19,6 +19,17 @@
 
 namespace cosim {
 
+// Where the last frame's time went (wall clock, seconds), for benchmarks comparing frames.
+struct FrameTimings {
+  double scene = 0.0;     // posing the vehicles, mjv_updateScene, camera and lights
+  double overlays = 0.0;  // adding paths, trails, markers and arrows to the scene
+  double render = 0.0;    // mjr_render (OSMesa rasterises every geom)
+  double annotate = 0.0;  // the 2D state box, legend and colour scale
+  double read = 0.0;      // reading the pixels back
+  int model_geoms = 0;    // geoms from the model (world and vehicles)
+  int overlay_geoms = 0;  // geoms the overlays added
+};
+
 class RunRenderer {
  public:
   RunRenderer(const WorldModel& world, const Scenario& scenario, const RunLog& log, int width,
@@ -41,6 +52,10 @@ class RunRenderer {
   bool project(const Eigen::Vector3d& p, Eigen::Vector2d& pixel) const;
 
   double endTime() const { return end_time_; }
+  const FrameTimings& lastFrameTimings() const { return timings_; }
+  // The 2D boxes of the last annotated frame (pixels from the bottom left): the state box, the
+  // legend, then one per colour scale.
+  const std::vector<mjrRect>& lastOverlayBoxes() const { return overlay_boxes_; }
   // What this renderer draws from, for renderers of the same run on other threads.
   const WorldModel& world() const { return world_; }
   const Scenario& scenario() const { return scenario_; }
@@ -61,20 +76,23 @@ class RunRenderer {
   void applyCamera(const CameraPose& pose);
   void fadeObstacles(const CameraPose& pose, CameraKind camera, double t);
   void addOverlays(double t, CameraKind camera);
+  // Removes from the scene the airframes of team members smaller than a marker on screen.
+  void hideTinyVehicles(double t);
   void addTrail(std::size_t vehicle, double t);
+  void addReference(const VehicleLog& v);
   void addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3f& rgb,
-                  double radius, float alpha = 1.0f);
+                  double radius, float alpha = 1.0f, int type = mjGEOM_CAPSULE);
   void addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector3f& rgb, float alpha);
   // p moved toward the camera by `widths` line radii: drawn in front of the lines behind it
   // (the flown trail in front of the planned band, the reference in front of both) at the
   // same place on screen.
   Eigen::Vector3d towardEye(const Eigen::Vector3d& p, double widths) const;
-  // An arrow from the vehicle along its level forward axis, from 0.6 to 2.2 `radius` (m) from
-  // its centre, `width` (m) thick.
+  // An arrow from the vehicle along its velocity (render/heading_arrow.h), from 0.6 to 2.2
+  // `radius` (m) from its centre, `width` (m) thick; none while the vehicle is nearly still.
   void addHeadingArrow(const LogSample& s, double radius, double width);
   void annotate(double t);
-  // room: the most entries the frame has room for.
-  std::vector<LegendEntry> legendEntries(std::size_t room) const;
+  // room: the most entries the frame has room for; compact: short labels for small frames.
+  std::vector<LegendEntry> legendEntries(std::size_t room, bool compact) const;
   bool isGround(std::size_t vehicle) const;
   Eigen::Vector3f plannedColour(std::size_t vehicle) const;
 
@@ -94,6 +112,7 @@ class RunRenderer {
   std::vector<int> obstacle_geoms_;          // geom id of each scenario obstacle (-1 if absent)
   std::vector<std::vector<Eigen::Vector3d>> planned_paths_;  // per vehicle, corners only
   Eigen::Vector3d eye_ = Eigen::Vector3d::Zero();            // the camera of the current frame
+  double fovy_deg_ = 45.0;                                   // and its lens
   // Kept trail vertices per vehicle, for the line width they were decimated for (recomputed
   // when the camera changes it).
   std::vector<std::vector<std::size_t>> trail_vertices_;
@@ -105,6 +124,8 @@ class RunRenderer {
   mjvOption option_;
   std::unique_ptr<OffscreenContext> ctx_;
   double line_radius_ = 0.05;
+  FrameTimings timings_;
+  std::vector<mjrRect> overlay_boxes_;
 };
 
 }  // namespace cosim

@@ -88,6 +88,9 @@ struct RenderSettings {
   Eigen::Vector3d fixed_lookat = Eigen::Vector3d::Zero();
   double obstacle_alpha = 1.0;  // below 1: obstacles are see-through
   bool png_frames = false;      // also write each video as frames_<camera>/NNNNN.png
+  // A team's pictures draw every member's planned path and reference too (off: the flown paths
+  // only; a grid plan's right angles, one per member, tangle a team's picture).
+  bool team_plans = false;
 };
 
 // The quadrotors' planner, trajectory and controller in a scenario that also has ground robots

@@ -559,7 +559,7 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
     const YAML::Node n = root["render"];
     r.checkKeys(n, "render",
                 {"camera", "cameras", "width", "height", "fps", "speed", "speedup", "fixed_camera",
-                 "obstacle_alpha", "png_frames"});
+                 "obstacle_alpha", "png_frames", "team_plans"});
     const auto cameraName = [&](const YAML::Node& c, const std::string& key) {
       const std::string name = r.text(c, key);
       if (name != "chase" && name != "orbit" && name != "top" && name != "overview" &&
@@ -598,6 +598,7 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
     if (n["obstacle_alpha"])
       s.render.obstacle_alpha = r.number(n["obstacle_alpha"], "render.obstacle_alpha", 0.05, 1.0);
     if (n["png_frames"]) s.render.png_frames = r.boolean(n["png_frames"], "render.png_frames");
+    if (n["team_plans"]) s.render.team_plans = r.boolean(n["team_plans"], "render.team_plans");
     if (n["width"])
       s.render.width = static_cast<int>(r.integer(n["width"], "render.width", 64, 3840));
     if (n["height"])

@@ -168,11 +168,12 @@ bool isHeadingMagenta(const std::uint8_t* p) {
 }
 }  // namespace
 
-TEST(RenderProjection, HeadingArrowPointsWhereTheVehicleFaces) {
+TEST(RenderProjection, HeadingArrowPointsWhereTheVehicleGoes) {
   const Scenario s = scene();
   const WorldModel world = WorldModel::build(s);
   const Eigen::Vector3d A(12, 7, 4.5);
-  for (double yaw_deg : {0.0, 180.0}) {
+  // Facing +x both times (yaw 0): the arrow follows the velocity, not the nose.
+  for (double vx : {1.5, -1.5}) {
     RunLog log;
     VehicleLog& v = log.vehicles.emplace_back();
     v.name = "uav1";
@@ -181,8 +182,7 @@ TEST(RenderProjection, HeadingArrowPointsWhereTheVehicleFaces) {
     v.planned_path = {{3, 3, 2}, {17, 5, 2}};
     LogSample sample;
     sample.pos = A;
-    sample.att =
-        Eigen::Quaterniond(Eigen::AngleAxisd(yaw_deg * M_PI / 180, Eigen::Vector3d::UnitZ()));
+    sample.vel = {vx, 0.0, 0.0};
     v.samples.push_back(sample);
     RunRenderer renderer(world, s, log, 640, 360);
     std::vector<std::uint8_t> rgb;
@@ -199,9 +199,9 @@ TEST(RenderProjection, HeadingArrowPointsWhereTheVehicleFaces) {
           sx += x + 0.5;
           ++n;
         }
-    ASSERT_GT(n, 10) << "no heading arrow at yaw " << yaw_deg;
+    ASSERT_GT(n, 10) << "no heading arrow at velocity " << vx;
     const double side = (sx / n - centre.x()) / (east.x() - centre.x());
-    if (yaw_deg == 0.0)
+    if (vx > 0.0)
       EXPECT_GT(side, 0.5);
     else
       EXPECT_LT(side, -0.5);
