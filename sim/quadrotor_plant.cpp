@@ -60,9 +60,12 @@ void QuadrotorPlant::sense(const mjData* d) {
   }
 }
 
-SensorReadings QuadrotorPlant::takeDelivered(double now) {
-  SensorReadings out;
-  std::swap(out, ready_);
+void QuadrotorPlant::takeDelivered(double now, SensorReadings& out) {
+  // The IMU samples change hands by swapping buffers: both keep their capacity.
+  out.imu.swap(ready_.imu);
+  ready_.imu.clear();
+  out.position.clear();
+  out.attitude.clear();
   while (!position_queue_.empty() && position_queue_.front().t + position_latency_ <= now + 1e-9) {
     out.position.push_back(position_queue_.front());
     position_queue_.pop_front();
@@ -71,7 +74,6 @@ SensorReadings QuadrotorPlant::takeDelivered(double now) {
     out.attitude.push_back(attitude_queue_.front());
     attitude_queue_.pop_front();
   }
-  return out;
 }
 
 }  // namespace cosim

@@ -44,8 +44,10 @@ class QuadrotorPlant {
 
   // After mj_step: every sensor whose next sample is due measures the state at d->time.
   void sense(const mjData* d);
-  // The measurements whose latency has passed by `now`, removed from the queue.
-  SensorReadings takeDelivered(double now);
+  // The measurements whose latency has passed by `now`, removed from the queue, into `out`
+  // (cleared first): the caller keeps one `out` for the run, so that handing over the readings
+  // of a control step allocates nothing once the lists have grown to their size.
+  void takeDelivered(double now, SensorReadings& out);
   // True specific force (acceleration minus gravity) in the body frame, from MuJoCo's last
   // acceleration (what a perfect accelerometer would read).
   Eigen::Vector3d trueSpecificForce(const mjData* d) const;

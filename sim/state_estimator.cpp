@@ -101,7 +101,8 @@ VehicleState StateEstimator::estimate(const mjData* d, const VehicleHandles& v,
     s = readVehicleState(d, v);
     s.specific_force = plant.trueSpecificForce(d);
   } else {
-    const SensorReadings in = plant.takeDelivered(d->time);
+    SensorReadings& in = readings_;
+    plant.takeDelivered(d->time, in);
     for (const ImuMeasurement& z : in.imu) ekf_->addImu(z);
     imu_seen_ = imu_seen_ || !in.imu.empty();
     for (const PositionMeasurement& z : in.position) ekf_->addPosition(z);

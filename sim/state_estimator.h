@@ -46,6 +46,7 @@ class StateEstimator {
   std::uint64_t seed_;
   std::unique_ptr<LatencyCompensatedEkf> ekf_;
   bool imu_seen_ = false;
+  SensorReadings readings_;  // one control step's hand-over, reused (no allocation per step)
 };
 
 }  // namespace cosim

@@ -51,6 +51,12 @@ Section measureReferenceFlight(bool quick, const std::string& controller) {
   for (int i = 0; i < flights; ++i) {
     const RunLog log = flyOnce(s, world);
     loop_s += log.wall_time;
+    // A fair bare side: the same compiled model (world.model(), so the same body, world and
+    // opt.timestep), exactly log.physics_steps mj_step calls (the loop's count), on the same
+    // motion (the logged thrusts, and the logged state put back at each control step), with only
+    // the per-step wrench write any driver of the engine must make; both are timed over the
+    // stepping alone (the loop's clock starts after its setup, bareReplaySeconds' after
+    // mj_makeData).
     bare_s += bareReplaySeconds(world, log, s.sim, true);
     sim_s += log.sim_time;
     steps += log.physics_steps;
