@@ -31,7 +31,6 @@ namespace cosim::reproduce {
 
 namespace {
 
-
 // One configuration of the study: a controller, and which effects are switched off.
 struct Variant {
   const char* label;              // the row's "controller"
@@ -148,8 +147,7 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<double>& sc
      << ". RMSE and max error: true position against the reference over the reference's "
         "duration, as `cosim run` reports them.\n\n| timescale | peak speed [m/s] |";
   for (const Variant* c : controllers)
-    md << " " << c->label
-       << (c->firmware_default_mass ? " (firmware at its default CF_MASS)" : "")
+    md << " " << c->label << (c->firmware_default_mass ? " (firmware at its default CF_MASS)" : "")
        << " RMSE / max [m] |";
   md << "\n|---|---|";
   for (std::size_t i = 0; i < controllers.size(); ++i) md << "---|";
@@ -164,12 +162,14 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<double>& sc
     }
     md << "\n";
   }
-  md << "\nThe three controllers believe the flown 37 g (vehicles[0].mass): crazyflie-firmware "
+  md << "\nThe firmware's controllers believe the flown 37 g (vehicles[0].mass): "
+        "crazyflie-firmware "
         "asks for CF_MASS to be updated to the vehicle's mass (CONFIG_MODIFIED_CF_MASS, "
         "ctrlLee.mass). "
      << kFirmwareDefaultMass
      << " is crazyflie_lee with the firmware left at its default CF_MASS = 39.3 g: with no "
-        "position integral (Kpos_I = 0) it thrusts for 2.3 g too much and settles (1 - 37/39.3) "
+        "position integral (Kpos_I = 0) it holds up 2.3 g more than the vehicle weighs and settles "
+        "(1 - 37/39.3) "
         "9.81 / 7 = 8.2 cm high, an offset that dominates the error at low speed.\n";
   if (effects.empty()) {
     md << "\nFigure: crazyflie-figure8.png (RMSE against peak speed per controller). Rows in "
