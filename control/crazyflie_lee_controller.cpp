@@ -21,7 +21,7 @@ CrazyflieLeeController::CrazyflieLeeController(const QuadrotorParams& airframe,
                                                const CrazyfliePlatform& platform)
     : CrazyflieFirmwareController(airframe, platform),
       gains_(gains),
-      mass_(gains.mass > 0.0 ? gains.mass : platform.mass) {}
+      mass_(gains.mass > 0.0 ? gains.mass : airframe.mass) {}
 
 void CrazyflieLeeController::resetLaw() {
   i_error_pos_.setZero();

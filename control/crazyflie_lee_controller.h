@@ -3,7 +3,7 @@
 // control on SE(3) of Lee, Leok and McClamroch 2010 ("Geometric tracking control of a quadrotor
 // UAV on SE(3)", CDC), with the firmware's default gains, run at 500 Hz (ATTITUDE_RATE), in its
 // force/torque control mode. With z up, e_x = x_d - x, e_v = v_d - v (both clamped to the
-// *_limit gains), per unit of the believed mass m (the firmware's CF_MASS, not the true mass):
+// *_limit gains), per unit of the believed mass m:
 //   F_d = a_d + g e3 + K_v e_v + K_x e_x + K_i int(e_x)          (paper eq. 15, signs for z up)
 //   T   = m F_d . R e3                                           (collective thrust, N)
 //   R_d: b3d = F_d / |F_d|, b1d from the yaw, b2d = b3d x b1c / |.|, b1d = b2d x b3d
@@ -17,6 +17,13 @@
 // is followed: the moment drops the paper's -J (w^ R^T R_d w_d - R^T R_d dw_d) term, the
 // integrals are not bounded (Kpos_I_limit is declared but unused; Kpos_I is 0 by default), both
 // integrals reset whenever T < 0.01 N, and no tilt limit applies.
+// The believed mass m is ctrlLee.mass if given, else the mass of the airframe the controller is
+// given (the vehicle's mass, times model_error.mass if set): crazyflie-firmware's
+// platform_defaults_cf21bl.h says of CF_MASS (0.0393 kg) "Default: Crazyflie 2.1 Brushless with
+// propeller guards, 350mAh battery, and Lighthouse deck. Update this value with the mass of your
+// specific setup if different", through CONFIG_MODIFIED_CF_MASS or the ctrlLee.mass parameter;
+// a scenario that states the flown mass describes a firmware configured as asked. A firmware
+// left at its default on a vehicle of another mass is gains {mass: 0.0393} (or model_error.mass).
 #include "control/crazyflie_firmware_controller.h"
 
 namespace cosim {
@@ -33,7 +40,7 @@ struct CrazyflieLeeGains {
   Eigen::Vector3d k_i{0.03, 0.03, 0.03};             // KI, N m per (unit e_R s)
   // J: Foerster 2015's Crazyflie 2.0 inertia, kg m^2 (used only in w x J w).
   Eigen::Vector3d inertia{16.571710e-6, 16.655602e-6, 29.261652e-6};
-  double mass = -1.0;  // ctrlLee.mass, kg; negative: the platform's CF_MASS
+  double mass = -1.0;  // ctrlLee.mass, kg; negative: the given airframe's mass (configured)
 };
 
 class CrazyflieLeeController : public CrazyflieFirmwareController {

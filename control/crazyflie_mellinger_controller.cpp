@@ -16,7 +16,7 @@ CrazyflieMellingerController::CrazyflieMellingerController(const QuadrotorParams
                                                            const CrazyfliePlatform& platform)
     : CrazyflieFirmwareController(airframe, platform),
       gains_(gains),
-      mass_(gains.mass > 0.0 ? gains.mass : platform.mass) {}
+      mass_(gains.mass > 0.0 ? gains.mass : airframe.mass) {}
 
 void CrazyflieMellingerController::resetLaw() {
   i_error_.setZero();

@@ -3,7 +3,7 @@
 // and Kumar 2011, "Minimum snap trajectory generation and control for quadrotors", ICRA, eqs.
 // 6-7 and the moment law of their section IV), with the firmware's default gains, run at 500 Hz
 // (ATTITUDE_RATE), in its legacy control mode (thrust and moments on the 16-bit PWM scale).
-// With z up, e_p = p_d - p, e_v = v_d - v, and the believed mass m (CF_MASS):
+// With z up, e_p = p_d - p, e_v = v_d - v, and the believed mass m:
 //   F_des = m (a_d + g e3) + K_p e_p + K_v e_v + K_i int(e_p)    (N; int clamped per axis)
 //   T     = F_des . z_B                                           (eq. 6's u_1)
 //   R_des: z_B,des = F_des / |F_des|, x from the yaw as in eq. 7's construction
@@ -15,13 +15,20 @@
 // +-32000, as the firmware hands them to its legacy power distribution. The gains were tuned for
 // the brushed Crazyflie 2.x; on the Brushless build the same PWM numbers mean other forces (its
 // THRUST_MAX scale): the firmware's default behaviour on this platform, kept as it is.
+// The believed mass m is ctrlMel.mass if given, else the mass of the airframe the controller is
+// given (the vehicle's mass, times model_error.mass if set): crazyflie-firmware's
+// platform_defaults_cf21bl.h says of CF_MASS (0.0393 kg) "Default: Crazyflie 2.1 Brushless with
+// propeller guards, 350mAh battery, and Lighthouse deck. Update this value with the mass of your
+// specific setup if different", through CONFIG_MODIFIED_CF_MASS or the ctrlMel.mass parameter;
+// a scenario that states the flown mass describes a firmware configured as asked. A firmware
+// left at its default on a vehicle of another mass is gains {mass: 0.0393} (or model_error.mass).
 #include "control/crazyflie_firmware_controller.h"
 
 namespace cosim {
 
 // controller_mellinger.c's g_self defaults (ctrlMel parameters).
 struct CrazyflieMellingerGains {
-  double mass = -1.0;           // ctrlMel.mass, kg; negative: the platform's CF_MASS
+  double mass = -1.0;           // ctrlMel.mass, kg; negative: the given airframe's mass
   double mass_thrust = 132000;  // massThrust, PWM per N
   double kp_xy = 0.4, kd_xy = 0.2, ki_xy = 0.05, i_range_xy = 2.0;  // N/m, N s/m, N/(m s), m s
   double kp_z = 1.25, kd_z = 0.4, ki_z = 0.05, i_range_z = 0.4;

@@ -25,7 +25,10 @@
 namespace cosim {
 
 struct CrazyfliePlatform {
-  double mass;                    // CF_MASS, kg: what the firmware's Lee and Mellinger believe
+  // CF_MASS, kg: the firmware's default ctrlLee.mass / ctrlMel.mass, which its documentation
+  // asks users to update to their vehicle's mass. cosim's Lee and Mellinger believe the given
+  // airframe's mass instead; this is the value that models a firmware left unconfigured.
+  double mass;
   double arm_length;              // ARM_LENGTH, m, centre to motor
   double thrust_to_torque;        // THRUST2TORQUE, m
   double thrust_max;              // THRUST_MAX, N per motor at 65535 of the thrust scale

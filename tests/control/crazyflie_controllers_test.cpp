@@ -43,8 +43,8 @@ FlatReference at(const Eigen::Vector3d& p) {
 
 TEST(CrazyflieLee, PositionErrorTiltsTheThrustAsLeeEquationFifteen) {
   // Level hover at the origin, set-point 0.1 m ahead in x. Lee et al. eq. 15 (z up) with the
-  // firmware's Kpos_P = 7, Kpos_D = 4 and its belief CF_MASS = 0.0393 kg:
-  //   F_d = K_x e_x + g e3 = (0.7, 0, 9.81) m/s^2; T = m F_d . e3 = 0.0393 x 9.81 = 0.385533 N.
+  // firmware's Kpos_P = 7, Kpos_D = 4 and the believed mass m of the given 37 g airframe:
+  //   F_d = K_x e_x + g e3 = (0.7, 0, 9.81) m/s^2; T = m F_d . e3 = 0.037 x 9.81 = 0.36297 N.
   //   b3d = F_d / |F_d| = (0.071175, 0, 0.997464): a 4.0815 deg tilt towards +x;
   //   e_R = vee(R_d^T - R_d) / 2 = (0, -0.071175, 0);
   //   M_y = -KR_y e_R,y - KI_y (dt e_R,y) = (0.007 + 0.03 x 0.002) x 0.0711748
@@ -52,7 +52,7 @@ TEST(CrazyflieLee, PositionErrorTiltsTheThrustAsLeeEquationFifteen) {
   CrazyflieLeeController lee(brushless());
   lee.reset();
   const auto c = lee.law(levelAt({0, 0, 0}), at({0.1, 0, 0}));
-  EXPECT_NEAR(c.thrust, 0.385533, 1e-6);
+  EXPECT_NEAR(c.thrust, 0.36297, 1e-9);
   EXPECT_NEAR(c.R_d(0, 2), 0.071175, 1e-6);
   EXPECT_NEAR(c.R_d(2, 2), 0.997464, 1e-6);
   EXPECT_NEAR(c.torque.y(), 5.02494e-4, 1e-9);
@@ -79,12 +79,24 @@ TEST(CrazyflieLee, ErrorsAreClampedToTheFirmwareLimits) {
   EXPECT_NEAR(c.R_d(0, 2), 700.0 / std::hypot(700.0, 9.81), 1e-9);
 }
 
-TEST(CrazyflieLee, HoversHighByTheMassItDoesNotKnowAbout) {
-  // The firmware believes CF_MASS = 39.3 g; the flown vehicle weighs 37 g and Kpos_I = 0. In
-  // steady hover 0.0393 (9.81 + 7 e_z) = 0.037 x 9.81, so e_z = (0.037 / 0.0393 - 1) 9.81 / 7
-  // = -0.08202 m: it settles 8.2 cm above its set-point.
+TEST(CrazyflieLee, BelievesTheGivenAirframesMassUnlessTheMassGainIsSet) {
+  // No error, level hover: T = m g. Without ctrlLee.mass, m is the given airframe's 37 g
+  // (T = 0.037 x 9.81 = 0.36297 N); with mass: 0.0393 (the firmware's unconfigured CF_MASS),
+  // T = 0.0393 x 9.81 = 0.385533 N.
+  CrazyflieLeeController configured(brushless());
+  configured.reset();
+  EXPECT_NEAR(configured.law(levelAt({0, 0, 1}), at({0, 0, 1})).thrust, 0.037 * 9.81, 1e-9);
+  CrazyflieLeeGains firmware_default;
+  firmware_default.mass = 0.0393;
+  CrazyflieLeeController unconfigured(brushless(), firmware_default);
+  unconfigured.reset();
+  EXPECT_NEAR(unconfigured.law(levelAt({0, 0, 1}), at({0, 0, 1})).thrust, 0.0393 * 9.81, 1e-9);
+}
+
+// The height at which crazyflie_lee settles in 6 s of hover at 1 m on the 37 g airframe.
+double leeHoverHeight(const CrazyflieLeeGains& gains) {
   const QuadrotorParams q = brushless();
-  CrazyflieLeeController lee(q);
+  CrazyflieLeeController lee(q, gains);
   lee.reset();
   testing::RigidBodyQuadrotor plant(q);
   plant.state.position = {0, 0, 1};
@@ -93,29 +105,44 @@ TEST(CrazyflieLee, HoversHighByTheMassItDoesNotKnowAbout) {
     if (i % 2 == 0) u = lee.update(plant.measured(), at({0, 0, 1}), 0.002);
     plant.step(u.rotor_thrusts, 0.001);
   }
-  EXPECT_NEAR(plant.state.position.z() - 1.0, 0.08202, 2e-3);
   EXPECT_NEAR(plant.state.position.x(), 0.0, 1e-6);
+  return plant.state.position.z();
+}
+
+TEST(CrazyflieLee, HoversHighByTheMassAnUnconfiguredFirmwareDoesNotKnowAbout) {
+  // Firmware left at CF_MASS = 39.3 g on the 37 g vehicle, Kpos_I = 0. In steady hover
+  // 0.0393 (9.81 + 7 e_z) = 0.037 x 9.81, so e_z = (0.037 / 0.0393 - 1) 9.81 / 7 = -0.08202 m:
+  // it settles 8.2 cm above its set-point.
+  CrazyflieLeeGains firmware_default;
+  firmware_default.mass = 0.0393;
+  EXPECT_NEAR(leeHoverHeight(firmware_default) - 1.0, 0.08202, 2e-3);
+  // Configured (believing the airframe's 37 g): the weight is met at e_z = 0, no offset.
+  EXPECT_LT(std::abs(leeHoverHeight({}) - 1.0), 0.01);
 }
 
 TEST(CrazyflieMellinger, DesiredThrustAndRotationErrorAsMellingerAndKumar) {
   // Level hover, set-point 0.1 m ahead in x, firmware gains (kp_xy 0.4 N/m, ki_xy 0.05 N/(m s))
-  // and mass CF_MASS: F_des = (0.4 x 0.1 + 0.05 x 0.1 x 0.002, 0, 0.0393 x 9.81)
-  // = (0.04001, 0, 0.385533) N; thrust = massThrust F_des . z_B = 132000 x 0.385533 = 50890.4;
-  // e_R = vee(R_des^T - R_des) (no 1/2) has e_R,y = -2 x 0.04001 / |F_des| = -0.206448, so
-  // M_y = -kR_xy e_R,y = 70000 x 0.206448 = 14451.4 (kd_omega_rp acts from the second step).
+  // and the given airframe's mass 0.037 kg: F_des = (0.4 x 0.1 + 0.05 x 0.1 x 0.002, 0,
+  // 0.037 x 9.81) = (0.04001, 0, 0.36297) N; thrust = massThrust F_des . z_B = 132000 x 0.36297
+  // = 47912.04; |F_des| = sqrt(0.04001^2 + 0.36297^2) = 0.365168, and e_R = vee(R_des^T - R_des)
+  // (no 1/2) has e_R,y = -2 x 0.04001 / 0.365168 = -0.219132, so M_y = -kR_xy e_R,y
+  // = 70000 x 0.219132 = 15339.2 (kd_omega_rp acts from the second step).
   CrazyflieMellingerController mel(brushless());
   mel.reset();
   const auto c = mel.law(levelAt({0, 0, 0}), at({0.1, 0, 0}));
   EXPECT_NEAR(c.force.x(), 0.04001, 1e-9);
-  EXPECT_NEAR(c.thrust_pwm, 50890.356, 1e-2);
-  EXPECT_NEAR(c.e_R.y(), -0.206448, 1e-6);
-  EXPECT_NEAR(c.moment.y(), 14451.36, 1e-1);
+  EXPECT_NEAR(c.thrust_pwm, 47912.04, 1e-2);
+  EXPECT_NEAR(c.e_R.y(), -0.219132, 1e-6);
+  EXPECT_NEAR(c.moment.y(), 15339.22, 1e-1);
 }
 
 TEST(CrazyflieMellinger, PositionIntegralStopsAtItsRange) {
   // i_range_z = 0.4 m s: a 1 m height error held for 2 s (0.5 s of it reaches the range) adds
-  // at most ki_z 0.4 = 0.02 N.
-  CrazyflieMellingerController mel(brushless());
+  // at most ki_z 0.4 = 0.02 N on top of m g + kp_z e_z, with ctrlMel.mass set to the firmware's
+  // CF_MASS 0.0393 kg (the 37 g airframe would otherwise be believed).
+  CrazyflieMellingerGains gains;
+  gains.mass = 0.0393;
+  CrazyflieMellingerController mel(brushless(), gains);
   mel.reset();
   CrazyflieMellingerController::Command c;
   for (int i = 0; i < 1000; ++i) c = mel.law(levelAt({0, 0, 0}), at({0, 0, 1}));
