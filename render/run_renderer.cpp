@@ -244,16 +244,20 @@ Eigen::Vector3f RunRenderer::plannedColour(std::size_t vehicle) const {
 }
 
 void RunRenderer::addTrail(std::size_t vehicle, double t) {
-  // Re-decimated only when the line width changes by a quarter: the chase camera's distance
-  // (and with it the width) changes a little from frame to frame near obstacles.
-  if (!(std::abs(trail_line_radius_ / line_radius_ - 1.0) < 0.25)) {
+  // Decimated for the line width rounded to a step of a quarter (on a log scale), and kept while
+  // the width stays in that step: the chase camera's distance (and with it the width) changes a
+  // little from frame to frame near obstacles. The step, not the history of widths, decides, so
+  // a frame is the same whichever frames a renderer drew before it (parallel video workers).
+  const double step = std::round(std::log(line_radius_) / std::log(1.25));
+  const double width = std::pow(1.25, step);
+  if (trail_line_radius_ != width) {
     // Vertices within a fraction of the line width of the logged positions look smooth; a
     // segment budget bounds the frame cost on long, winding flights.
     trail_vertices_.clear();
     for (std::size_t a = 0; a < log_.vehicles.size(); ++a) {
       TrailDecimation o;
-      o.tolerance = 0.3 * line_radius_;
-      o.max_segment = std::max(40.0 * line_radius_, 0.5);
+      o.tolerance = 0.3 * width;
+      o.max_segment = std::max(40.0 * width, 0.5);
       o.max_error_step = 0.06 * errorScale(a);
       std::vector<std::size_t> kept = decimateTrail(log_.vehicles[a].samples, errors_[a], o);
       while (kept.size() > static_cast<std::size_t>(trailBudget(log_.vehicles.size()))) {
@@ -264,7 +268,7 @@ void RunRenderer::addTrail(std::size_t vehicle, double t) {
       }
       trail_vertices_.push_back(std::move(kept));
     }
-    trail_line_radius_ = line_radius_;
+    trail_line_radius_ = width;
   }
   const VehicleLog& v = log_.vehicles[vehicle];
   const std::vector<double>& err = errors_[vehicle];
@@ -406,9 +410,8 @@ void RunRenderer::annotate(double t) {
     const std::string kind = r == ErrorReference::TimedPlan ? "robots" : "quadrotors";
     const std::string title =
         compact ? (scales_.size() == 1 ? std::string("error [m]") : kind + " error [m]")
-        : scales_.size() == 1
-            ? std::string("error to ") + errorReferenceName(r) + " [m]"
-            : kind + ": error to " + errorReferenceShortName(r) + " [m]";
+        : scales_.size() == 1 ? std::string("error to ") + errorReferenceName(r) + " [m]"
+                              : kind + ": error to " + errorReferenceShortName(r) + " [m]";
     overlay_boxes_.push_back(ann.errorScale(scales_[k].top, title, static_cast<int>(k), compact));
   }
 }

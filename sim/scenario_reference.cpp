@@ -19,7 +19,15 @@ std::string formatNumber(double v) {
 }
 
 std::string formatPoint(const Eigen::Vector3d& p) {
-  return "(" + formatNumber(p.x()) + ", " + formatNumber(p.y()) + ", " + formatNumber(p.z()) + ")";
+  // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string at -O2.
+  std::string text = "(";
+  text += formatNumber(p.x());
+  text += ", ";
+  text += formatNumber(p.y());
+  text += ", ";
+  text += formatNumber(p.z());
+  text += ")";
+  return text;
 }
 
 // Every point of the reference (sampled every 10 ms, at most 20 000 points) inside the world.

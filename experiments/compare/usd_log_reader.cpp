@@ -5,8 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/crc32.h"
 #include "core/input_error.h"
-#include "experiments/compare/crc32.h"
 
 namespace cosim {
 

@@ -7,7 +7,7 @@
 //   q Q f d e ? c);
 //   then records: uint16 event id, the time (version 1: uint32 milliseconds; version 2: uint64
 //   microseconds), then the event's variables packed in header order;
-//   the last 4 bytes: CRC-32 of every byte before them (experiments/compare/crc32.h).
+//   the last 4 bytes: CRC-32 of every byte before them (core/crc32.h).
 // Reading checks all of it: a wrong CRC, a truncated record, an unknown event id or type
 // letter is an InputError naming the file and the byte.
 #include <cstddef>

@@ -22,8 +22,10 @@ std::string polynomialHeader() {
 // A row of `duration` and 32 coefficients, all zero but x^1 = 1 (x = tau) and z^0 = z0.
 std::string row(const std::string& duration, double z0 = 1.0) {
   std::string r = duration;
-  for (int i = 0; i < 32; ++i)
-    r += "," + (i == 1 ? std::string("1") : i == 16 ? std::to_string(z0) : "0");
+  for (int i = 0; i < 32; ++i) {
+    r += ',';  // appended piecewise: GCC 12 warns falsely (-Wrestrict) on "," + std::string
+    r += i == 1 ? std::string("1") : i == 16 ? std::to_string(z0) : std::string("0");
+  }
   return r;
 }
 

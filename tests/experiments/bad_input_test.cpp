@@ -129,8 +129,8 @@ std::string aliasSharedMovingPath() {
 
 // The valid scenario's vehicle flying `reference` instead of its goal.
 std::string withReference(const std::string& reference) {
-  return withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], reference: " +
-                      reference + "}]\n");
+  return withVehicles(
+      "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], reference: " + reference + "}]\n");
 }
 
 // A uav_trajectories file whose one piece lasts `duration` (all coefficients zero).
@@ -232,38 +232,72 @@ std::vector<BadInput> badInputs() {
        withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2, 1]}]\n"), "", 2,
        "needs a 'goal', 'waypoints' or a 'reference'"},
       // A given reference (vehicles[i].reference): bad files named with their line, misuses.
-      {"reference_unknown_header", run, withReference("{file: ref.csv}"), "", 2,
+      {"reference_unknown_header",
+       run,
+       withReference("{file: ref.csv}"),
+       "",
+       2,
        "{dir}/ref.csv: line 1: unknown header 'time,x,y,z'",
        {{"ref.csv", "time,x,y,z\n0,0,0,0\n1,1,0,0\n"}}},
-      {"reference_times_going_back", run, withReference("{file: ref.csv, relative: true}"), "", 2,
+      {"reference_times_going_back",
+       run,
+       withReference("{file: ref.csv, relative: true}"),
+       "",
+       2,
        "{dir}/ref.csv: line 4, column t: time 0.5 is not after the previous row's 1",
        {{"ref.csv", "t,x,y,z\n0,0,0,0\n1,1,0,0\n0.5,1,1,0\n"}}},
-      {"reference_nan", run, withReference("{file: ref.csv, relative: true}"), "", 2,
+      {"reference_nan",
+       run,
+       withReference("{file: ref.csv, relative: true}"),
+       "",
+       2,
        "{dir}/ref.csv: line 3, column y: 'NaN' is not a finite number",
        {{"ref.csv", "t,x,y,z\n0,0,0,0\n1,1,NaN,0\n"}}},
-      {"reference_zero_duration", run, withReference("{file: ref.csv, relative: true}"), "", 2,
+      {"reference_zero_duration",
+       run,
+       withReference("{file: ref.csv, relative: true}"),
+       "",
+       2,
        "{dir}/ref.csv: line 2, column duration: duration 0 s is not > 0",
        {{"ref.csv", polynomialReference("0")}}},
-      {"reference_row_too_short", run, withReference("{file: ref.csv, relative: true}"), "", 2,
+      {"reference_row_too_short",
+       run,
+       withReference("{file: ref.csv, relative: true}"),
+       "",
+       2,
        "{dir}/ref.csv: line 3: 3 values, expected 33 (as the header)",
        {{"ref.csv", polynomialReference("1") + "1,0,0\n"}}},
-      {"reference_empty_file", run, withReference("{file: ref.csv}"), "", 2,
-       "{dir}/ref.csv: line 1: empty file", {{"ref.csv", ""}}},
-      {"reference_too_many_rows", run, withReference("{file: ref.csv, relative: true}"), "", 2,
+      {"reference_empty_file",
+       run,
+       withReference("{file: ref.csv}"),
+       "",
+       2,
+       "{dir}/ref.csv: line 1: empty file",
+       {{"ref.csv", ""}}},
+      {"reference_too_many_rows",
+       run,
+       withReference("{file: ref.csv, relative: true}"),
+       "",
+       2,
        "{dir}/ref.csv: line 100003: more than 100000 intervals between samples",
        {{"ref.csv", manySamples(100002)}}},
-      {"reference_and_goal", run,
+      {"reference_and_goal",
+       run,
        withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [18, 18, 1],\n"
                     "             reference: {file: ref.csv}}]\n"),
-       "", 2, "key vehicles[0].goal: a vehicle with a 'reference' flies it instead of a goal",
+       "",
+       2,
+       "key vehicles[0].goal: a vehicle with a 'reference' flies it instead of a goal",
        {{"ref.csv", "t,x,y,z\n0,2,2,1\n1,3,2,1\n"}}},
       {"reference_missing_file", run, withReference("{file: none.csv}"), "", 2,
        "key vehicles[0].reference.file: {dir}/none.csv: "},
-      {"reference_and_team_planner_for_some", run,
+      {"reference_and_team_planner_for_some",
+       run,
        kWorld + "vehicles: [{name: a, model: cf2, start: [2, 2, 1], goal: [18, 18, 1]},\n"
                 "           {name: b, model: cf2, start: [2, 5, 1], reference: {file: ref.csv,\n"
                 "            relative: true}}]\nplanner: {name: cbs}\n",
-       "", 2,
+       "",
+       2,
        "vehicles[1].reference: team planner 'cbs' plans every quadrotor together: give every "
        "vehicle a reference, or none",
        {{"ref.csv", "t,x,y,z\n0,0,0,0\n1,1,0,0\n"}}},
@@ -276,8 +310,8 @@ std::vector<BadInput> badInputs() {
        "(did you mean 'resolution'? allowed: "},
       // Planner errors come before the output folder and the "planning ... with" progress line
       // (one stderr line), at the line of planner.name, with a "did you mean" for near misses.
-      {"planner_name_near_miss", "run {in} --no-video --out {dir}/new", withPlanner("planner: {name: thetastar}\n"),
-       "", 2,
+      {"planner_name_near_miss", "run {in} --no-video --out {dir}/new",
+       withPlanner("planner: {name: thetastar}\n"), "", 2,
        "{in}: line 4, key planner.name: unknown planner 'thetastar' (did you mean 'theta_star'? "
        "known: "},
       {"plan_with_a_team_planner", "plan {in} --planner cbs --out {dir}/new", kValid, "", 2,
@@ -288,7 +322,8 @@ std::vector<BadInput> badInputs() {
        kWorld + "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1.2], goal: [18, 18, 3.2]}]\n" +
            "planner: {name: saco, resolution: 0.5}\n",
        "", 1,
-       "start and goal must be at the same height, in one layer of the 0.5 m grid (start in z 1-1.5 "
+       "start and goal must be at the same height, in one layer of the 0.5 m grid (start in z "
+       "1-1.5 "
        "m, goal in z 3-3.5 m)"},
       // Quadrotors over ground robots: the `aerial` section.
       {"aerial_without_ground_robots", plan, kValid + "aerial: {planner: {name: astar}}\n", "", 2,
@@ -319,7 +354,9 @@ std::vector<BadInput> badInputs() {
       {"unknown_trajectory_mode", plan, kValid + "trajectory: {mode: teleport}\n", "", 2,
        "must be 'waypoints' or 'minimum_snap'"},
       {"unknown_controller", plan, kValid + "controller: {name: pid}\n", "", 2,
-       "must be 'cascade', 'geometric', 'indi' or 'dsl_pid'"},
+       "must be 'cascade', 'geometric', 'indi', 'dsl_pid', 'crazyflie_lee', 'crazyflie_mellinger' "
+       "or "
+       "'crazyflie_pid'"},
       {"drag_compensation_on_cascade", plan,
        kValid + "controller: {name: cascade, drag_compensation: true}\n", "", 2,
        "controller.drag_compensation: applies to the 'geometric' and 'indi' controllers"},

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "experiments/compare/crc32.h"
+#include "core/crc32.h"
 
 namespace cosim::test {
 

@@ -4,8 +4,8 @@
 // replaced by the right CRC, which lets the mutations reach the header and the records.
 #include <string>
 
+#include "core/crc32.h"
 #include "core/input_error.h"
-#include "experiments/compare/crc32.h"
 #include "experiments/compare/flight_log.h"
 #include "tests/fuzz/fuzz_input.h"
 

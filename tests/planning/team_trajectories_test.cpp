@@ -149,15 +149,18 @@ TEST(TeamPairCandidates, EveryPairThatComesWithinReachIsACandidateAndFarPairsAre
     for (std::size_t j = i + 1; j < at.size(); ++j) {
       double d = 1e9;
       for (int s = 0; s < 20; ++s) d = std::min(d, e.distance(at[i][s], at[j][s]));
-      const bool candidate = std::binary_search(
-          pairs.begin(), pairs.end(), std::pair<int, int>(static_cast<int>(i), static_cast<int>(j)));
+      const bool candidate =
+          std::binary_search(pairs.begin(), pairs.end(),
+                             std::pair<int, int>(static_cast<int>(i), static_cast<int>(j)));
       if (d < 1.5) {
         ++close;
         EXPECT_TRUE(candidate) << i << "," << j << " at " << d;
       }
       // Boxes at most 0.05 x 20 x sqrt(3) m wide: a pair 4.5 separations apart throughout
       // (scaled, beyond reach + both boxes' widths) cannot share a cell.
-      if (d > 4.5 + 2 * 20 * 0.05 * std::sqrt(3.0) / 0.24) EXPECT_FALSE(candidate) << i << "," << j;
+      if (d > 4.5 + 2 * 20 * 0.05 * std::sqrt(3.0) / 0.24) {
+        EXPECT_FALSE(candidate) << i << "," << j;
+      }
     }
   EXPECT_GT(close, 0);  // the test sees both kinds
   EXPECT_LT(pairs.size(), at.size() * (at.size() - 1) / 2);
