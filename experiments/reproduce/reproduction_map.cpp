@@ -71,6 +71,8 @@ std::vector<Eigen::Vector2d> cellCentres(const std::vector<Cell>& cells) {
 std::string writeReproductionMap(const std::filesystem::path& out_dir, const std::string& name,
                                  int index, const ReproductionMap& map) {
   const std::string base = name + "_map" + std::to_string(index);
+  // A reproduction run for its tables alone (no output folder, as tests call it) draws nothing.
+  if (out_dir.empty()) return base;
   GnuplotScratch scratch(out_dir / base, base);
   std::ostringstream body;
   body << "set size ratio -1\nset key outside right top box lc rgb '#bbbbbb' font ',10'\n"

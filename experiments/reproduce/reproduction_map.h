@@ -40,7 +40,8 @@ ReproductionMap gridMap(const std::string& title, const OccupancyGrid& grid, con
 // Cell centres of a cell path (any-angle planners' turning cells are joined by straight lines).
 std::vector<Eigen::Vector2d> cellCentres(const std::vector<Cell>& cells);
 
-// Writes out_dir/NAME_map<index>.png and .svg, each atomically; returns "NAME_map<index>".
+// Writes out_dir/NAME_map<index>.png and .svg, each atomically (nothing when out_dir is empty);
+// returns "NAME_map<index>".
 // Throws std::runtime_error if gnuplot fails.
 std::string writeReproductionMap(const std::filesystem::path& out_dir, const std::string& name,
                                  int index, const ReproductionMap& map);
