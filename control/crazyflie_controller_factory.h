@@ -14,8 +14,4 @@ namespace cosim {
 std::unique_ptr<FlightController> makeCrazyflieController(const std::string& name, ParamSet& gains,
                                                           const QuadrotorParams& params);
 
-// The firmware's stabilizer runs its controllers at 500 Hz: sim.control_rate must be a multiple
-// of it. An empty string if `rate_hz` suits `name`, else why not.
-std::string crazyflieControlRateProblem(const std::string& name, double rate_hz);
-
 }  // namespace cosim

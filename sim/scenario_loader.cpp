@@ -8,7 +8,7 @@
 #include "core/input_file.h"
 #include "planning/worlds/grid_map_world.h"
 #include "sim/scenario.h"
-#include "control/crazyflie_controller_factory.h"
+#include "control/crazyflie_control_rate.h"
 #include "sim/scenario_reference.h"
 #include "sim/scenario_sensing.h"
 #include "sim/yaml_document.h"
