@@ -40,7 +40,7 @@ const std::vector<reproduce::Entry>& reproductions() {
        "Crazyflie 2.1 Brushless on Crazyswarm2's figure-eight at timescales 1.0-0.5: predicted "
        "RMSE per firmware controller, and each effect's share",
        reproduce::crazyflieFigure8},
-      {"tracking", "issue 6: every bundled 3D world, quad_1500g at 3 m/s and cf2 at 1 m/s, tracking errors",
+      {"tracking", "tracking acceptance: every bundled 3D world, quad_1500g at 3 m/s and cf2 at 1 m/s, tracking errors",
        reproduce::trackingAcceptance},
       {"seed003-flight",
        "seed 003 Sec. 4.2: Theta* and RRT*FN on map 3, the thesis's pipeline and ours, in MuJoCo",

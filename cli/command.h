@@ -1,7 +1,7 @@
 #pragma once
 // Each cosim subcommand lives in its own file (cmd_<name>.cpp) and registers itself on the
 // CLI11 app through one add*Command function declared here. A subcommand's callback stores its
-// exit status (CONTRACT.md: 0 ok, 1 task failed, 2 bad input, 3 internal error) in `status`.
+// exit status (0 ok, 1 task failed, 2 bad input, 3 internal error) in `status`.
 #include <CLI/CLI.hpp>
 
 namespace cosim::cli {

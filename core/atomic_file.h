@@ -1,5 +1,5 @@
 #pragma once
-// Output files appear complete or not at all (CONTRACT.md), also after a crash or a power cut: a
+// Output files appear complete or not at all, also after a crash or a power cut: a
 // file is written under a temporary name beside its target (core/temporary_name.h), flushed to
 // the disk (fsync), renamed over the target, and then its folder is flushed too, so that the
 // rename itself is on the disk (without that, a power cut can leave the old file or none).

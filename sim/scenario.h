@@ -41,7 +41,7 @@ struct VehicleSpec {
   const Eigen::Vector3d& goal() const { return waypoints.back(); }
 };
 
-// An obstacle that moves (issue 5): a cylinder or box standing on the floor whose centre travels
+// An obstacle that moves: a cylinder or box standing on the floor whose centre travels
 // along `path` (x, y in metres) at `speed` (m/s), back and forth (or round in a loop). In MuJoCo
 // it is a mocap body driven every step; planners do not see it, navigators sense it.
 struct MovingObstacleSpec {

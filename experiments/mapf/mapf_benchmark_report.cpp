@@ -77,7 +77,7 @@ std::string mapfBenchmarkMarkdown(const MapfBenchmarkSetup& s,
                    " counts). Time limit " + fixedDigits(s.time_limit_s, 1) + " s per run, " +
                    std::to_string(s.connectivity) + "-connected, seed " + std::to_string(s.seed) +
                    ". Solved = the independent validator accepts the paths. SOC = sum of arrival "
-                   "times (CONTRACT.md); every move and wait costs one step.";
+                   "times; every move and wait costs one step.";
   if (!s.keep_going)
     md +=
         " A planner that failed on a scenario was not run there at larger counts (`skipped`, "

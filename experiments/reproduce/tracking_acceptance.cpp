@@ -1,4 +1,4 @@
-// The tracking table of issue 6: every bundled 3D world flown with the 1.5 kg quadrotor at up to
+// The tracking acceptance table: every bundled 3D world flown with the 1.5 kg quadrotor at up to
 // 3 m/s and with the Crazyflie-class nano-quad at up to 1 m/s, minimum-snap trajectories under
 // the geometric controller (rotor-drag compensation where the world has rotor drag), flying on the EKF's estimate from
 // motion-capture sensing. Targets: zero collisions everywhere; RMSE <= 5 cm and max error

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks the shape issue 15 asks of the code, so that it stays that way:
+"""Checks the shape we keep the code in, so that it stays that way:
 - every file of the command-line front end (cli/) is at most 300 lines;
 - every function in the run library (run/) is at most 80 lines.
 

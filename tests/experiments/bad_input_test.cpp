@@ -462,7 +462,7 @@ std::vector<BadInput> badInputs() {
       {"mapf_benchmark_unknown_planner",
        "mapf {in} {in2} --agents 1:3:1 --planner lacam,teleport --out {out}", map8, scen8, 2,
        "unknown multi-robot planner 'teleport'"},
-      // Hardening, round two (issue 19): what an adversarial probe broke.
+      // Hardening, round two: what an adversarial probe broke.
       // YAML structure: alias cycles, alias bombs, keys given twice (at any level).
       {"alias_cycle_in_scenario", plan, kValid + "sim: &s {timestep: *s}\n", "", 2,
        "line 5, key sim.timestep: an alias refers to a node that contains it"},

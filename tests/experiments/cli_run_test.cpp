@@ -19,7 +19,7 @@ TEST(CliRun, DefaultScenarioReachesItsGoalWithZeroCollisionsAndRendersAVideo) {
   EXPECT_EQ(jsonNumber(m, "collisions"), 0.0) << m;
   EXPECT_GT(jsonNumber(m, "min_clearance_m"), 0.0) << m;
   EXPECT_GT(jsonNumber(m, "flown_length_m"), jsonNumber(m, "planned_length_m") * 0.9) << m;
-  // Minimum snap under the geometric controller tracks its reference closely (issue 6 targets:
+  // Minimum snap under the geometric controller tracks its reference closely (the tracking targets:
   // RMSE <= 5 cm, max error <= 15 cm for the 1.5 kg quad at up to 3 m/s).
   EXPECT_LT(jsonNumber(m, "rmse_m"), 0.05) << m;
   EXPECT_LT(jsonNumber(m, "max_error_m"), 0.15) << m;

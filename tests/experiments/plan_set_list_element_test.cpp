@@ -1,4 +1,4 @@
-// Acceptance (issue 18): `--set 'vehicles[0].goal=[...]'` plans to that goal, end to end.
+// Acceptance: `--set 'vehicles[0].goal=[...]'` plans to that goal, end to end.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -45,7 +45,7 @@ TEST(RealisticFlight, DefaultScenarioFliesOnItsEstimateThroughRotorDrag) {
   EXPECT_EQ(jsonNumber(metrics, "collisions"), 0);
   EXPECT_NE(metrics.find("\"sensors\": \"mocap\""), std::string::npos);
   EXPECT_NE(metrics.find("\"estimator\": \"ekf\""), std::string::npos);
-  // Centimetres in the breeze (issue 6's targets: RMSE <= 5 cm, max <= 15 cm), the estimate
+  // Centimetres in the breeze (the tracking targets: RMSE <= 5 cm, max <= 15 cm), the estimate
   // within a millimetre or so of the truth.
   EXPECT_GT(jsonNumber(metrics, "rmse_m"), 0.01);
   EXPECT_LE(jsonNumber(metrics, "rmse_m"), 0.05);

@@ -95,7 +95,7 @@ INSTANTIATE_TEST_SUITE_P(All, ThesisReproduction,
                            return s;
                          });
 
-// Acceptance of issue 17: the rebuilt workspaces 2 and 3 get harder as the seed's do (its
+// Acceptance: the rebuilt workspaces 2 and 3 get harder as the seed's do (its
 // first query: 610 -> 919 -> 914 cm), every optimum stays below the seed's ant length.
 TEST(Seed002Workspaces, FirstQueryJumpsInWorkspacesTwoAndThreeAndOptimaStayBelowTheSeeds) {
   const auto ws = seed002Workspaces();

@@ -1,4 +1,4 @@
-// Grid planners on worlds with exact occupancy at cell centres (issue 18): a cell is free iff the
+// Grid planners on worlds with exact occupancy at cell centres: a cell is free iff the
 // vehicle can stand at its centre, and every move and line of sight is checked against the
 // inflated obstacles, so a grid planner is complete at its resolution and its paths are clear.
 // Paths are checked independently (path_clearance_check.h); failures say why.

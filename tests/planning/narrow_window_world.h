@@ -1,6 +1,6 @@
 #pragma once
 // A 0.2 m wall across a 30 x 20 x 10 m room with one square window of 1.2 m: the narrow passage
-// on which RRT-Connect with its old 2000-node cap failed (3 of 10 seeds solved, issue 18). Start
+// on which RRT-Connect with its old 2000-node cap failed (3 of 10 seeds solved). Start
 // and goal lie on either side, high and low, off the window's axis.
 #include "planning/planner.h"
 

@@ -1,4 +1,4 @@
-// Sampling planners that do not give up early (issue 18): without max_nodes they run until their
+// Sampling planners that do not give up early: without max_nodes they run until their
 // time limit, non-anytime planners return their first path, anytime planners (the RRT*s) keep
 // improving for their `time_limit`, and max_nodes still stops them when it is set (the thesis
 // modes of the reproductions).
