@@ -79,8 +79,8 @@ class TeamSmoother {
 
  private:
   bool expired() const { return o_.deadline != nullptr && o_.deadline->expired(); }
-  void fitAll();
-  void checkWindow(long w);
+  bool fitAll();            // false: stopped or out of time before every agent was fitted
+  bool checkWindow(long w);  // false: stopped or out of time (the window stays to be checked)
   void stopNear(std::size_t i, double t);
   int refit();  // rebuilds the changed agents, marks the windows they changed; returns how many
   void summarise();
@@ -116,10 +116,16 @@ class TeamSmoother {
   std::vector<std::vector<double>> pair_min_;
 };
 
-void TeamSmoother::fitAll() {
+// The loops below look at the deadline for every agent (fitting or sampling one costs far more
+// than reading the clock) and every few dozen pairs: one pass over a 500-agent team takes seconds
+// on a slow (or sanitized) build, and a stop request must end the stage within a second.
+constexpr std::size_t kPairsBetweenDeadlineChecks = 64;
+
+bool TeamSmoother::fitAll() {
   stops_.resize(n_);
   double radius = 0.0, height = 0.0;
   for (std::size_t i = 0; i < n_; ++i) {
+    if (expired()) return false;
     stops_[i].assign(team_[i].points.size(), 0);
     stops_[i].front() = stops_[i].back() = 1;
     out_.trajectories.push_back(build(team_[i].points, stops_[i], o_.step_duration));
@@ -134,9 +140,11 @@ void TeamSmoother::fitAll() {
   per_window_ = std::max(1L, static_cast<long>(std::ceil(o_.step_duration / o_.check_interval)));
   windows_ = instants_ / per_window_ + 1;
   at_.assign(n_, std::vector<Eigen::Vector3d>(instants_ + 1));
-  for (std::size_t i = 0; i < n_; ++i)
+  for (std::size_t i = 0; i < n_; ++i) {
+    if (expired()) return false;
     for (long s = 0; s <= instants_; ++s)
       at_[i][s] = out_.trajectories[i].sample(std::min(end_, s * o_.check_interval)).position;
+  }
   window_dirty_.assign(windows_, 1);
   window_violated_.assign(windows_, 0);
   window_separation_.assign(windows_, kInf);
@@ -147,6 +155,7 @@ void TeamSmoother::fitAll() {
   changed_.assign(n_, 0);
   round_stops_.resize(n_);
   touched_.resize(n_);
+  return true;
 }
 
 void TeamSmoother::stopNear(std::size_t i, double t) {
@@ -168,12 +177,13 @@ void TeamSmoother::stopNear(std::size_t i, double t) {
   changed_[i] = 1;
 }
 
-void TeamSmoother::checkWindow(long w) {
+bool TeamSmoother::checkWindow(long w) {
   const long first = w * per_window_;
   const long last = std::min(instants_, first + per_window_ - 1);
   const auto fresh = [&](int i) { return resampled_[static_cast<std::size_t>(i) * windows_ + w]; };
   double clearance = kInf;
   for (std::size_t i = 0; i < n_; ++i) {
+    if (expired()) return false;
     double& c = clearance_[i * windows_ + w];
     if (fresh(static_cast<int>(i))) {
       c = kInf;
@@ -190,6 +200,7 @@ void TeamSmoother::checkWindow(long w) {
   const auto& old_pairs = pairs_[w];
   double separation = kInf;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
+    if (k % kPairsBetweenDeadlineChecks == 0 && expired()) return false;
     const auto [i, j] = pairs[k];
     if (!fresh(i) && !fresh(j)) {
       const auto it = std::lower_bound(old_pairs.begin(), old_pairs.end(), pairs[k]);
@@ -218,6 +229,7 @@ void TeamSmoother::checkWindow(long w) {
   pair_min_[w] = std::move(pair_min);
   window_separation_[w] = separation;
   window_violated_[w] = separation < o_.min_separation || clearance < 0.0;
+  return true;
 }
 
 int TeamSmoother::refit() {
@@ -259,13 +271,16 @@ void TeamSmoother::endExpired() {
 }
 
 void TeamSmoother::run() {
-  fitAll();
+  if (!fitAll()) {  // nothing checked yet: no separation or clearance to report
+    out_.status = expiredStatus(*o_.deadline);
+    out_.message = out_.status == PlannerStatus::Stopped ? "stopped" : "time limit reached";
+    return;
+  }
   for (out_.repair_rounds = 0; out_.repair_rounds <= o_.max_repair_rounds; ++out_.repair_rounds) {
     int checked = 0;
     for (long w = 0; w < windows_; ++w) {
       if (!window_dirty_[w]) continue;
-      if (expired()) return endExpired();
-      checkWindow(w);
+      if (expired() || !checkWindow(w)) return endExpired();
       ++checked;
     }
     if (std::none_of(changed_.begin(), changed_.end(), [](char c) { return c; })) {
