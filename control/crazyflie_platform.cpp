@@ -3,11 +3,20 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace cosim {
 
 namespace {
 constexpr double kFullScale = 65535.0;  // UINT16_MAX: the firmware's 16-bit thrust and PWM scale
+
+// The thrust curve's inverse (voltageForThrust) relies on a curve rising and convex for v >= 0.
+const CrazyfliePlatform& withRisingConvexCurve(const CrazyfliePlatform& p) {
+  const Eigen::Vector4d& c = p.vmotor2thrust;
+  if (!(c[1] > 0.0 && c[2] >= 0.0 && c[3] > 0.0))
+    throw std::invalid_argument("CrazyflieMotors: VMOTOR2THRUST1 and 3 must be positive, 2 non-negative");
+  return p;
+}
 }  // namespace
 
 CrazyfliePlatform crazyflie21BrushlessPlatform() {
@@ -28,7 +37,7 @@ CrazyfliePlatform crazyflie21BrushlessPlatform() {
 }
 
 CrazyflieMotors::CrazyflieMotors(const CrazyfliePlatform& platform, double max_rotor_thrust)
-    : p_(platform),
+    : p_(withRisingConvexCurve(platform)),
       full_scale_volts_(std::isfinite(max_rotor_thrust) ? voltageForThrust(max_rotor_thrust)
                                                         : std::numeric_limits<double>::infinity()) {
 }
@@ -39,15 +48,21 @@ double CrazyflieMotors::thrustAtVoltage(double v) const {
 }
 
 double CrazyflieMotors::voltageForThrust(double thrust) const {
-  // The cubic rises monotonically for v >= 0 (every coefficient but c0 is positive): bisection
-  // on [0, hi] with hi doubled until it brackets the thrust.
-  double lo = 0.0, hi = 8.0;
-  while (thrustAtVoltage(hi) < thrust && hi < 1e6) hi *= 2.0;
-  for (int i = 0; i < 60; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (thrustAtVoltage(mid) < thrust ? lo : hi) = mid;
+  // The cubic f rises and is convex for v >= 0 (c1, c2, c3 > 0: f' > 0 and f'' = 2 c2 + 6 c3 v
+  // > 0). Newton's method started above the root then falls monotonically onto it, so it stops
+  // when a step no longer lowers v (the root to the last bit, in about five steps at a motor's
+  // thrusts; it runs four times a control step). Start: v0 = cbrt((T - c0) / c3), where the
+  // cubic term alone makes T, so f(v0) = T + c1 v0 + c2 v0^2 >= T.
+  const Eigen::Vector4d& c = p_.vmotor2thrust;
+  if (!(thrust > c[0])) return 0.0;  // at or below the curve's value at 0 V: the motor is off
+  double v = std::cbrt((thrust - c[0]) / c[3]);
+  for (int i = 0; i < 100; ++i) {
+    const double slope = c[1] + v * (2.0 * c[2] + v * 3.0 * c[3]);
+    const double next = v - (thrustAtVoltage(v) - thrust) / slope;
+    if (!(next < v)) break;
+    v = next;
   }
-  return 0.5 * (lo + hi);
+  return v;
 }
 
 Eigen::Vector4d CrazyflieMotors::deliver(const Eigen::Vector4d& requested, bool* capped) const {

@@ -88,6 +88,20 @@ TEST(CrazyfliePlatform, BatteryCompensationDeliversTheForceAndCappingKeepsTheDif
   EXPECT_FALSE(capped);
 }
 
+TEST(CrazyfliePlatform, ThrustCurveInverseIsTheRootToTheLastBits) {
+  const CrazyflieMotors motors(crazyflie21BrushlessPlatform(), 0.3);
+  // The worked value above: 3.597681 V makes the rotors' maximum, 3.86e-8 x 2590^2 N.
+  EXPECT_NEAR(motors.voltageForThrust(3.86e-8 * 2590.0 * 2590.0), 3.597681, 1e-6);
+  // Across the motor's range (THRUST_MIN to beyond the cap) the voltage found makes the thrust
+  // asked for to within a few ulps: a solver stopped early or started below the root would not.
+  for (double v = 0.9; v < 5.0; v += 0.037) {
+    const double thrust = motors.thrustAtVoltage(v);
+    EXPECT_NEAR(motors.voltageForThrust(thrust), v, 1e-12) << v;
+  }
+  // Below the curve's value at 0 V no voltage makes the thrust: the motor is off.
+  EXPECT_EQ(motors.voltageForThrust(-0.02), 0.0);
+}
+
 TEST(CrazyfliePlatform, ClockRunsEachPartAtItsFirmwareRate) {
   // Called at 500 Hz: the 500 Hz law every call, the 100 Hz parts every fifth, from the first.
   CrazyflieClock c;
