@@ -7,16 +7,19 @@
 namespace cosim {
 
 LatencyCompensatedEkf::LatencyCompensatedEkf(const ImuNoise& noise, double gravity,
-                                             double max_latency, double imu_rate)
-    : ekf_(noise, gravity) {
-  if (!(max_latency >= 0.0) || !(imu_rate > 0.0) || !(max_latency * imu_rate < 1e6)) {
+                                             double max_latency, double imu_rate,
+                                             double predict_rate)
+    : ekf_(noise, gravity), averager_(predict_rate) {
+  const double step_rate = std::min(imu_rate, predict_rate);
+  if (!(max_latency >= 0.0) || !(imu_rate > 0.0) || !(max_latency * step_rate < 1e6)) {
     throw std::invalid_argument(
-        "LatencyCompensatedEkf: max_latency must be >= 0 and imu_rate > 0, their product < 1e6");
+        "LatencyCompensatedEkf: max_latency must be >= 0 and the rates > 0, latency times rate "
+        "< 1e6");
   }
   // The steps spanning max_latency, one more so that a fix exactly max_latency old still has a
   // step before it, and one for the base the first of those is re-run from. The 1e-9 keeps
   // 0.01 s * 500 Hz at 5 steps despite rounding.
-  const auto n = static_cast<std::size_t>(std::ceil(max_latency * imu_rate - 1e-9)) + 2;
+  const auto n = static_cast<std::size_t>(std::ceil(max_latency * step_rate - 1e-9)) + 2;
   steps_.resize(n);
   initialise(NavigationState{}, ErrorStateEkf::Covariance::Identity());
 }
@@ -36,9 +39,19 @@ void LatencyCompensatedEkf::initialise(const NavigationState& x,
   fixes_.clear();
   arrivals_ = 0;
   dropped_ = 0;
+  averager_.reset(x.t);
+  has_imu_ = false;
 }
 
 void LatencyCompensatedEkf::addImu(const ImuMeasurement& imu) {
+  ImuMeasurement mean;
+  const bool due = averager_.add(imu, mean);  // throws, unchanged, on a sample out of order
+  latest_imu_ = imu;
+  has_imu_ = true;
+  if (due) addStep(mean);
+}
+
+void LatencyCompensatedEkf::addStep(const ImuMeasurement& imu) {
   // The newest step must be up to date before it is extended, and the second oldest before it
   // becomes the base everything later is re-run from.
   replay();
@@ -144,15 +157,13 @@ const ErrorStateEkf::Covariance& LatencyCompensatedEkf::covariance() const {
 }
 
 Eigen::Vector3d LatencyCompensatedEkf::angularVelocity() const {
-  if (count_ < 2) return Eigen::Vector3d::Zero();
-  const Step& s = step(count_ - 1);
-  return s.imu.gyro - current().gyro_bias;
+  if (!has_imu_) return Eigen::Vector3d::Zero();
+  return latest_imu_.gyro - current().gyro_bias;
 }
 
 Eigen::Vector3d LatencyCompensatedEkf::specificForce() const {
-  if (count_ < 2) return Eigen::Vector3d::Zero();
-  const Step& s = step(count_ - 1);
-  return s.imu.accel - current().accel_bias;
+  if (!has_imu_) return Eigen::Vector3d::Zero();
+  return latest_imu_.accel - current().accel_bias;
 }
 
 std::size_t LatencyCompensatedEkf::waitingMeasurements() const {

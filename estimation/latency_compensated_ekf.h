@@ -5,42 +5,55 @@
 // filtering forward again: the reprocessing solution of the out-of-sequence measurement problem
 // (Y. Bar-Shalom, "Update with out-of-sequence measurements in tracking: exact solution", IEEE
 // Trans. Aerospace and Electronic Systems 38(3), 2002, whose retrodiction avoids the storage but
-// is exact only for a linear model). A bounded history keeps, for every IMU step, the sample and
-// the filter's state and covariance after it. A fix valid at t is fused at t itself: from the
-// last history entry before t the filter predicts over the partial interval to exactly t,
-// applies the fix, finishes that IMU interval and re-runs the stored samples (and the fixes
-// stored after t) up to the latest sample. The result is the one a filter fusing every fix on
-// time and in time order would give, whatever the order the fixes arrive in, as long as each
-// arrives within the history window.
+// is exact only for a linear model).
 //
-// The history holds ceil(max_latency * imu_rate) + 2 steps; a fix no later than the oldest step
-// is dropped and counted. A fix valid after the latest IMU sample waits until the IMU reaches
-// it. Re-running is done lazily, once for all the fixes added between two reads, so a motion
-// capture position and attitude of the same instant cost one replay, not two.
+// The filter predicts at its own rate, not at every IMU sample: from the mean of the samples
+// since the previous prediction, over the interval since it (estimation/imu_averager.h), as the
+// Crazyflie's Kalman estimator does at 100 Hz from a 1 kHz IMU. A bounded history keeps, for
+// every prediction step, the averaged sample and the filter's state and covariance after it. A
+// fix valid at t is fused at t itself: from the last history entry before t the filter predicts
+// over the partial interval to exactly t (with that step's averaged sample), applies the fix,
+// finishes the interval and re-runs the stored steps (and the fixes stored after t) up to the
+// latest. The result is the one a filter fusing every fix on time and in time order would give,
+// whatever the order the fixes arrive in, as long as each arrives within the history window.
+//
+// The estimate (current()) is the posterior at the latest prediction, as the firmware's
+// estimator hands its controllers the state of its latest prediction and update; the body rates
+// and specific force come from the latest IMU sample itself (angularVelocity, specificForce).
+//
+// The history holds ceil(max_latency * step_rate) + 2 steps (step_rate the lower of the
+// prediction and IMU rates); a fix no later than the oldest step is dropped and counted. A fix
+// valid after the latest prediction waits for the next. Re-running is done lazily, once for all
+// the fixes added between two reads, so a motion capture position and attitude of the same
+// instant cost one replay, not two.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 #include "estimation/error_state_ekf.h"
+#include "estimation/imu_averager.h"
 
 namespace cosim {
 
 class LatencyCompensatedEkf {
  public:
   // max_latency: s, how far behind the latest IMU sample a fix's validity time may lie (the
-  // sensor's latency plus however late the caller delivers); imu_rate: Hz, sizes the history.
-  LatencyCompensatedEkf(const ImuNoise& noise, double gravity, double max_latency, double imu_rate);
+  // sensor's latency plus however late the caller delivers); imu_rate: Hz, the IMU's;
+  // predict_rate: Hz, the predictions' (at or above imu_rate: one per sample).
+  LatencyCompensatedEkf(const ImuNoise& noise, double gravity, double max_latency, double imu_rate,
+                        double predict_rate);
 
   // Starts from x (at x.t) with error covariance P0; forgets the history and every stored fix.
   void initialise(const NavigationState& x, const ErrorStateEkf::Covariance& P0);
 
   // The next IMU sample; imu.t must exceed the latest one's (std::invalid_argument otherwise).
+  // Predicts when a prediction is due.
   void addImu(const ImuMeasurement& imu);
   // A fix valid at z.t. Returns false (and counts it) if it is too old for the history.
   bool addPosition(const PositionMeasurement& z);
   bool addAttitude(const AttitudeMeasurement& z);
 
-  // The estimate at the latest IMU sample's time, every fix valid up to then fused. The getters
+  // The estimate at the latest prediction's time, every fix valid up to then fused. The getters
   // finish any pending replay first (which is why the history is mutable).
   const NavigationState& current() const;
   const ErrorStateEkf::Covariance& covariance() const;
@@ -49,14 +62,14 @@ class LatencyCompensatedEkf {
   Eigen::Vector3d specificForce() const;
 
   std::size_t droppedMeasurements() const { return dropped_; }
-  // Fixes stored and valid after the latest IMU sample, still waiting for it.
+  // Fixes stored and valid after the latest prediction, still waiting for the next.
   std::size_t waitingMeasurements() const;
   // A fix must be valid strictly after this instant (the oldest history entry) to be fused.
   double windowStart() const { return step(0).state.t; }
   std::size_t historyCapacity() const { return steps_.size(); }
 
  private:
-  // One IMU step: the sample that closes it and the filter's posterior at its time.
+  // One prediction step: the averaged sample that closes it and the filter's posterior then.
   struct Step {
     ImuMeasurement imu;
     NavigationState state;
@@ -74,6 +87,8 @@ class LatencyCompensatedEkf {
   };
 
   bool addFix(const Fix& fix);
+  // Appends a prediction step closed by the averaged sample `imu`.
+  void addStep(const ImuMeasurement& imu);
   // Re-runs steps dirty_from_ .. last from the one before (a no-op when nothing is dirty).
   void replay() const;
   Step& step(std::size_t i) const { return steps_[(first_ + i) % steps_.size()]; }
@@ -90,6 +105,9 @@ class LatencyCompensatedEkf {
   std::vector<Fix> fixes_;  // ordered by (t, kind, arrival)
   std::uint64_t arrivals_ = 0;
   std::size_t dropped_ = 0;
+  ImuAverager averager_;
+  ImuMeasurement latest_imu_;  // the latest raw sample (valid when has_imu_)
+  bool has_imu_ = false;
 };
 
 }  // namespace cosim

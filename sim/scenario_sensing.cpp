@@ -135,11 +135,16 @@ void readEstimator(const YamlReader& r, const YAML::Node& root, Scenario& s) {
   std::string name = s.sensors.ideal() ? "ground_truth" : "ekf";
   if (given) {
     r.requireMap(n, "estimator");
-    r.checkKeys(n, "estimator", {"name"});
+    r.checkKeys(n, "estimator", {"name", "predict_rate"});
     if (!n["name"]) r.fail(n, "estimator", "missing 'name' (ekf or ground_truth)");
     name = r.text(n["name"], "estimator.name");
     if (name != "ekf" && name != "ground_truth")
       r.fail(n["name"], "estimator.name", "must be 'ekf' or 'ground_truth'");
+    if (n["predict_rate"]) {
+      if (name != "ekf")
+        r.fail(n["predict_rate"], "estimator.predict_rate", "only the ekf predicts (name: ekf)");
+      s.estimator.predict_rate = r.number(n["predict_rate"], "estimator.predict_rate", 0.1, 1e6);
+    }
   }
   s.estimator.name = name;
   if (name != "ekf") return;

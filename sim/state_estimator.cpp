@@ -60,7 +60,8 @@ StateEstimator::StateEstimator(const EstimatorSettings& estimator, const SensorS
     if (!sensors.imu.present || !sensors.position.present)
       throw std::invalid_argument("the EKF needs an IMU and a position sensor");
     ekf_ = std::make_unique<LatencyCompensatedEkf>(sensors.imu.noise, airframe.gravity,
-                                                   maximumLatency(sensors), sensors.imu.rate);
+                                                   maximumLatency(sensors), sensors.imu.rate,
+                                                   estimator.predict_rate);
   }
 }
 

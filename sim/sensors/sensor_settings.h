@@ -45,9 +45,15 @@ struct SensorSettings {
   bool ideal() const { return !imu.present && !position.present && !attitude.present; }
 };
 
-// estimator: {name: ekf | ground_truth}. Absent: ground_truth with ideal sensing, ekf otherwise.
+// estimator: {name: ekf | ground_truth, predict_rate}. Absent: ground_truth with ideal sensing,
+// ekf otherwise.
 struct EstimatorSettings {
   std::string name = "ground_truth";
+  // Hz, how often the EKF predicts, from the IMU samples averaged since its last prediction
+  // (estimation/imu_averager.h); at or above the IMU's rate, at every sample. Default: the
+  // Crazyflie's Kalman estimator, PREDICT_RATE = RATE_100_HZ (crazyflie-firmware
+  // src/modules/src/estimator/estimator_kalman.c), for every EKF scenario.
+  double predict_rate = 100.0;
 };
 
 }  // namespace cosim

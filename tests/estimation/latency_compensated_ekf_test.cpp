@@ -108,7 +108,7 @@ TEST(LatencyCompensatedEkf, FixesDelayedByTenMillisecondsGiveTheOnTimeInOrderRes
   Reference ref;
   ref.run(steps, fixes);
 
-  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.012, kImuRate);
+  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.012, kImuRate, kImuRate);
   ekf.initialise(startState(), startCovariance());
   std::size_t delivered = 0;
   for (int k = 1; k <= steps; ++k) {
@@ -140,7 +140,7 @@ TEST(LatencyCompensatedEkf, FixesArrivingOutOfOrderGiveTheInOrderResult) {
 
   // GPS-like: up to 0.1 s late, fixes and their position/attitude halves delivered in a
   // scrambled order (each fix arrives 0.02-0.1 s late, depending on its index).
-  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.11, kImuRate);
+  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.11, kImuRate, kImuRate);
   ekf.initialise(startState(), startCovariance());
   std::vector<bool> pos_sent(fixes.size()), att_sent(fixes.size());
   for (int k = 1; k <= steps; ++k) {
@@ -174,7 +174,8 @@ TEST(LatencyCompensatedEkf, FixesArrivingOutOfOrderGiveTheInOrderResult) {
 }
 
 TEST(LatencyCompensatedEkf, PositionAndAttitudeOfOneInstantGiveTheSameStateInEitherArrivalOrder) {
-  LatencyCompensatedEkf a(adisNoise(), kG, 0.02, kImuRate), b(adisNoise(), kG, 0.02, kImuRate);
+  LatencyCompensatedEkf a(adisNoise(), kG, 0.02, kImuRate, kImuRate),
+      b(adisNoise(), kG, 0.02, kImuRate, kImuRate);
   a.initialise(startState(), startCovariance());
   b.initialise(startState(), startCovariance());
   for (int k = 1; k <= 10; ++k) {
@@ -195,7 +196,7 @@ TEST(LatencyCompensatedEkf, FixValidAfterTheLatestImuSampleWaitsForIt) {
   Reference ref;
   ref.run(20, fixes);
 
-  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.01, kImuRate);
+  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.01, kImuRate, kImuRate);
   ekf.initialise(startState(), startCovariance());
   for (int k = 1; k <= 3; ++k) ekf.addImu(imuSample(k));
   const NavigationState before = ekf.current();
@@ -209,7 +210,7 @@ TEST(LatencyCompensatedEkf, FixValidAfterTheLatestImuSampleWaitsForIt) {
 }
 
 TEST(LatencyCompensatedEkf, FixOlderThanTheHistoryIsDroppedAndCounted) {
-  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.02, kImuRate);
+  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.02, kImuRate, kImuRate);
   ekf.initialise(startState(), startCovariance());
   for (int k = 1; k <= 50; ++k) ekf.addImu(imuSample(k));  // to t = 0.1 s
   // 0.02 s at 500 Hz: 10 steps plus the two spare, so the window opens at 0.1 - 11 / 500.
@@ -231,7 +232,7 @@ TEST(LatencyCompensatedEkf, FixOlderThanTheHistoryIsDroppedAndCounted) {
 }
 
 TEST(LatencyCompensatedEkf, ReportsTheLatestSampleCorrectedByTheCurrentBiases) {
-  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.01, kImuRate);
+  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.01, kImuRate, kImuRate);
   NavigationState x0 = startState();
   x0.accel_bias = {0.1, -0.1, 0.05};
   x0.gyro_bias = {0.01, 0.0, -0.02};
@@ -246,9 +247,83 @@ TEST(LatencyCompensatedEkf, ReportsTheLatestSampleCorrectedByTheCurrentBiases) {
 }
 
 TEST(LatencyCompensatedEkf, RefusesImuSamplesOutOfTimeOrder) {
-  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.01, kImuRate);
+  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.01, kImuRate, kImuRate);
   ekf.initialise(startState(), startCovariance());
   ekf.addImu(imuSample(3));
   EXPECT_THROW(ekf.addImu(imuSample(2)), std::invalid_argument);
   EXPECT_THROW(ekf.addImu(imuSample(3)), std::invalid_argument);
+}
+
+namespace {
+
+// The reference at a prediction rate of 100 Hz: a plain ErrorStateEkf that predicts with the
+// mean of each five 500 Hz samples over their 10 ms, fusing every fix on time within its
+// interval (predicted to it with that interval's mean).
+ErrorStateEkf referenceAt100Hz(int imu_steps, const std::vector<PoseFix>& fixes) {
+  ErrorStateEkf ekf(adisNoise(), kG);
+  ekf.initialise(startState(), startCovariance());
+  std::size_t next = 0;
+  for (int k = 5; k <= imu_steps; k += 5) {
+    ImuMeasurement mean;
+    mean.t = imuSample(k).t;
+    for (int j = k - 4; j <= k; ++j) {
+      mean.gyro += imuSample(j).gyro / 5.0;
+      mean.accel += imuSample(j).accel / 5.0;
+    }
+    for (; next < fixes.size() && fixes[next].t <= mean.t; ++next) {
+      ekf.predictTo(fixes[next].t, mean);
+      ekf.updatePosition(fixes[next].position);
+      ekf.updateAttitude(fixes[next].attitude);
+    }
+    ekf.predict(mean);
+  }
+  return ekf;
+}
+
+}  // namespace
+
+TEST(LatencyCompensatedEkf, PredictingAt100HzIntegratesTheAveragedSamplesOverEachInterval) {
+  const int steps = 1000;  // 2 s at 500 Hz: 200 predictions
+  const std::vector<PoseFix> fixes = mocapFixes(steps / kImuRate);
+  LatencyCompensatedEkf ekf(adisNoise(), kG, 0.012 + 0.01, kImuRate, 100.0);
+  ekf.initialise(startState(), startCovariance());
+  std::size_t delivered = 0;
+  for (int k = 1; k <= steps; ++k) {
+    ekf.addImu(imuSample(k));
+    for (; delivered < fixes.size() && fixes[delivered].t + 0.011 <= imuSample(k).t + 1e-12;
+         ++delivered) {
+      EXPECT_TRUE(ekf.addPosition(fixes[delivered].position));
+      EXPECT_TRUE(ekf.addAttitude(fixes[delivered].attitude));
+    }
+    if (k == 7) {  // between predictions: the estimate is still the one of 10 ms
+      EXPECT_DOUBLE_EQ(ekf.current().t, 0.010);
+      // ... while the body rates are the latest sample's, less the bias estimate.
+      EXPECT_LT((ekf.angularVelocity() - (imuSample(7).gyro - ekf.current().gyro_bias)).norm(),
+                1e-15);
+    }
+  }
+  const ErrorStateEkf ref = referenceAt100Hz(
+      steps, std::vector<PoseFix>(fixes.begin(), fixes.begin() + delivered));
+  EXPECT_LT(stateDifference(ekf.current(), ref.state()), 1e-9);
+  EXPECT_LT((ekf.covariance() - ref.covariance()).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(ekf.droppedMeasurements(), 0u);
+  // 0.022 s at 100 Hz: 3 steps plus the two spare.
+  EXPECT_EQ(ekf.historyCapacity(), 5u);
+
+  // And it is a different filter from the one predicting at every sample: the same fixes and
+  // samples give a state apart by more than rounding (the mean of a sample's interval is not
+  // its integral over the attitude's turn).
+  LatencyCompensatedEkf every(adisNoise(), kG, 0.022, kImuRate, kImuRate);
+  every.initialise(startState(), startCovariance());
+  delivered = 0;
+  for (int k = 1; k <= steps; ++k) {
+    every.addImu(imuSample(k));
+    for (; delivered < fixes.size() && fixes[delivered].t + 0.011 <= imuSample(k).t + 1e-12;
+         ++delivered) {
+      every.addPosition(fixes[delivered].position);
+      every.addAttitude(fixes[delivered].attitude);
+    }
+  }
+  EXPECT_GT(stateDifference(ekf.current(), every.current()), 1e-7);
+  EXPECT_LT(stateDifference(ekf.current(), every.current()), 1e-2);
 }

@@ -73,7 +73,9 @@ Run flyWithEkf(const SyntheticFlight& flight, const SensorSettings& sensors, std
   const double max_latency =
       std::max(pos ? sensors.position.latency : 0.0, att ? sensors.attitude.latency : 0.0) +
       1.0 / rate;
-  LatencyCompensatedEkf ekf(sensors.imu.noise, kG, max_latency, rate);
+  // Predicting at the scenarios' default rate (100 Hz) from the averaged samples.
+  LatencyCompensatedEkf ekf(sensors.imu.noise, kG, max_latency, rate,
+                            EstimatorSettings{}.predict_rate);
 
   const double sd[5] = {pos ? sensors.position.noise : 1.0, 0.1, 1.0 * M_PI / 180.0,
                         sensors.imu.accel_bias_init, sensors.imu.gyro_bias_init};
@@ -120,10 +122,11 @@ Run flyWithEkf(const SyntheticFlight& flight, const SensorSettings& sensors, std
     }
 
     if (k % sample_every != 0 || t < 0.5) continue;
-    const NavigationState& x = ekf.current();
+    const NavigationState& x = ekf.current();  // at the latest prediction (<= t)
+    const TruthSample then = flight.at(x.t);
     Eigen::Matrix<double, 15, 1> e;
-    e << truth.position - x.position, truth.velocity - x.velocity,
-        rotationVectorFromQuaternion(x.attitude.conjugate() * truth.attitude),
+    e << then.position - x.position, then.velocity - x.velocity,
+        rotationVectorFromQuaternion(x.attitude.conjugate() * then.attitude),
         imu.accelBias() - x.accel_bias, imu.gyroBias() - x.gyro_bias;
     const Eigen::VectorXd e_n = e.head(dims);
     const Eigen::MatrixXd P_n = ekf.covariance().topLeftCorner(dims, dims);
