@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <random>
 
+#include "core/ziggurat_normal.h"
 #include "estimation/measurements.h"
 #include "sim/sensors/sensor_settings.h"
 
@@ -35,7 +36,7 @@ class ImuSensor {
 
   ImuSettings settings_;
   std::mt19937_64 rng_;
-  std::normal_distribution<double> normal_{0.0, 1.0};
+  ZigguratNormal normal_;  // N(0, 1), core/ziggurat_normal.h
   Eigen::Vector3d gyro_bias_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_bias_ = Eigen::Vector3d::Zero();
   double last_t_ = 0.0;

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <random>
 
+#include "core/ziggurat_normal.h"
 #include "estimation/measurements.h"
 #include "sim/sensors/sensor_settings.h"
 
@@ -25,7 +26,7 @@ class PositionSensor {
  private:
   PositionSensorSettings settings_;
   std::mt19937_64 rng_;
-  std::normal_distribution<double> normal_{0.0, 1.0};
+  ZigguratNormal normal_;  // N(0, 1), core/ziggurat_normal.h
 };
 
 class AttitudeSensor {
@@ -38,7 +39,7 @@ class AttitudeSensor {
  private:
   AttitudeSensorSettings settings_;
   std::mt19937_64 rng_;
-  std::normal_distribution<double> normal_{0.0, 1.0};
+  ZigguratNormal normal_;  // N(0, 1), core/ziggurat_normal.h
 };
 
 }  // namespace cosim
