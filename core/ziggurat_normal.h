@@ -29,8 +29,8 @@ class ZigguratNormal {
     const Tables& t = *t_;
     for (;;) {
       const std::uint64_t bits = engine();
-      const int i = static_cast<int>(bits & 0xFF);  // the layer: bits 0-7
-      const bool negative = (bits & 0x100) != 0;    // the sign: bit 8
+      const int i = static_cast<int>(bits & 0xFF);                            // the layer: bits 0-7
+      const bool negative = (bits & 0x100) != 0;                              // the sign: bit 8
       const double x = static_cast<double>(bits >> 11) * 0x1.0p-53 * t.x[i];  // bits 11-63
       if (x < t.x[i + 1]) return negative ? -x : x;  // inside the layer's core: under f
       if (i == 0) {

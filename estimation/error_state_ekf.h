@@ -13,9 +13,10 @@
 // (the Kalibr model, see ImuNoise), so a step of dt adds sigma^2 dt to the variance of each:
 // Solà's V_i = sigma_an^2 dt^2 with the sample noise sigma_an = density / sqrt(dt).
 //
-// Speed: predict() runs at the IMU rate for every vehicle, so the covariance is propagated block
-// by block, skipping the identity and zero blocks of F (about 650 multiply-adds, against 6750
-// for two dense 15 x 15 products).
+// Speed: predict() runs at the prediction rate (100 Hz by default), and again for every step a
+// late fix makes the filter re-run, for every vehicle, so the covariance is propagated block by
+// block, skipping the identity and zero blocks of F (about 650 multiply-adds, against 6750 for
+// two dense 15 x 15 products).
 #include <Eigen/Core>
 
 #include "estimation/measurements.h"

@@ -34,10 +34,10 @@ class ImuAverager {
 
  private:
   double interval_;
-  double last_t_ = 0.0;      // the latest sample's time (the reset time before any)
-  double next_due_ = 0.0;    // the time from which a sample closes a prediction interval
-  double span_ = 0.0;        // s covered by the samples held
-  int held_ = 0;             // samples held
+  double last_t_ = 0.0;    // the latest sample's time (the reset time before any)
+  double next_due_ = 0.0;  // the time from which a sample closes a prediction interval
+  double span_ = 0.0;      // s covered by the samples held
+  int held_ = 0;           // samples held
   Eigen::Vector3d gyro_dt_ = Eigen::Vector3d::Zero();   // sum of gyro * dt
   Eigen::Vector3d accel_dt_ = Eigen::Vector3d::Zero();  // sum of accel * dt
 };

@@ -45,7 +45,7 @@ TEST(ZigguratNormal, MomentsAndTailsAreTheStandardNormals) {
   // Tolerances about 4 standard errors of each estimate at n = 2e6.
   EXPECT_NEAR(mean, 0.0, 0.003);
   EXPECT_NEAR(var, 1.0, 0.004);
-  EXPECT_NEAR(fourth / n, 3.0, 0.03);               // kurtosis
+  EXPECT_NEAR(fourth / n, 3.0, 0.03);                   // kurtosis
   EXPECT_NEAR(beyond1 / double(n), 0.3173105, 0.0014);  // 2 (1 - Phi(1))
   EXPECT_NEAR(beyond2 / double(n), 0.0455003, 0.0006);  // 2 (1 - Phi(2))
   EXPECT_NEAR(beyond_r / double(n), 2.580e-4, 4.5e-5);  // 2 (1 - Phi(r))

@@ -45,13 +45,16 @@ TEST(RealisticFlight, DefaultScenarioFliesOnItsEstimateThroughRotorDrag) {
   EXPECT_EQ(jsonNumber(metrics, "collisions"), 0);
   EXPECT_NE(metrics.find("\"sensors\": \"mocap\""), std::string::npos);
   EXPECT_NE(metrics.find("\"estimator\": \"ekf\""), std::string::npos);
-  // Centimetres in the breeze (the tracking targets: RMSE <= 5 cm, max <= 15 cm), the estimate
-  // within a millimetre or so of the truth.
+  // Centimetres in the breeze (the tracking targets: RMSE <= 5 cm, max <= 15 cm). The estimate
+  // the controller sees is the EKF's at its latest 100 Hz prediction, 0, 2, 4, 6 or 8 ms before
+  // the 500 Hz control step (RMS age 4.9 ms): its error against the present truth is the filter's
+  // own, about a millimetre, plus the motion since, at most the top speed times that RMS age.
   EXPECT_GT(jsonNumber(metrics, "rmse_m"), 0.01);
   EXPECT_LE(jsonNumber(metrics, "rmse_m"), 0.05);
   EXPECT_LE(jsonNumber(metrics, "max_error_m"), 0.15);
-  EXPECT_GT(jsonNumber(metrics, "estimation_rmse_m"), 1e-4);
-  EXPECT_LT(jsonNumber(metrics, "estimation_rmse_m"), 3e-3);
+  EXPECT_GT(jsonNumber(metrics, "estimation_rmse_m"), 1e-3);
+  EXPECT_LT(jsonNumber(metrics, "estimation_rmse_m"),
+            1.5e-3 + jsonNumber(metrics, "max_speed_mps") * 0.0049);
 }
 
 }  // namespace

@@ -55,8 +55,12 @@ TEST(SensingSections, APresetChoosesTheEkfAndBlocksChangeItsValues) {
 }
 
 TEST(SensingFlight, TheControllerFliesOnAnEstimateAsGoodAsItsSensors) {
+  // Predicting at every IMU sample, the estimate the controller sees is of the present: its error
+  // is the filter's own.
   const auto estimation = [](const std::string& preset) {
-    const RunLog log = flyGeometric(hoverWith(preset, 12.0));
+    Scenario s = hoverWith(preset, 12.0);
+    s.estimator.predict_rate = s.sensors.imu.rate;
+    const RunLog log = flyGeometric(s);
     EXPECT_EQ(log.end_reason, "max_time") << preset;
     return computeFlightMetrics(log.vehicles[0], World{}, false).estimation_rmse_m;
   };
@@ -67,6 +71,28 @@ TEST(SensingFlight, TheControllerFliesOnAnEstimateAsGoodAsItsSensors) {
   EXPECT_LT(mocap, 2e-3);
   EXPECT_GT(onboard, 0.05);  // 0.5 m GPS fixes at 10 Hz: decimetres
   EXPECT_LT(onboard, 0.5);
+}
+
+TEST(SensingFlight, PredictingAt100HzTheControllerSeesTheEstimateOfTheLatestPrediction) {
+  // At the default 100 Hz the controller is handed the estimate of the latest prediction, made
+  // `age` = t mod 10 ms ago: its error against the present truth adds the motion since,
+  // velocity x age, to the filter's own error (nearly independent of it).
+  Scenario every = hoverWith("mocap", 12.0), at100 = hoverWith("mocap", 12.0);
+  every.estimator.predict_rate = every.sensors.imu.rate;
+  ASSERT_DOUBLE_EQ(at100.estimator.predict_rate, 100.0);
+  const double own =
+      computeFlightMetrics(flyGeometric(every).vehicles[0], World{}, false).estimation_rmse_m;
+  const RunLog log = flyGeometric(at100);
+  const double seen = computeFlightMetrics(log.vehicles[0], World{}, false).estimation_rmse_m;
+  double motion_sq = 0.0;
+  for (const LogSample& x : log.vehicles[0].samples) {
+    const double age = std::fmod(x.t + 1e-9, 0.01) - 1e-9;
+    motion_sq += (x.vel * age).squaredNorm();
+  }
+  motion_sq /= static_cast<double>(log.vehicles[0].samples.size());
+  const double expected = std::sqrt(own * own + motion_sq);
+  EXPECT_GT(std::sqrt(motion_sq), own);  // the age matters here: more than the filter's error
+  EXPECT_NEAR(seen, expected, 0.05 * expected);
 }
 
 TEST(SensingFlight, NoiseIsRepeatableUnderTheSameSeedAndDiffersUnderAnother) {
