@@ -14,7 +14,8 @@ constexpr double kFullScale = 65535.0;  // UINT16_MAX: the firmware's 16-bit thr
 const CrazyfliePlatform& withRisingConvexCurve(const CrazyfliePlatform& p) {
   const Eigen::Vector4d& c = p.vmotor2thrust;
   if (!(c[1] > 0.0 && c[2] >= 0.0 && c[3] > 0.0))
-    throw std::invalid_argument("CrazyflieMotors: VMOTOR2THRUST1 and 3 must be positive, 2 non-negative");
+    throw std::invalid_argument(
+        "CrazyflieMotors: VMOTOR2THRUST1 and 3 must be positive, 2 non-negative");
   return p;
 }
 }  // namespace
@@ -37,9 +38,17 @@ CrazyfliePlatform crazyflie21BrushlessPlatform() {
 }
 
 CrazyflieMotors::CrazyflieMotors(const CrazyfliePlatform& platform, double max_rotor_thrust)
-    : p_(withRisingConvexCurve(platform)),
-      full_scale_volts_(std::isfinite(max_rotor_thrust) ? voltageForThrust(max_rotor_thrust)
-                                                        : std::numeric_limits<double>::infinity()) {
+    : p_(withRisingConvexCurve(platform)) {
+  // The roots at thrusts c0 + i step, up to the curve's thrust at 5 V (0.50 N, past the
+  // Brushless's full scale, 3.6 V), each found from the cbrt start.
+  const Eigen::Vector4d& c = p_.vmotor2thrust;
+  table_step_ = (thrustAtVoltage(5.0) - c[0]) / (kTableSize - 1);
+  for (int i = 0; i < kTableSize; ++i) {
+    const double thrust = c[0] + i * table_step_;
+    table_[i] = i == 0 ? 0.0 : newtonFrom(std::cbrt((thrust - c[0]) / c[3]), thrust);
+  }
+  full_scale_volts_ = std::isfinite(max_rotor_thrust) ? voltageForThrust(max_rotor_thrust)
+                                                      : std::numeric_limits<double>::infinity();
 }
 
 double CrazyflieMotors::thrustAtVoltage(double v) const {
@@ -47,22 +56,35 @@ double CrazyflieMotors::thrustAtVoltage(double v) const {
   return c[0] + v * (c[1] + v * (c[2] + v * c[3]));
 }
 
-double CrazyflieMotors::voltageForThrust(double thrust) const {
-  // The cubic f rises and is convex for v >= 0 (c1, c2, c3 > 0: f' > 0 and f'' = 2 c2 + 6 c3 v
-  // > 0). Newton's method started above the root then falls monotonically onto it, so it stops
-  // when a step no longer lowers v (the root to the last bit, in about five steps at a motor's
-  // thrusts; it runs four times a control step). Start: v0 = cbrt((T - c0) / c3), where the
-  // cubic term alone makes T, so f(v0) = T + c1 v0 + c2 v0^2 >= T.
+double CrazyflieMotors::newtonFrom(double v, double thrust) const {
+  // The cubic f rises and is convex for v >= 0 (c1, c3 > 0, c2 >= 0: f' > 0 and f'' = 2 c2 +
+  // 6 c3 v > 0), so a Newton step from anywhere lands at or above the root (the tangent lies
+  // under f) and from there Newton falls monotonically onto it: after the first step it stops
+  // when a step no longer lowers v, the root to the last bit.
   const Eigen::Vector4d& c = p_.vmotor2thrust;
-  if (!(thrust > c[0])) return 0.0;  // at or below the curve's value at 0 V: the motor is off
-  double v = std::cbrt((thrust - c[0]) / c[3]);
   for (int i = 0; i < 100; ++i) {
     const double slope = c[1] + v * (2.0 * c[2] + v * 3.0 * c[3]);
     const double next = v - (thrustAtVoltage(v) - thrust) / slope;
-    if (!(next < v)) break;
+    if (i > 0 && !(next < v)) break;
     v = next;
   }
   return v;
+}
+
+double CrazyflieMotors::voltageForThrust(double thrust) const {
+  const Eigen::Vector4d& c = p_.vmotor2thrust;
+  if (!(thrust > c[0])) return 0.0;  // at or below the curve's value at 0 V: the motor is off
+  // Start: the chord of the inverse between two tabulated roots (within 6e-5 V; the inverse is
+  // concave, so the chord lies below it), or beyond the table v0 = cbrt((T - c0) / c3), where
+  // the cubic term alone makes T (f(v0) >= T). About three steps from the chord, six from v0;
+  // this runs four times a control step.
+  const double k = (thrust - c[0]) / table_step_;
+  if (k < static_cast<double>(kTableSize - 1)) {
+    const int i = static_cast<int>(k);
+    const double v0 = table_[i] + (k - i) * (table_[i + 1] - table_[i]);
+    return newtonFrom(v0, thrust);
+  }
+  return newtonFrom(std::cbrt((thrust - c[0]) / c[3]), thrust);
 }
 
 Eigen::Vector4d CrazyflieMotors::deliver(const Eigen::Vector4d& requested, bool* capped) const {

@@ -56,8 +56,15 @@ class CrazyflieMotors {
   double voltageForThrust(double thrust) const;
 
  private:
+  // Newton's method on the thrust curve for `thrust`, from v (any v >= 0).
+  double newtonFrom(double v, double thrust) const;
+
   CrazyfliePlatform p_;
   double full_scale_volts_;  // motor volts at full duty (infinite: no cap)
+  // The curve's inverse at evenly spaced thrusts, the start of voltageForThrust's iteration.
+  static constexpr int kTableSize = 257;
+  double table_step_ = 0.0;
+  double table_[kTableSize] = {};
 };
 
 // Step 1, force/torque mode (controlModeForceTorque): per-motor forces, N, firmware order.
