@@ -118,7 +118,7 @@ TEST(Figures, TeamPathFiguresShowFlownPathsAndTheirPlansOnlyWhenAsked) {
   const std::string flown = slurp(dir / "flown" / "top.svg");
   // A grid plan's right angles are not drawn; the key names each kind of line once.
   EXPECT_EQ(flown.find("planned path"), std::string::npos);
-  EXPECT_EQ(flown.find("reference trajectory"), std::string::npos);
+  EXPECT_EQ(flown.find(">reference trajectory<"), std::string::npos);  // the key's entry
   EXPECT_NE(flown.find("Top view: flown paths"), std::string::npos);
   EXPECT_NE(flown.find("flown paths (colour: tracking error)"), std::string::npos);
   EXPECT_EQ(flown.find("uav2"), std::string::npos);
@@ -126,6 +126,7 @@ TEST(Figures, TeamPathFiguresShowFlownPathsAndTheirPlansOnlyWhenAsked) {
   writeRunFigures(log, s, dir / "plans");
   const std::string plans = slurp(dir / "plans" / "top.svg");
   EXPECT_NE(plans.find("planned paths (one colour each)"), std::string::npos);
+  EXPECT_NE(plans.find(">reference trajectory<"), std::string::npos);
   EXPECT_NE(plans.find("Top view: planned vs flown path"), std::string::npos);
   std::filesystem::remove_all(dir);
 }
