@@ -148,6 +148,8 @@ Section benchTeamRender(bool quick) {
       {"team32_with_plans_frame_ms", best_plans.frame_ms, "ms"},
       {"team32_with_plans_mjr_render_ms", per_frame_ms(best_plans.phases.render), "ms"},
       {"team32_with_plans_overlay_geoms", static_cast<double>(best_plans.phases.overlay_geoms), ""},
+      {"team32_with_plans_ribbon_segments", static_cast<double>(best_plans.phases.ribbon_segments),
+       ""},
   };
   out.note = std::string(
                  "compared: swarm32's 32 Crazyflies (team32) against its first Crazyflie "
