@@ -186,8 +186,11 @@ std::string axisName(int axis) {
   return axis == 0 ? "x" : axis == 1 ? "y" : "z";
 }
 
-// The paths over the obstacles along two world axes (top: x,y; side: x or y, z).
-std::string pathPlot(const RunLog& log, int h, int v, const std::vector<ErrorReference>& refs) {
+// The paths over the obstacles along two world axes (top: x,y; side: x or y, z). plans: the
+// planned paths and references too; a team's figures leave them out unless asked
+// (render.team_plans): a grid planner's right angles, one per member, hide where they flew.
+std::string pathPlot(const RunLog& log, int h, int v, const std::vector<ErrorReference>& refs,
+                     bool plans) {
   const bool several = log.vehicles.size() > 1;
   std::ostringstream p;
   p << "plot ";
@@ -198,13 +201,16 @@ std::string pathPlot(const RunLog& log, int h, int v, const std::vector<ErrorRef
   };
   const std::string hc = std::to_string(h + 2), vc = std::to_string(v + 2);
   const std::string rh = std::to_string(h + 5), rv = std::to_string(v + 5);
+  // A team's key names each kind of line once (32 vehicles made a key taller than the plot).
+  const auto title = [&](std::size_t a, const std::string& one, const std::string& team) {
+    return gnuplotString(!several ? one : a == 0 ? team : "");
+  };
   for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
     const VehicleLog& vl = log.vehicles[a];
-    const std::string who = several ? vl.name + " " : "";
     const std::string planned = hexColour(several ? agentColour(a) : kPlannedPathColour);
     const std::string id = std::to_string(a);
     if (!vl.samples.empty()) {
-      if (refs[a] == ErrorReference::Trajectory) {
+      if (plans && refs[a] == ErrorReference::Trajectory) {
         sep();
         p << "'v" << id << ".dat' using " << rh << ":" << rv
           << " with lines lw 1.2 dt (6,4) lc rgb '" << hexColour(kReferenceColour) << "' title "
@@ -212,22 +218,22 @@ std::string pathPlot(const RunLog& log, int h, int v, const std::vector<ErrorRef
       }
       sep();
       p << "'v" << id << ".dat' using " << hc << ":" << vc << ":8 with lines lw 3 lc palette title "
-        << gnuplotString(who + "flown (colour: tracking error)");
+        << title(a, "flown (colour: tracking error)", "flown paths (colour: tracking error)");
     }
-    if (vl.planned_path.size() > 1) {
+    if (plans && vl.planned_path.size() > 1) {
       sep();
       p << "'p" << id << ".dat' using " << h + 1 << ":" << v + 1
         << " with linespoints lw 1.8 pt 7 ps 0.5 lc rgb '" << planned << "' title "
-        << gnuplotString(who + "planned path");
+        << title(a, "planned path", "planned paths (one colour each)");
     }
     sep();
     p << "'p" << id << ".dat' every ::0::0 using " << h + 1 << ":" << v + 1
       << " with points pt 7 ps 1.6 lc rgb '" << hexColour(several ? agentColour(a) : kStartColour)
-      << "' title " << gnuplotString(a == 0 ? "start" : "");
+      << "' title " << title(a, "start", "starts (one colour each)");
     sep();
     p << "'g" << id << ".dat' using " << h + 1 << ":" << v + 1
       << " with points pt 5 ps 1.6 lc rgb '" << hexColour(several ? agentColour(a) : kGoalColour)
-      << "' title " << gnuplotString(a == 0 ? "goal" : "");
+      << "' title " << title(a, "goal", "goals");
   }
   return p.str();
 }
@@ -299,16 +305,18 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
         << "set key top right\n"
         << error_marks.str() << error_plot.str() << "\n";
 
+  const bool plans = log.vehicles.size() <= 1 || scenario.render.team_plans;
   std::ostringstream top;
   top << common.str() << errorPalette(scale, colour_label) << obstacleObjects(world, 0, 1)
       << "set title "
-      << gnuplotString("Top view: planned vs flown path (" + planner +
-                       "; darker obstacles are taller)")
+      << gnuplotString(
+             std::string(plans ? "Top view: planned vs flown path (" : "Top view: flown paths (") +
+             planner + "; darker obstacles are taller)")
       << "\n"
       << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
       << "set xrange [" << num(lo.x()) << ":" << num(hi.x()) << "]\nset yrange [" << num(lo.y())
       << ":" << num(hi.y()) << "]\nset key outside below horizontal center\n"
-      << pathPlot(log, 0, 1, refs) << "\n";
+      << pathPlot(log, 0, 1, refs, plans) << "\n";
 
   // Side view along the axis the flight crosses most (the other horizontal axis is depth).
   int along = 0;
@@ -325,7 +333,7 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
        << "set xlabel '" << axisName(along) << " [m]'\nset ylabel 'z [m]'\nset size ratio 0.42\n"
        << "set xrange [" << num(lo[along]) << ":" << num(hi[along]) << "]\nset yrange ["
        << num(lo.z()) << ":" << num(hi.z()) << "]\nset key outside below horizontal center\n"
-       << pathPlot(log, along, 2, refs) << "\n";
+       << pathPlot(log, along, 2, refs, plans) << "\n";
 
   // The top view keeps equal axes: the canvas height follows the world's aspect ratio (the
   // plot is ~760 px wide; title, axes and key take ~190 px).

@@ -18,10 +18,11 @@ namespace {
 // few hundred. The trail and the reference are decimated to stay within these budgets.
 constexpr int kTrailSegmentBudget = 250;
 constexpr int kReferenceDashBudget = 60;
-// With many vehicles (a 20-robot team) every vehicle's trail shares this many segments; 250
-// each made 5000 capsules a frame (about 0.4 s in software), and 1500 shared by 32 Crazyflies
-// still made a team's frame three times a single vehicle's (cosim bench --section team_render).
-constexpr int kTeamTrailSegmentBudget = 800;
+// With many vehicles every vehicle's trail shares this many segments. As capsules, 250 each (a
+// 20-robot team) cost about 0.4 s a frame in software; a team's trails are now ribbons in one
+// draw call (render/ribbon_batch.h), where 4000 segments for 32 Crazyflies cost a few ms
+// (cosim bench --section team_render).
+constexpr int kTeamTrailSegmentBudget = 4000;
 
 int trailBudget(std::size_t vehicles) {
   return std::max(
@@ -187,6 +188,8 @@ void RunRenderer::hideTinyVehicles(double t) {
 
 void RunRenderer::addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                              const Eigen::Vector3f& rgb, double radius, float alpha, int type) {
+  // A team's lines (trails, and plans and references when asked) as ribbons in one draw call.
+  if (log_.vehicles.size() > 1 && alpha >= 1.0f) return ribbons_.add(a, b, rgb, radius);
   if (scene_.ngeom >= scene_.maxgeom || (b - a).norm() < 1e-9) return;
   mjvGeom* g = scene_.geoms + scene_.ngeom;
   const float rgba[4] = {rgb.x(), rgb.y(), rgb.z(), alpha};
@@ -275,20 +278,18 @@ void RunRenderer::addTrail(std::size_t vehicle, double t) {
   const std::vector<std::size_t>& kept = trail_vertices_[vehicle];
   const double scale = errorScale(vehicle);
   const std::size_t last = sampleIndexAt(v, t);
-  // A team's thin trails as cylinders (no round caps: half the triangles of a capsule; the
-  // joints do not show at their width).
-  const int type = log_.vehicles.size() > 1 ? mjGEOM_CYLINDER : mjGEOM_CAPSULE;
   std::size_t from = 0;
   for (std::size_t k = 1; k < kept.size() && from < last; ++k) {
     const std::size_t i = std::min(kept[k], last);  // the trail ends at the vehicle
     addSegment(towardEye(v.samples[from].pos, 2.5), towardEye(v.samples[i].pos, 2.5),
-               errorColour(0.5 * (err[from] + err[i]) / scale), line_radius_, 1.0f, type);
+               errorColour(0.5 * (err[from] + err[i]) / scale), line_radius_);
     from = i;
   }
 }
 
 void RunRenderer::addOverlays(double t, CameraKind camera) {
   const bool several = log_.vehicles.size() > 1;
+  ribbons_.clear();
   // A team's picture shows where each member flew; the plans (a grid planner's right angles,
   // one per member) and the references only when the scenario asks (render.team_plans).
   const bool plans = !several || scenario_.render.team_plans;
@@ -416,69 +417,6 @@ void RunRenderer::annotate(double t) {
   }
 }
 
-std::vector<LegendEntry> RunRenderer::legendEntries(std::size_t room, bool compact) const {
-  std::vector<LegendEntry> legend;
-  const std::size_t n = log_.vehicles.size();
-  const bool plans = n == 1 || scenario_.render.team_plans;
-  const bool has_reference = plans && std::find(references_.begin(), references_.end(),
-                                                ErrorReference::Trajectory) != references_.end();
-  if (compact) {
-    // Three short lines: the path (or the vehicles' colours), the reference, the error.
-    if (n == 1) {
-      legend.push_back({"plan", kPlannedPathColour});
-    } else {
-      LegendEntry all{plans ? "plans" : "vehicles", agentColour(0)};
-      for (std::size_t a = 0; a < n && a < 8; ++a) all.stripes.push_back(agentColour(a));
-      legend.push_back(all);
-    }
-    if (has_reference) legend.push_back({"reference", kReferenceColour});
-    legend.push_back({"flown (error)", errorColour(0.6), /*gradient=*/true});
-    return legend;
-  }
-  if (n == 1) {
-    legend.push_back({"planned path", kPlannedPathColour});
-  } else if (!plans) {
-    LegendEntry all{"vehicles and their goals (one colour each)", agentColour(0)};
-    for (std::size_t a = 0; a < n && a < 8; ++a) all.stripes.push_back(agentColour(a));
-    legend.push_back(all);
-  } else if (n + 1 + (has_reference ? 1 : 0) > room) {
-    // A small frame: every vehicle's planned path in one striped entry.
-    LegendEntry all{"planned paths (one colour each)", agentColour(0)};
-    for (std::size_t a = 0; a < n && a < 8; ++a) all.stripes.push_back(agentColour(a));
-    legend.push_back(all);
-  } else if (n <= 6) {
-    for (std::size_t a = 0; a < n; ++a)
-      legend.push_back({log_.vehicles[a].name + " planned", agentColour(a)});
-  } else {
-    // Many vehicles: the quadrotors by name (the first four), the robots as one striped entry.
-    LegendEntry robots{"robots planned (one colour each)", agentColour(0)};
-    LegendEntry others{"more quadrotors planned", agentColour(0)};
-    std::size_t named = 0;
-    for (std::size_t a = 0; a < n; ++a) {
-      if (isGround(a)) {
-        if (robots.stripes.size() < 8) robots.stripes.push_back(agentColour(a));
-      } else if (named < 4) {
-        legend.push_back({log_.vehicles[a].name + " planned", agentColour(a)});
-        ++named;
-      } else if (others.stripes.size() < 8) {
-        others.stripes.push_back(agentColour(a));
-      }
-    }
-    if (!others.stripes.empty()) legend.push_back(others);
-    if (!robots.stripes.empty()) legend.push_back(robots);
-  }
-  if (has_reference) legend.push_back({"reference trajectory (dashed)", kReferenceColour});
-  legend.push_back({scales_.size() == 1 ? std::string("flown path (colour = error to ") +
-                                              errorReferenceName(scales_[0].reference) + ")"
-                                        : "flown paths (colour = error, scales at right)",
-                    errorColour(0.6), /*gradient=*/true});
-  if (n == 1) {
-    legend.push_back({"start", kStartColour});
-    legend.push_back({"goal", kGoalColour});
-  }
-  return legend;
-}
-
 void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>& rgb,
                          bool annotate_frame) {
   const mjModel* m = world_.model();
@@ -529,8 +467,13 @@ void RunRenderer::render(double t, CameraKind camera, std::vector<std::uint8_t>&
   timings_.scene = since(t0);
   addOverlays(t, camera);
   timings_.overlay_geoms = scene_.ngeom - timings_.model_geoms;
+  timings_.ribbon_segments = static_cast<int>(ribbons_.size());
   timings_.overlays = since(t0);
   mjr_render(ctx_->viewport(), &scene_, ctx_->context());
+  const int floor = world_.floorGeom();
+  ribbons_.draw(eye_, RibbonBatch::shadowOf(scene_, floor >= 0 ? data_->geom_xpos[3 * floor + 2]
+                                                                : scenario_.world.bounds_min.z()));
+  mjr_finish();  // OSMesa rasterises when asked for the pixels: count that as rendering
   timings_.render = since(t0);
   if (annotate_frame && !log_.vehicles.empty()) annotate(t);
   timings_.annotate = since(t0);

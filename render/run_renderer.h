@@ -14,6 +14,7 @@
 #include "render/log_lookup.h"
 #include "render/offscreen_context.h"
 #include "render/overlay_palette.h"
+#include "render/ribbon_batch.h"
 #include "sim/run_log.h"
 #include "sim/world_model.h"
 
@@ -23,11 +24,12 @@ namespace cosim {
 struct FrameTimings {
   double scene = 0.0;     // posing the vehicles, mjv_updateScene, camera and lights
   double overlays = 0.0;  // adding paths, trails, markers and arrows to the scene
-  double render = 0.0;    // mjr_render (OSMesa rasterises every geom)
+  double render = 0.0;    // mjr_render, a team's ribbons, and OSMesa finishing the raster
   double annotate = 0.0;  // the 2D state box, legend and colour scale
   double read = 0.0;      // reading the pixels back
   int model_geoms = 0;    // geoms from the model (world and vehicles)
   int overlay_geoms = 0;  // geoms the overlays added
+  int ribbon_segments = 0;  // a team's line segments drawn as ribbons (render/ribbon_batch.h)
 };
 
 class RunRenderer {
@@ -80,6 +82,7 @@ class RunRenderer {
   void hideTinyVehicles(double t);
   void addTrail(std::size_t vehicle, double t);
   void addReference(const VehicleLog& v);
+  // A line: a geom (a capsule by default) for one vehicle, an opaque team line a ribbon.
   void addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3f& rgb,
                   double radius, float alpha = 1.0f, int type = mjGEOM_CAPSULE);
   void addSphere(const Eigen::Vector3d& p, double radius, const Eigen::Vector3f& rgb, float alpha);
@@ -126,6 +129,7 @@ class RunRenderer {
   double line_radius_ = 0.05;
   FrameTimings timings_;
   std::vector<mjrRect> overlay_boxes_;
+  RibbonBatch ribbons_;  // a team's trails, drawn after mjr_render
 };
 
 }  // namespace cosim

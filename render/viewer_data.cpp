@@ -8,6 +8,7 @@
 #include "core/base64.h"
 #include "render/run_moments.h"
 #include "render/scene_shapes.h"
+#include "render/trail_decimation.h"
 
 namespace cosim {
 
@@ -182,8 +183,10 @@ nlohmann::json vehiclesJson(const WorldModel& world, const Scenario& scenario, c
     const bool known = v < scenario.vehicles.size() && v < world.vehicles().size();
     const std::string model = known ? scenario.vehicles[v].model : "unknown";
     if (known && !models.contains(model)) models[model] = shapesJson(vehicleShapes(world, v));
+    // Corners only: a grid plan lists every cell it crosses and every wait (a 1000-robot
+    // execution's plans were half of its 10 MB page).
     nlohmann::json path = nlohmann::json::array();
-    for (const Eigen::Vector3d& p : vl.planned_path)
+    for (const Eigen::Vector3d& p : polylineCorners(vl.planned_path))
       for (int a = 0; a < 3; ++a) path.push_back(rounded(p[a], 1e-3));
     out.push_back(
         {{"name", vl.name},
@@ -217,6 +220,8 @@ nlohmann::json viewerData(const WorldModel& world, const Scenario& scenario, con
   nlohmann::json d;
   d["title"] = title;
   d["status"] = status;
+  // A team's plans and references are hidden until asked for, as in its pictures.
+  d["team_plans"] = scenario.render.team_plans;
   d["duration"] = duration;
   d["rate"] = rate;
   d["frames"] = frames;

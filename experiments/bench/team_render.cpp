@@ -78,6 +78,7 @@ Measured measure(const WorldModel& world, const Scenario& s, const RunLog& log, 
     m.phases.read += f.read;
     m.phases.model_geoms = f.model_geoms;
     m.phases.overlay_geoms = std::max(m.phases.overlay_geoms, f.overlay_geoms);
+    m.phases.ribbon_segments = std::max(m.phases.ribbon_segments, f.ribbon_segments);
   }
   m.frame_ms =
       1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / frames;
@@ -98,18 +99,28 @@ Section benchTeamRender(bool quick) {
   // dashes and goal pole too (render.team_plans).
   Scenario with_plans = team;
   with_plans.render.team_plans = true;
+  // For scale: the bundled default scenario's single quadrotor in its own world (its
+  // obstacles, its room), flown the same synthetic way.
+  Scenario standard = loadScenario(std::string(COSIM_SCENARIOS_DIR) + "/default.yaml");
+  standard.render.width = width;
+  standard.render.height = height;
   const RunLog team_log = teamLog(team), single_log = teamLog(single);
+  const RunLog standard_log = teamLog(standard);
   const WorldModel team_world = WorldModel::build(team), single_world = WorldModel::build(single);
-  // Alternated, best of the rounds: both see the same load on a shared machine.
-  Measured best_team, best_single, best_plans;
-  best_team.frame_ms = best_single.frame_ms = best_plans.frame_ms = HUGE_VAL;
+  const WorldModel standard_world = WorldModel::build(standard);
+  // Alternated, best of the rounds: all see the same load on a shared machine.
+  Measured best_team, best_single, best_plans, best_standard;
+  best_team.frame_ms = best_single.frame_ms = best_plans.frame_ms = best_standard.frame_ms =
+      HUGE_VAL;
   for (int round = 0; round < (quick ? 1 : 3); ++round) {
     const Measured a = measure(single_world, single, single_log, width, height, frames);
     const Measured b = measure(team_world, team, team_log, width, height, frames);
     const Measured c = measure(team_world, with_plans, team_log, width, height, frames);
+    const Measured d = measure(standard_world, standard, standard_log, width, height, frames);
     if (a.frame_ms < best_single.frame_ms) best_single = a;
     if (b.frame_ms < best_team.frame_ms) best_team = b;
     if (c.frame_ms < best_plans.frame_ms) best_plans = c;
+    if (d.frame_ms < best_standard.frame_ms) best_standard = d;
   }
   const double ratio = best_team.frame_ms / best_single.frame_ms;
   const auto per_frame_ms = [&](double total) { return 1e3 * total / frames; };
@@ -127,13 +138,25 @@ Section benchTeamRender(bool quick) {
       {"team32_read_pixels_ms", per_frame_ms(p.read), "ms"},
       {"team32_model_geoms", static_cast<double>(p.model_geoms), ""},
       {"team32_overlay_geoms", static_cast<double>(p.overlay_geoms), ""},
+      {"team32_trail_ribbon_segments", static_cast<double>(p.ribbon_segments), ""},
       {"single_mjr_render_ms", per_frame_ms(best_single.phases.render), "ms"},
+      {"single_read_pixels_ms", per_frame_ms(best_single.phases.read), "ms"},
+      {"single_model_geoms", static_cast<double>(best_single.phases.model_geoms), ""},
       {"single_overlay_geoms", static_cast<double>(best_single.phases.overlay_geoms), ""},
+      {"default_scenario_frame_ms", best_standard.frame_ms, "ms"},
+      {"ratio_team_to_default_scenario", best_team.frame_ms / best_standard.frame_ms, "x"},
       {"team32_with_plans_frame_ms", best_plans.frame_ms, "ms"},
       {"team32_with_plans_mjr_render_ms", per_frame_ms(best_plans.phases.render), "ms"},
       {"team32_with_plans_overlay_geoms", static_cast<double>(best_plans.phases.overlay_geoms), ""},
+      {"team32_with_plans_ribbon_segments", static_cast<double>(best_plans.phases.ribbon_segments),
+       ""},
   };
-  out.note = std::to_string(width) + "x" + std::to_string(height) + ", overview camera, " +
+  out.note = std::string(
+                 "compared: swarm32's 32 Crazyflies (team32) against its first Crazyflie "
+                 "alone in the same room (single; the ratio's denominator), and the "
+                 "default scenario's quadrotor in its own world (default_scenario), each "
+                 "flying a synthetic 20 s log; ") +
+             std::to_string(width) + "x" + std::to_string(height) + ", overview camera, " +
              std::to_string(frames) +
              " frames, best of alternating rounds, one thread, no encoding; target "
              "ratio_team_to_single <= 2: " +

@@ -75,11 +75,11 @@
   var planned = D.vehicles.map(function (x) { return new Float32Array(x.planned); });
   var pathColour = nV === 1 ? [new THREE.Color('#2f6bd8')] : vColour;
   layer('planned', 'planned path', new THREE.LineSegments(S.polylines(planned, pathColour),
-    new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors })), nV <= 8);
+    new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors })), nV === 1 || D.team_plans);
   var refLine = new THREE.LineSegments(S.polylines(R, R.map(function () { return new THREE.Color(0x555a66); })),
     new THREE.LineDashedMaterial({ color: 0x555a66, dashSize: 0.25, gapSize: 0.18 }));
   refLine.computeLineDistances();
-  layer('reference', 'reference', refLine, nV <= 8);
+  layer('reference', 'reference', refLine, nV === 1 || D.team_plans);
   var flown = S.flownPaths(P, err, frameTimes, errorColour);
   layer('flown', 'flown path (error colour)', flown, true);
   var vehicleMeshes = S.vehicleMeshes(D);

@@ -105,3 +105,28 @@ TEST(Figures, ComparisonChartNamesAMissingColumn) {
   EXPECT_FALSE(std::filesystem::exists(dir / "x.png"));
   std::filesystem::remove_all(dir);
 }
+
+TEST(Figures, TeamPathFiguresShowFlownPathsAndTheirPlansOnlyWhenAsked) {
+  const auto dir = freshTestDir("team_figures");
+  Scenario s = renderTestScenario();
+  s.vehicles.push_back(s.vehicles[0]);
+  s.vehicles[1].name = "uav2";
+  RunLog log = straightFlightLog(3.0, 0.25);
+  log.vehicles.push_back(log.vehicles[0]);
+  log.vehicles[1].name = "uav2";
+  writeRunFigures(log, s, dir / "flown");
+  const std::string flown = slurp(dir / "flown" / "top.svg");
+  // A grid plan's right angles are not drawn; the key names each kind of line once.
+  EXPECT_EQ(flown.find("planned path"), std::string::npos);
+  EXPECT_EQ(flown.find(">reference trajectory<"), std::string::npos);  // the key's entry
+  EXPECT_NE(flown.find("Top view: flown paths"), std::string::npos);
+  EXPECT_NE(flown.find("flown paths (colour: tracking error)"), std::string::npos);
+  EXPECT_EQ(flown.find("uav2"), std::string::npos);
+  s.render.team_plans = true;
+  writeRunFigures(log, s, dir / "plans");
+  const std::string plans = slurp(dir / "plans" / "top.svg");
+  EXPECT_NE(plans.find("planned paths (one colour each)"), std::string::npos);
+  EXPECT_NE(plans.find(">reference trajectory<"), std::string::npos);
+  EXPECT_NE(plans.find("Top view: planned vs flown path"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
