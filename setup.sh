@@ -47,8 +47,11 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 # the registry the test is skipped, and the setup goes on.
 if [ "${1:-build}" != run ] && command -v npm >/dev/null 2>&1 &&
    [ ! -d build/node/node_modules/@mcap/core ]; then
-  npm install --prefix build/node --no-audit --no-fund --silent @mcap/core@2 >/dev/null 2>&1 ||
-    echo "setup: could not install @mcap/core from npm (the MCAP reader test will be skipped)"
+  if ! npm install --prefix build/node --no-audit --no-fund @mcap/core@2 >build/npm-install.log 2>&1
+  then
+    echo "setup: could not install @mcap/core from npm (the MCAP reader test will be skipped):"
+    tail -n 5 build/npm-install.log | sed 's/^/setup:   /'
+  fi
 fi
 # `run` builds only the program it runs and the Python module (not the test suite); `test` and
 # `build` build everything.
