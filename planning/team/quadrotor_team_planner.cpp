@@ -8,6 +8,8 @@
 
 #include "core/input_error.h"
 #include "planning/mapf/solution_validator.h"
+#include "planning/team/dense_roadmap.h"
+#include "planning/team/dense_team_search.h"
 #include "planning/team/team_grid.h"
 
 namespace cosim {
@@ -154,6 +156,77 @@ void smoothGrid(const TeamPlanningProblem& problem, const TeamGrid& grid, const 
   plan.status = r.status;
 }
 
+
+// The dense stage: starts or goals the team grid cannot hold, planned on a finer roadmap with
+// ellipsoid conflicts (dense_roadmap.h, dense_team_search.h) whatever MAPF planner was named.
+void planDense(const TeamPlanningProblem& problem, const SeparationEllipsoid& e, double inflation,
+               const StopToken& deadline, const Say& say, TeamPlan& plan) {
+  std::vector<Eigen::Vector3d> starts, goals;
+  for (const auto& a : problem.agents) {
+    starts.push_back(a.start);
+    goals.push_back(a.goal);
+  }
+  const DenseRoadmap roadmap =
+      denseRoadmap(*problem.world, starts, goals, e, problem.min_separation, inflation);
+  const OccupancyGrid& cells = roadmap.grid.occupancy();
+  plan.counters["grid_cells"] = static_cast<double>(cells.cellCount());
+  plan.counters["blocked_cells"] = static_cast<double>(cells.blockedCount());
+  plan.counters["pitch_xy_m"] = roadmap.grid.pitch().x();
+  plan.counters["pitch_z_m"] = roadmap.grid.pitch().z();
+  plan.counters["dense_roadmap_refinement"] = roadmap.refinement;
+  say("team plan: " + std::to_string(starts.size()) + " agents closer than the team grid's cells: " +
+      "prioritised planning with ellipsoid conflicts on a roadmap of " +
+      std::to_string(roadmap.graph.vertexCount()) + " vertices");
+  DenseTeamQuery q;
+  q.graph = &roadmap.graph;
+  q.positions = &roadmap.positions;
+  q.pitch = roadmap.grid.pitch();
+  q.ellipsoid = e;
+  q.separation = problem.min_separation;
+  q.starts = roadmap.starts;
+  q.goals = roadmap.goals;
+  q.deadline = &deadline;
+  const double search_start = deadline.elapsedMs();
+  DenseTeamResult d = planDenseTeam(q);
+  MapfResult r;
+  r.time_ms = deadline.elapsedMs() - search_start;
+  for (const auto& [k, v] : d.counters) plan.counters[k] = v;
+  plan.counters["mapf_ms"] = r.time_ms;
+  // The independent check: every pair apart at every step and along every move, by all pairs.
+  if (d.success && closestLockStepDistance(d.paths, roadmap.positions, e) < problem.min_separation)
+  {
+    d.success = false;
+    d.status = PlannerStatus::InvalidSolution;
+    d.message = "a pair comes closer than the separation";
+  }
+  if (!d.success) {
+    plan.status = d.status;
+    plan.message = "no team plan on the dense roadmap: " + d.message;
+    return;
+  }
+  for (const auto& p : d.paths) {
+    r.paths.emplace_back();
+    for (const int v : p) r.paths.back().push_back(roadmap.graph.cellOf(v));
+  }
+  r.success = true;
+  r.status = d.status;
+  plan.counters["sum_of_costs"] = static_cast<double>(sumOfCosts(r.paths));
+  plan.counters["makespan"] = makespan(r.paths);
+  smoothGrid(problem, roadmap.grid, r, deadline, say, plan);
+}
+
+// The team grid's instance, or false when some start or goal shares a cell or lies in a blocked
+// one (then the dense roadmap is tried).
+bool coarseInstance(const TeamGrid& grid, const std::vector<TeamAgent>& agents,
+                    MapfInstance& instance) {
+  try {
+    instance = snappedInstance(grid, agents);
+    return true;
+  } catch (const InputError&) {
+    return false;
+  }
+}
+
 }  // namespace
 
 TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& planner) {
@@ -171,7 +244,12 @@ TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& plan
   const Eigen::Vector3d pitch = std::sqrt(2.0) * problem.min_separation * kPitchRoundOff *
                                 Eigen::Vector3d(e.radius, e.radius, e.height);
   const TeamGrid grid = TeamGrid::over(*problem.world, pitch, inflation);
-  const MapfInstance instance = snappedInstance(grid, agents);
+  MapfInstance instance;
+  if (!coarseInstance(grid, agents, instance)) {
+    planDense(problem, e, inflation, deadline, say, plan);
+    plan.time_ms = msSince(start);
+    return plan;
+  }
   plan.counters["grid_cells"] = static_cast<double>(instance.grid.cellCount());
   plan.counters["blocked_cells"] = static_cast<double>(instance.grid.blockedCount());
   plan.counters["pitch_xy_m"] = pitch.x();
