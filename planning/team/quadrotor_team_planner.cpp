@@ -10,6 +10,7 @@
 #include "planning/mapf/solution_validator.h"
 #include "planning/team/dense_roadmap.h"
 #include "planning/team/dense_team_search.h"
+#include "planning/team/ellipsoid_conflict.h"
 #include "planning/team/team_grid.h"
 
 namespace cosim {
@@ -215,16 +216,35 @@ void planDense(const TeamPlanningProblem& problem, const SeparationEllipsoid& e,
   smoothGrid(problem, roadmap.grid, r, deadline, say, plan);
 }
 
+// Whether every pair keeps the separation while all move from their points to their cells'
+// centres at once (the plan's first and last steps).
+bool snapsApart(const TeamGrid& grid, const std::vector<Eigen::Vector3d>& points,
+                const std::vector<Cell>& cells, const SeparationEllipsoid& e, double separation) {
+  for (std::size_t j = 1; j < points.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i)
+      if (sweptEllipsoidDistance(e, points[i], grid.centre(cells[i]), points[j],
+                                 grid.centre(cells[j])) < separation)
+        return false;
+  return true;
+}
+
 // The team grid's instance, or false when some start or goal shares a cell or lies in a blocked
-// one (then the dense roadmap is tried).
-bool coarseInstance(const TeamGrid& grid, const std::vector<TeamAgent>& agents,
-                    MapfInstance& instance) {
+// one, or the moves onto the cells come closer than the separation (then the dense roadmap is
+// tried).
+bool coarseInstance(const TeamGrid& grid, const TeamPlanningProblem& problem,
+                    const SeparationEllipsoid& e, MapfInstance& instance) {
   try {
-    instance = snappedInstance(grid, agents);
-    return true;
+    instance = snappedInstance(grid, problem.agents);
   } catch (const InputError&) {
     return false;
   }
+  std::vector<Eigen::Vector3d> starts, goals;
+  for (const auto& a : problem.agents) {
+    starts.push_back(a.start);
+    goals.push_back(a.goal);
+  }
+  return snapsApart(grid, starts, instance.starts, e, problem.min_separation) &&
+         snapsApart(grid, goals, instance.goals, e, problem.min_separation);
 }
 
 }  // namespace
@@ -245,7 +265,7 @@ TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& plan
                                 Eigen::Vector3d(e.radius, e.radius, e.height);
   const TeamGrid grid = TeamGrid::over(*problem.world, pitch, inflation);
   MapfInstance instance;
-  if (!coarseInstance(grid, agents, instance)) {
+  if (!coarseInstance(grid, problem, e, instance)) {
     planDense(problem, e, inflation, deadline, say, plan);
     plan.time_ms = msSince(start);
     return plan;

@@ -117,7 +117,10 @@ TEST(QuadrotorTeamRun, ADenseSwapAtHalfAMetreFliesWithoutContactOrDownwashViolat
     EXPECT_EQ(test::jsonNumber(metrics, "uav_contacts"), 0) << controller;
     EXPECT_EQ(test::jsonNumber(metrics, "downwash_violations"), 0) << controller;
     EXPECT_GE(test::jsonNumber(metrics, "min_uav_separation_m"), 1.0) << controller;
-    EXPECT_NE(metrics.find("dense_roadmap_refinement"), std::string::npos) << controller;
+    // indi keeps the default 1.5 ellipsoids: starts 0.5 m apart share the team grid's 0.51 m
+    // cells, so the dense roadmap plans them. cascade's margin (1.78) widens the cells to 0.60 m,
+    // where these starts happen to land in distinct cells.
+    EXPECT_EQ(metrics.find("dense_roadmap_refinement") != std::string::npos, controller.empty());
   }
 }
 
