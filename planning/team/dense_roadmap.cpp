@@ -84,14 +84,16 @@ std::optional<int> commonLayer(const TeamGrid& grid, const std::vector<Eigen::Ve
 bool tryLattice(const World& world, const std::vector<Eigen::Vector3d>& starts,
                 const std::vector<Eigen::Vector3d>& goals, const SeparationEllipsoid& e,
                 double separation, double inflation, int k, const Eigen::Vector3d* anchor,
-                DenseRoadmap& out, Failure& failure) {
+                bool allow_planar, DenseRoadmap& out, Failure& failure) {
   const Eigen::Vector3d pitch =
       separation * kPitchRoundOff / k * Eigen::Vector3d(e.radius, e.radius, e.height);
   DenseRoadmap r{anchor ? TeamGrid::over(world, pitch, inflation, *anchor)
                         : TeamGrid::over(world, pitch, inflation),
                  MapfGraph(), {}, {}, {}, k};
   OccupancyGrid cells = r.grid.occupancy();
-  if (const auto layer = commonLayer(r.grid, starts, goals))
+  const auto layer = allow_planar ? commonLayer(r.grid, starts, goals) : std::nullopt;
+  r.planar = layer.has_value();
+  if (layer)
     for (int z = 0; z < cells.nz(); ++z)
       for (int y = 0; z != *layer && y < cells.ny(); ++y)
         for (int x = 0; x < cells.nx(); ++x) cells.setBlocked(x, y, z, true);
@@ -111,7 +113,7 @@ bool tryLattice(const World& world, const std::vector<Eigen::Vector3d>& starts,
 DenseRoadmap denseRoadmap(const World& world, const std::vector<Eigen::Vector3d>& starts,
                           const std::vector<Eigen::Vector3d>& goals,
                           const SeparationEllipsoid& ellipsoid, double separation,
-                          double inflation) {
+                          double inflation, bool allow_planar) {
   requireApart(starts, "start", ellipsoid, separation);
   requireApart(goals, "goal", ellipsoid, separation);
   DenseRoadmap out;
@@ -119,7 +121,8 @@ DenseRoadmap denseRoadmap(const World& world, const std::vector<Eigen::Vector3d>
   for (int k = 1; k <= kFinestRefinement; ++k)
     for (const bool anchored : {true, false})
       if (tryLattice(world, starts, goals, ellipsoid, separation, inflation, k,
-                     anchored && !starts.empty() ? &starts.front() : nullptr, out, failure))
+                     anchored && !starts.empty() ? &starts.front() : nullptr, allow_planar,
+                     out, failure))
         return out;
   throw InputError("", failure.place, failure.problem);
 }

@@ -158,26 +158,10 @@ void smoothGrid(const TeamPlanningProblem& problem, const TeamGrid& grid, const 
 }
 
 
-// The dense stage: starts or goals the team grid cannot hold, planned on a finer roadmap with
-// ellipsoid conflicts (dense_roadmap.h, dense_team_search.h) whatever MAPF planner was named.
-void planDense(const TeamPlanningProblem& problem, const SeparationEllipsoid& e, double inflation,
-               const StopToken& deadline, const Say& say, TeamPlan& plan) {
-  std::vector<Eigen::Vector3d> starts, goals;
-  for (const auto& a : problem.agents) {
-    starts.push_back(a.start);
-    goals.push_back(a.goal);
-  }
-  const DenseRoadmap roadmap =
-      denseRoadmap(*problem.world, starts, goals, e, problem.min_separation, inflation);
-  const OccupancyGrid& cells = roadmap.grid.occupancy();
-  plan.counters["grid_cells"] = static_cast<double>(cells.cellCount());
-  plan.counters["blocked_cells"] = static_cast<double>(cells.blockedCount());
-  plan.counters["pitch_xy_m"] = roadmap.grid.pitch().x();
-  plan.counters["pitch_z_m"] = roadmap.grid.pitch().z();
-  plan.counters["dense_roadmap_refinement"] = roadmap.refinement;
-  say("team plan: " + std::to_string(starts.size()) + " agents closer than the team grid's cells: " +
-      "prioritised planning with ellipsoid conflicts on a roadmap of " +
-      std::to_string(roadmap.graph.vertexCount()) + " vertices");
+// One prioritised search on a dense roadmap within `limit`, its result checked independently:
+// every pair apart at every step and along every move, by all pairs.
+DenseTeamResult searchDense(const TeamPlanningProblem& problem, const SeparationEllipsoid& e,
+                            const DenseRoadmap& roadmap, const StopToken& limit) {
   DenseTeamQuery q;
   q.graph = &roadmap.graph;
   q.positions = &roadmap.positions;
@@ -186,20 +170,52 @@ void planDense(const TeamPlanningProblem& problem, const SeparationEllipsoid& e,
   q.separation = problem.min_separation;
   q.starts = roadmap.starts;
   q.goals = roadmap.goals;
-  q.deadline = &deadline;
-  const double search_start = deadline.elapsedMs();
+  q.deadline = &limit;
   DenseTeamResult d = planDenseTeam(q);
-  MapfResult r;
-  r.time_ms = deadline.elapsedMs() - search_start;
-  for (const auto& [k, v] : d.counters) plan.counters[k] = v;
-  plan.counters["mapf_ms"] = r.time_ms;
-  // The independent check: every pair apart at every step and along every move, by all pairs.
-  if (d.success && closestLockStepDistance(d.paths, roadmap.positions, e) < problem.min_separation)
-  {
+  if (d.success && closestLockStepDistance(d.paths, roadmap.positions, e) < problem.min_separation) {
     d.success = false;
     d.status = PlannerStatus::InvalidSolution;
     d.message = "a pair comes closer than the separation";
   }
+  return d;
+}
+
+// The dense stage: starts or goals the team grid cannot hold, planned on a finer roadmap with
+// ellipsoid conflicts (dense_roadmap.h, dense_team_search.h) whatever MAPF planner was named.
+// A planar team gets half the time in its plane, then every layer is opened.
+void planDense(const TeamPlanningProblem& problem, const SeparationEllipsoid& e, double inflation,
+               const StopToken& deadline, const Say& say, TeamPlan& plan) {
+  std::vector<Eigen::Vector3d> starts, goals;
+  for (const auto& a : problem.agents) {
+    starts.push_back(a.start);
+    goals.push_back(a.goal);
+  }
+  const double search_start = deadline.elapsedMs();
+  DenseRoadmap roadmap;
+  DenseTeamResult d;
+  for (const bool planar : {true, false}) {
+    roadmap = denseRoadmap(*problem.world, starts, goals, e, problem.min_separation, inflation,
+                           planar);
+    if (planar != roadmap.planar) continue;  // not a planar team: the open roadmap only
+    say("team plan: " + std::to_string(starts.size()) +
+        " agents closer than the team grid's cells: prioritised planning with ellipsoid "
+        "conflicts on a roadmap of " +
+        std::to_string(roadmap.graph.vertexCount()) + " vertices" + (planar ? " (one plane)" : ""));
+    const double left_s = problem.time_limit_s - deadline.elapsedMs() / 1000.0;
+    d = searchDense(problem, e, roadmap, StopToken(planar ? 0.5 * left_s : left_s, problem.stop));
+    if (d.success || deadline.expired()) break;
+  }
+  const OccupancyGrid& cells = roadmap.grid.occupancy();
+  plan.counters["grid_cells"] = static_cast<double>(cells.cellCount());
+  plan.counters["blocked_cells"] = static_cast<double>(cells.blockedCount());
+  plan.counters["pitch_xy_m"] = roadmap.grid.pitch().x();
+  plan.counters["pitch_z_m"] = roadmap.grid.pitch().z();
+  plan.counters["dense_roadmap_refinement"] = roadmap.refinement;
+  plan.counters["dense_roadmap_planar"] = roadmap.planar ? 1 : 0;
+  for (const auto& [k, v] : d.counters) plan.counters[k] = v;
+  MapfResult r;
+  r.time_ms = deadline.elapsedMs() - search_start;
+  plan.counters["mapf_ms"] = r.time_ms;
   if (!d.success) {
     plan.status = d.status;
     plan.message = "no team plan on the dense roadmap: " + d.message;
