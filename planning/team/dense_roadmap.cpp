@@ -35,8 +35,8 @@ void requireApart(const std::vector<Eigen::Vector3d>& points, const std::string&
       const double d = e.distance(points[i], points[j]);
       if (d < separation)
         throw InputError("", key(j, what),
-                         "is " + std::to_string(d) + " separation ellipsoids from " +
-                             key(i, what) + ", less than the " + std::to_string(separation) +
+                         "is " + std::to_string(d) + " separation ellipsoids from " + key(i, what) +
+                             ", less than the " + std::to_string(separation) +
                              " the team's plan keeps (planner.min_separation, grown by the "
                              "controller's tracking error); move them further apart");
     }
@@ -89,7 +89,11 @@ bool tryLattice(const World& world, const std::vector<Eigen::Vector3d>& starts,
       separation * kPitchRoundOff / k * Eigen::Vector3d(e.radius, e.radius, e.height);
   DenseRoadmap r{anchor ? TeamGrid::over(world, pitch, inflation, *anchor)
                         : TeamGrid::over(world, pitch, inflation),
-                 MapfGraph(), {}, {}, {}, k};
+                 MapfGraph(),
+                 {},
+                 {},
+                 {},
+                 k};
   OccupancyGrid cells = r.grid.occupancy();
   const auto layer = allow_planar ? commonLayer(r.grid, starts, goals) : std::nullopt;
   r.planar = layer.has_value();
@@ -112,8 +116,8 @@ bool tryLattice(const World& world, const std::vector<Eigen::Vector3d>& starts,
 
 DenseRoadmap denseRoadmap(const World& world, const std::vector<Eigen::Vector3d>& starts,
                           const std::vector<Eigen::Vector3d>& goals,
-                          const SeparationEllipsoid& ellipsoid, double separation,
-                          double inflation, bool allow_planar) {
+                          const SeparationEllipsoid& ellipsoid, double separation, double inflation,
+                          bool allow_planar) {
   requireApart(starts, "start", ellipsoid, separation);
   requireApart(goals, "goal", ellipsoid, separation);
   DenseRoadmap out;
@@ -121,8 +125,8 @@ DenseRoadmap denseRoadmap(const World& world, const std::vector<Eigen::Vector3d>
   for (int k = 1; k <= kFinestRefinement; ++k)
     for (const bool anchored : {true, false})
       if (tryLattice(world, starts, goals, ellipsoid, separation, inflation, k,
-                     anchored && !starts.empty() ? &starts.front() : nullptr, allow_planar,
-                     out, failure))
+                     anchored && !starts.empty() ? &starts.front() : nullptr, allow_planar, out,
+                     failure))
         return out;
   throw InputError("", failure.place, failure.problem);
 }

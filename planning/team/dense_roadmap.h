@@ -13,9 +13,10 @@
 //
 // A team whose starts and goals all lie at one height (as Crazyswarm's usually do) is planned in
 // that plane: every other layer of the lattice is blocked, so no vehicle flies through another's
-// downwash (allow_planar false: every layer open, for a team the plane cannot hold). Measured on the bundled 0.5 m swap with the layers open (1.5 ellipsoids, 0.9 m apart
-// vertically): a cf2 passing under another sagged 0.17 m and was pushed 0.21 m sideways (the
-// wake reaches far: sim/downwash.h), closing a horizontal pair to 0.91 ellipsoids.
+// downwash (allow_planar false: every layer open, for a team the plane cannot hold). Measured on
+// the bundled 0.5 m swap with the layers open (1.5 ellipsoids, 0.9 m apart vertically): a cf2
+// passing under another sagged 0.17 m and was pushed 0.21 m sideways (the wake reaches far:
+// sim/downwash.h), closing a horizontal pair to 0.91 ellipsoids.
 #include <Eigen/Core>
 #include <vector>
 
@@ -28,11 +29,11 @@ namespace cosim {
 
 struct DenseRoadmap {
   TeamGrid grid;
-  MapfGraph graph;                       // 6-connected over the free cells
+  MapfGraph graph;                         // 6-connected over the free cells
   std::vector<Eigen::Vector3d> positions;  // per vertex, its cell's centre
-  std::vector<int> starts, goals;        // per agent, a vertex
-  int refinement = 1;                    // k: the pitch is separation / k semi-axes
-  bool planar = false;                   // only the starts' and goals' layer is open
+  std::vector<int> starts, goals;          // per agent, a vertex
+  int refinement = 1;                      // k: the pitch is separation / k semi-axes
+  bool planar = false;                     // only the starts' and goals' layer is open
 };
 
 // Throws InputError (place "vehicles[i].start" / ".goal") when two starts or two goals are
@@ -40,7 +41,7 @@ struct DenseRoadmap {
 // fails on the finest).
 DenseRoadmap denseRoadmap(const World& world, const std::vector<Eigen::Vector3d>& starts,
                           const std::vector<Eigen::Vector3d>& goals,
-                          const SeparationEllipsoid& ellipsoid, double separation,
-                          double inflation, bool allow_planar = true);
+                          const SeparationEllipsoid& ellipsoid, double separation, double inflation,
+                          bool allow_planar = true);
 
 }  // namespace cosim

@@ -138,15 +138,15 @@ DenseTeamResult planDenseTeam(const DenseTeamQuery& q) {
     }
     const bool expired = q.deadline && q.deadline->expired();
     if (outcome == Outcome::OutOfBudget || expired || restarts >= n) {
-      out.status = expired ? expiredStatus(*q.deadline)
+      out.status = expired                           ? expiredStatus(*q.deadline)
                    : outcome == Outcome::OutOfBudget ? PlannerStatus::LimitReached
                                                      : PlannerStatus::NoSolution;
-      out.message = (expired ? std::string("time limit reached")
-                             : outcome == Outcome::OutOfBudget
-                                 ? "the search's expansion limit reached"
-                                 : "no route around the higher-priority agents") +
-                    " while planning agent " + std::to_string(failed) + " (" +
-                    std::to_string(restarts) + " reorderings)";
+      out.message =
+          (expired                           ? std::string("time limit reached")
+           : outcome == Outcome::OutOfBudget ? "the search's expansion limit reached"
+                                             : "no route around the higher-priority agents") +
+          " while planning agent " + std::to_string(failed) + " (" + std::to_string(restarts) +
+          " reorderings)";
       break;
     }
     order.erase(std::find(order.begin(), order.end(), failed));
@@ -169,9 +169,9 @@ double closestLockStepDistance(const std::vector<std::vector<int>>& paths,
   for (std::size_t i = 0; i < paths.size(); ++i)
     for (std::size_t j = i + 1; j < paths.size(); ++j)
       for (std::size_t t = 0; t < std::max<std::size_t>(length, 2) - 1; ++t)
-        closest = std::min(closest, sweptEllipsoidDistance(ellipsoid, at(paths[i], t),
-                                                           at(paths[i], t + 1), at(paths[j], t),
-                                                           at(paths[j], t + 1)));
+        closest = std::min(closest,
+                           sweptEllipsoidDistance(ellipsoid, at(paths[i], t), at(paths[i], t + 1),
+                                                  at(paths[j], t), at(paths[j], t + 1)));
   return closest;
 }
 

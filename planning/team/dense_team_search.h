@@ -10,11 +10,10 @@
 //
 // Every pair of the result keeps the separation at every step and along every move flown in
 // lock-step (linear in a common progress), the property the continuous-time smoothing relies on.
+#include <Eigen/Core>
 #include <map>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "core/stop_token.h"
 #include "planning/mapf/mapf_graph.h"
@@ -38,7 +37,7 @@ struct DenseTeamResult {
   bool success = false;
   PlannerStatus status = PlannerStatus::Unknown;
   std::string message;
-  std::vector<std::vector<int>> paths;  // per agent, its vertex at every step (same length)
+  std::vector<std::vector<int>> paths;     // per agent, its vertex at every step (same length)
   std::map<std::string, double> counters;  // expansions, restarts
 };
 

@@ -26,8 +26,7 @@ EllipsoidReservations::EllipsoidReservations(const std::vector<Eigen::Vector3d>&
   bucket_.reserve(positions.size());
   for (const auto& p : positions) {
     const Eigen::Vector3d q = scale.cwiseProduct(p - low) / side;
-    bucket_.emplace_back(static_cast<int>(q.x()), static_cast<int>(q.y()),
-                         static_cast<int>(q.z()));
+    bucket_.emplace_back(static_cast<int>(q.x()), static_cast<int>(q.y()), static_cast<int>(q.z()));
   }
 }
 

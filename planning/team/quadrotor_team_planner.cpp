@@ -157,7 +157,6 @@ void smoothGrid(const TeamPlanningProblem& problem, const TeamGrid& grid, const 
   plan.status = r.status;
 }
 
-
 // One prioritised search on a dense roadmap within `limit`, its result checked independently:
 // every pair apart at every step and along every move, by all pairs.
 DenseTeamResult searchDense(const TeamPlanningProblem& problem, const SeparationEllipsoid& e,
@@ -172,7 +171,8 @@ DenseTeamResult searchDense(const TeamPlanningProblem& problem, const Separation
   q.goals = roadmap.goals;
   q.deadline = &limit;
   DenseTeamResult d = planDenseTeam(q);
-  if (d.success && closestLockStepDistance(d.paths, roadmap.positions, e) < problem.min_separation) {
+  if (d.success &&
+      closestLockStepDistance(d.paths, roadmap.positions, e) < problem.min_separation) {
     d.success = false;
     d.status = PlannerStatus::InvalidSolution;
     d.message = "a pair comes closer than the separation";
@@ -194,8 +194,8 @@ void planDense(const TeamPlanningProblem& problem, const SeparationEllipsoid& e,
   DenseRoadmap roadmap;
   DenseTeamResult d;
   for (const bool planar : {true, false}) {
-    roadmap = denseRoadmap(*problem.world, starts, goals, e, problem.min_separation, inflation,
-                           planar);
+    roadmap =
+        denseRoadmap(*problem.world, starts, goals, e, problem.min_separation, inflation, planar);
     if (planar != roadmap.planar) continue;  // not a planar team: the open roadmap only
     say("team plan: " + std::to_string(starts.size()) +
         " agents closer than the team grid's cells: prioritised planning with ellipsoid "

@@ -82,10 +82,10 @@ TEST(EllipsoidReservations, AReservedPathBlocksTheMovesAndTheGoalsItComesCloseTo
   EllipsoidReservations r(p, kCf2, 1.4, Vector3d(0.18, 0.18, 0.45));
   r.reserve({0, 1, 2});  // moves right for two steps, rests at vertex 2 (0.36 m) from step 2
   EXPECT_EQ(r.staticFrom(), 2);
-  EXPECT_FALSE(r.moveConflicts(3, 3, 0));  // 0.54 m while it goes 0 -> 0.18: 2.25 to 1.5
-  EXPECT_TRUE(r.moveConflicts(2, 2, 1));   // it arrives where another stands
-  EXPECT_TRUE(r.moveConflicts(4, 3, 2));   // towards the resting one: 1.5 down to 0.75
-  EXPECT_TRUE(r.moveConflicts(3, 3, 50));  // beside the resting one (0.75) long after
+  EXPECT_FALSE(r.moveConflicts(3, 3, 0));   // 0.54 m while it goes 0 -> 0.18: 2.25 to 1.5
+  EXPECT_TRUE(r.moveConflicts(2, 2, 1));    // it arrives where another stands
+  EXPECT_TRUE(r.moveConflicts(4, 3, 2));    // towards the resting one: 1.5 down to 0.75
+  EXPECT_TRUE(r.moveConflicts(3, 3, 50));   // beside the resting one (0.75) long after
   EXPECT_FALSE(r.moveConflicts(4, 4, 50));  // 1.5 from it
   EXPECT_EQ(r.lastConflictStanding(4), -1);
   EXPECT_EQ(r.lastConflictStanding(3), EllipsoidReservations::kForever);
@@ -111,8 +111,7 @@ TEST(DenseRoadmap, StartsHalfAMetreApartLandOnDistinctVerticesOfTheCoarsestLatti
     for (std::size_t i = 0; i < j; ++i)
       EXPECT_GE(kCf2.distance(r.positions[r.starts[i]], r.positions[r.starts[j]]), 1.5);
   // All at z = 1: only that layer is open.
-  for (int v = 0; v < r.graph.vertexCount(); ++v)
-    EXPECT_NEAR(r.positions[v].z(), 1.0, 1e-9);
+  for (int v = 0; v < r.graph.vertexCount(); ++v) EXPECT_NEAR(r.positions[v].z(), 1.0, 1e-9);
 }
 
 TEST(DenseRoadmap, StartsCloserThanTheSeparationAreBadInputNamingTheLaterVehicle) {
