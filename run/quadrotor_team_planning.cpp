@@ -3,6 +3,7 @@
 #include "core/input_error.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/team/quadrotor_team_planner.h"
+#include "run/team_tracking_margin.h"
 
 namespace cosim {
 
@@ -79,7 +80,8 @@ QuadrotorTeamFlight planQuadrotorTeamFlight(const Scenario& s, const WorldModel&
   TeamPlanningProblem problem;
   problem.world = &s.world;
   problem.agents = teamAgents(s, world, vehicles);
-  problem.min_separation = settings.min_separation;
+  // Grown by what the controller's tracking error takes off in flight.
+  problem.min_separation = teamSeparationFor(s.controller_name, settings.min_separation);
   problem.max_speed = t.getDouble("max_speed", kTeamMaxSpeed, 0.01, 100.0);
   problem.max_acceleration = t.getDouble("max_acceleration", kTeamMaxAcceleration, 0.01, 100.0);
   t.requireAllUsed("trajectory of a quadrotor team (max_speed, max_acceleration)");
@@ -103,7 +105,7 @@ QuadrotorTeamFlight planQuadrotorTeamFlight(const Scenario& s, const WorldModel&
   }
   std::map<std::string, std::string> params = p.effective();
   params["margin"] = std::to_string(s.planner_margin);
-  params["min_separation"] = std::to_string(settings.min_separation);
+  params["min_separation"] = std::to_string(problem.min_separation);
   if (s.planner_separation) {
     params["separation.radius"] = std::to_string(s.planner_separation->radius);
     params["separation.height"] = std::to_string(s.planner_separation->height);

@@ -8,6 +8,9 @@
 
 #include "core/input_error.h"
 #include "planning/mapf/solution_validator.h"
+#include "planning/team/dense_roadmap.h"
+#include "planning/team/dense_team_search.h"
+#include "planning/team/ellipsoid_conflict.h"
 #include "planning/team/team_grid.h"
 
 namespace cosim {
@@ -154,6 +157,112 @@ void smoothGrid(const TeamPlanningProblem& problem, const TeamGrid& grid, const 
   plan.status = r.status;
 }
 
+// One prioritised search on a dense roadmap within `limit`, its result checked independently:
+// every pair apart at every step and along every move, by all pairs.
+DenseTeamResult searchDense(const TeamPlanningProblem& problem, const SeparationEllipsoid& e,
+                            const DenseRoadmap& roadmap, const StopToken& limit) {
+  DenseTeamQuery q;
+  q.graph = &roadmap.graph;
+  q.positions = &roadmap.positions;
+  q.pitch = roadmap.grid.pitch();
+  q.ellipsoid = e;
+  q.separation = problem.min_separation;
+  q.starts = roadmap.starts;
+  q.goals = roadmap.goals;
+  q.deadline = &limit;
+  DenseTeamResult d = planDenseTeam(q);
+  if (d.success &&
+      closestLockStepDistance(d.paths, roadmap.positions, e) < problem.min_separation) {
+    d.success = false;
+    d.status = PlannerStatus::InvalidSolution;
+    d.message = "a pair comes closer than the separation";
+  }
+  return d;
+}
+
+// The dense stage: starts or goals the team grid cannot hold, planned on a finer roadmap with
+// ellipsoid conflicts (dense_roadmap.h, dense_team_search.h) whatever MAPF planner was named.
+// A planar team gets half the time in its plane, then every layer is opened.
+void planDense(const TeamPlanningProblem& problem, const SeparationEllipsoid& e, double inflation,
+               const StopToken& deadline, const Say& say, TeamPlan& plan) {
+  std::vector<Eigen::Vector3d> starts, goals;
+  for (const auto& a : problem.agents) {
+    starts.push_back(a.start);
+    goals.push_back(a.goal);
+  }
+  const double search_start = deadline.elapsedMs();
+  DenseRoadmap roadmap;
+  DenseTeamResult d;
+  for (const bool planar : {true, false}) {
+    roadmap =
+        denseRoadmap(*problem.world, starts, goals, e, problem.min_separation, inflation, planar);
+    if (planar != roadmap.planar) continue;  // not a planar team: the open roadmap only
+    say("team plan: " + std::to_string(starts.size()) +
+        " agents closer than the team grid's cells: prioritised planning with ellipsoid "
+        "conflicts on a roadmap of " +
+        std::to_string(roadmap.graph.vertexCount()) + " vertices" + (planar ? " (one plane)" : ""));
+    const double left_s = problem.time_limit_s - deadline.elapsedMs() / 1000.0;
+    d = searchDense(problem, e, roadmap, StopToken(planar ? 0.5 * left_s : left_s, problem.stop));
+    if (d.success || deadline.expired()) break;
+  }
+  const OccupancyGrid& cells = roadmap.grid.occupancy();
+  plan.counters["grid_cells"] = static_cast<double>(cells.cellCount());
+  plan.counters["blocked_cells"] = static_cast<double>(cells.blockedCount());
+  plan.counters["pitch_xy_m"] = roadmap.grid.pitch().x();
+  plan.counters["pitch_z_m"] = roadmap.grid.pitch().z();
+  plan.counters["dense_roadmap_refinement"] = roadmap.refinement;
+  plan.counters["dense_roadmap_planar"] = roadmap.planar ? 1 : 0;
+  for (const auto& [k, v] : d.counters) plan.counters[k] = v;
+  MapfResult r;
+  r.time_ms = deadline.elapsedMs() - search_start;
+  plan.counters["mapf_ms"] = r.time_ms;
+  if (!d.success) {
+    plan.status = d.status;
+    plan.message = "no team plan on the dense roadmap: " + d.message;
+    return;
+  }
+  for (const auto& p : d.paths) {
+    r.paths.emplace_back();
+    for (const int v : p) r.paths.back().push_back(roadmap.graph.cellOf(v));
+  }
+  r.success = true;
+  r.status = d.status;
+  plan.counters["sum_of_costs"] = static_cast<double>(sumOfCosts(r.paths));
+  plan.counters["makespan"] = makespan(r.paths);
+  smoothGrid(problem, roadmap.grid, r, deadline, say, plan);
+}
+
+// Whether every pair keeps the separation while all move from their points to their cells'
+// centres at once (the plan's first and last steps).
+bool snapsApart(const TeamGrid& grid, const std::vector<Eigen::Vector3d>& points,
+                const std::vector<Cell>& cells, const SeparationEllipsoid& e, double separation) {
+  for (std::size_t j = 1; j < points.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i)
+      if (sweptEllipsoidDistance(e, points[i], grid.centre(cells[i]), points[j],
+                                 grid.centre(cells[j])) < separation)
+        return false;
+  return true;
+}
+
+// The team grid's instance, or false when some start or goal shares a cell or lies in a blocked
+// one, or the moves onto the cells come closer than the separation (then the dense roadmap is
+// tried).
+bool coarseInstance(const TeamGrid& grid, const TeamPlanningProblem& problem,
+                    const SeparationEllipsoid& e, MapfInstance& instance) {
+  try {
+    instance = snappedInstance(grid, problem.agents);
+  } catch (const InputError&) {
+    return false;
+  }
+  std::vector<Eigen::Vector3d> starts, goals;
+  for (const auto& a : problem.agents) {
+    starts.push_back(a.start);
+    goals.push_back(a.goal);
+  }
+  return snapsApart(grid, starts, instance.starts, e, problem.min_separation) &&
+         snapsApart(grid, goals, instance.goals, e, problem.min_separation);
+}
+
 }  // namespace
 
 TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& planner) {
@@ -171,7 +280,12 @@ TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& plan
   const Eigen::Vector3d pitch = std::sqrt(2.0) * problem.min_separation * kPitchRoundOff *
                                 Eigen::Vector3d(e.radius, e.radius, e.height);
   const TeamGrid grid = TeamGrid::over(*problem.world, pitch, inflation);
-  const MapfInstance instance = snappedInstance(grid, agents);
+  MapfInstance instance;
+  if (!coarseInstance(grid, problem, e, instance)) {
+    planDense(problem, e, inflation, deadline, say, plan);
+    plan.time_ms = msSince(start);
+    return plan;
+  }
   plan.counters["grid_cells"] = static_cast<double>(instance.grid.cellCount());
   plan.counters["blocked_cells"] = static_cast<double>(instance.grid.blockedCount());
   plan.counters["pitch_xy_m"] = pitch.x();

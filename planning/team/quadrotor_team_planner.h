@@ -4,7 +4,10 @@
 // the separation ellipsoid (team_grid.h), starts and goals snapped to it, one MAPF solution on it
 // from a team planner (planning/mapf: lacam or pibt on a 3D grid), and each agent's cell sequence
 // refined into a minimum-snap trajectory that keeps the separation and the clearance in
-// continuous time (team_trajectories.h).
+// continuous time (team_trajectories.h). Starts or goals that the grid cannot hold (two in one
+// cell, one in a blocked cell, or moves onto the cells closer than the separation) are planned
+// on a roadmap finer than the ellipsoid with ellipsoid conflicts instead (dense_roadmap.h,
+// dense_team_search.h), then smoothed the same way.
 //
 // Every agent first moves from its start to its start cell's centre (one step, all together),
 // then follows the plan, waits at its goal cell's centre until the last one has arrived, and moves
@@ -64,8 +67,8 @@ struct TeamPlan {
 // time, resp. its square, for the 7th-degree rest-to-rest polynomial).
 double teamStepDuration(const Eigen::Vector3d& pitch, double max_speed, double max_acceleration);
 
-// Throws InputError (place "vehicles[i].start" / ".goal", file left empty) when a start or goal
-// lies in a blocked cell or outside the grid, or shares its cell with another agent's.
+// Throws InputError (place "vehicles[i].start" / ".goal", file left empty) when two starts or
+// goals are closer than min_separation, or no dense roadmap holds them (dense_roadmap.h).
 TeamPlan planQuadrotorTeam(const TeamPlanningProblem& problem, MapfPlanner& planner);
 
 }  // namespace cosim

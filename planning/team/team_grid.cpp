@@ -32,6 +32,25 @@ TeamGrid TeamGrid::over(const World& world, const Eigen::Vector3d& pitch, double
   const Eigen::Vector3d extent = world.bounds_max - world.bounds_min;
   Eigen::Vector3i n;
   for (int a = 0; a < 3; ++a) n[a] = static_cast<int>(std::floor(extent[a] / pitch[a]));
+  return build(world, pitch, inflation,
+               world.bounds_min + 0.5 * (extent - pitch.cwiseProduct(n.cast<double>())), n);
+}
+
+TeamGrid TeamGrid::over(const World& world, const Eigen::Vector3d& pitch, double inflation,
+                        const Eigen::Vector3d& anchor) {
+  Eigen::Vector3d origin;
+  Eigen::Vector3i n;
+  for (int a = 0; a < 3; ++a) {
+    // Whole cells below the anchor's, then as many as fit above.
+    const double below = std::floor((anchor[a] - world.bounds_min[a]) / pitch[a] - 0.5);
+    origin[a] = anchor[a] - (below + 0.5) * pitch[a];
+    n[a] = static_cast<int>(std::floor((world.bounds_max[a] - origin[a]) / pitch[a]));
+  }
+  return build(world, pitch, inflation, origin, n);
+}
+
+TeamGrid TeamGrid::build(const World& world, const Eigen::Vector3d& pitch, double inflation,
+                         const Eigen::Vector3d& origin, const Eigen::Vector3i& n) {
   if ((n.array() < 1).any())
     throw InputError("", "planner.separation",
                      "the world's bounds are smaller than one cell of the team's grid (pitch " +
@@ -43,7 +62,7 @@ TeamGrid TeamGrid::over(const World& world, const Eigen::Vector3d& pitch, double
                          " cells (a larger separation, or smaller bounds)");
   TeamGrid g;
   g.pitch_ = pitch;
-  g.origin_ = world.bounds_min + 0.5 * (extent - pitch.cwiseProduct(n.cast<double>()));
+  g.origin_ = origin;
   g.occupancy_ = OccupancyGrid(n.x(), n.y(), n.z());
   for (int z = 0; z < n.z(); ++z)
     for (int y = 0; y < n.y(); ++y)

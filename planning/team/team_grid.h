@@ -22,6 +22,9 @@ class TeamGrid {
   // Throws InputError (place "planner.separation") if the world's bounds hold no cell or the grid
   // exceeds the MAPF planners' cell limit.
   static TeamGrid over(const World& world, const Eigen::Vector3d& pitch, double inflation);
+  // The same with `anchor` at a cell's centre (the grid then starts within a cell of the bounds).
+  static TeamGrid over(const World& world, const Eigen::Vector3d& pitch, double inflation,
+                       const Eigen::Vector3d& anchor);
 
   // The occupancy in cell units (cell size 1, origin 0): what a MapfInstance holds.
   const OccupancyGrid& occupancy() const { return occupancy_; }
@@ -33,6 +36,9 @@ class TeamGrid {
   Cell cellOf(const Eigen::Vector3d& p) const;
 
  private:
+  static TeamGrid build(const World& world, const Eigen::Vector3d& pitch, double inflation,
+                        const Eigen::Vector3d& origin, const Eigen::Vector3i& n);
+
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();  // the grid is centred in the bounds
   Eigen::Vector3d pitch_ = Eigen::Vector3d::Ones();
   OccupancyGrid occupancy_;
