@@ -1,0 +1,40 @@
+#pragma once
+// A second thread for the simulation loop (sim/simulation_loop.h): it runs one job while the
+// calling thread runs another, and wait() returns once the job is done. Made for jobs of tens of
+// microseconds to milliseconds, handed over hundreds of times a second: both sides spin briefly
+// before they sleep, so a hand-over costs about a microsecond when both threads have a core,
+// and nothing burns a core for long when they do not.
+#include <atomic>
+#include <condition_variable>
+#include <functional>
+#include <mutex>
+#include <thread>
+
+namespace cosim {
+
+class StepWorker {
+ public:
+  StepWorker();
+  ~StepWorker();
+  StepWorker(const StepWorker&) = delete;
+  StepWorker& operator=(const StepWorker&) = delete;
+
+  // Starts `job` on the second thread; the previous job must have been waited for.
+  void start(std::function<void()> job);
+  // Returns once the job given to start() has finished (at once if none is running). An
+  // exception the job threw is rethrown here.
+  void wait();
+
+ private:
+  void serve();
+
+  std::function<void()> job_;
+  std::exception_ptr error_;
+  std::atomic<int> state_{0};  // 0 idle, 1 job posted, 2 job done, 3 stop
+  std::mutex mutex_;
+  std::condition_variable wake_;  // the worker waits here for a job or the stop
+  std::condition_variable done_;  // the caller waits here for the job's end
+  std::thread thread_;
+};
+
+}  // namespace cosim
