@@ -30,7 +30,7 @@ StepWorker::~StepWorker() {
   wait();
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    state_.store(3, std::memory_order_release);
+    state_.store(kStop, std::memory_order_release);
   }
   wake_.notify_one();
   thread_.join();
@@ -40,18 +40,24 @@ void StepWorker::start(std::function<void()> job) {
   job_ = std::move(job);
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    state_.store(1, std::memory_order_release);
+    state_.store(kPosted, std::memory_order_release);
   }
   wake_.notify_one();
 }
 
 void StepWorker::wait() {
-  if (state_.load(std::memory_order_acquire) == 0) return;
-  if (spinWhile(state_, [](int s) { return s == 1; }) == 1) {
-    std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [this] { return state_.load(std::memory_order_acquire) != 1; });
+  int expected = kPosted;
+  if (state_.compare_exchange_strong(expected, kIdle, std::memory_order_acq_rel)) {
+    job_();  // the second thread has not begun it (no core for it): the caller runs it
+    return;
   }
-  state_.store(0, std::memory_order_release);
+  if (expected == kIdle) return;
+  const auto busy = [](int s) { return s == kRunning; };
+  if (busy(spinWhile(state_, busy))) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [this] { return state_.load(std::memory_order_acquire) == kDone; });
+  }
+  state_.store(kIdle, std::memory_order_release);
   if (error_) {
     std::exception_ptr e = error_;
     error_ = nullptr;
@@ -60,17 +66,17 @@ void StepWorker::wait() {
 }
 
 void StepWorker::serve() {
+  const auto idle = [](int s) { return s != kPosted && s != kStop; };
   for (;;) {
-    int s = spinWhile(state_, [](int now) { return now != 1 && now != 3; });
-    if (s != 1 && s != 3) {
+    if (idle(spinWhile(state_, idle))) {
       std::unique_lock<std::mutex> lock(mutex_);
-      wake_.wait(lock, [this] {
-        const int now = state_.load(std::memory_order_acquire);
-        return now == 1 || now == 3;
-      });
-      s = state_.load(std::memory_order_acquire);
+      wake_.wait(lock, [&] { return !idle(state_.load(std::memory_order_acquire)); });
     }
-    if (s == 3) return;
+    int s = kPosted;
+    if (!state_.compare_exchange_strong(s, kRunning, std::memory_order_acq_rel)) {
+      if (s == kStop) return;
+      continue;  // the caller took the job
+    }
     try {
       job_();
     } catch (...) {
@@ -78,7 +84,7 @@ void StepWorker::serve() {
     }
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      state_.store(2, std::memory_order_release);
+      state_.store(kDone, std::memory_order_release);
     }
     done_.notify_one();
   }

@@ -21,7 +21,8 @@ class StepWorker {
 
   // Starts `job` on the second thread; the previous job must have been waited for.
   void start(std::function<void()> job);
-  // Returns once the job given to start() has finished (at once if none is running). An
+  // Returns once the job given to start() has finished (at once if none was started). If the
+  // second thread has not begun the job yet (it had no core), the caller runs it itself. An
   // exception the job threw is rethrown here.
   void wait();
 
@@ -30,7 +31,8 @@ class StepWorker {
 
   std::function<void()> job_;
   std::exception_ptr error_;
-  std::atomic<int> state_{0};  // 0 idle, 1 job posted, 2 job done, 3 stop
+  enum : int { kIdle, kPosted, kRunning, kDone, kStop };
+  std::atomic<int> state_{kIdle};
   std::mutex mutex_;
   std::condition_variable wake_;  // the worker waits here for a job or the stop
   std::condition_variable done_;  // the caller waits here for the job's end
