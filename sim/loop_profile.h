@@ -3,6 +3,7 @@
 // SimulationOptions::profile points at one): the engine, our own per-step work, and MuJoCo's own
 // split of the engine's time. `cosim bench --section team_scale` prints it.
 #include <mujoco/mujoco.h>
+#include <time.h>
 
 #include <algorithm>
 
@@ -11,6 +12,7 @@ namespace cosim {
 struct LoopProfile {
   // Wall seconds, summed over the run.
   double wall = 0.0;         // the loop, from its first control step to its end
+  double cpu = 0.0;          // CPU time of the loop's own thread over the same steps
   double engine = 0.0;       // mj_step (or mj_step1 and mj_step2), on the loop's thread
   double controllers = 0.0;  // every vehicle's estimator, reference, controller and log sample
   double forces = 0.0;       // rotors, air (sim/aerodynamics.h), drive servos
@@ -25,6 +27,14 @@ struct LoopProfile {
   bool overlapped = false;
   // MuJoCo's own timers (mjData::timer durations, ms), when mjcb_time was set during the run.
   double mujoco_ms[mjNTIMER] = {};
+
+  // CPU seconds of the calling thread (CLOCK_THREAD_CPUTIME_ID): time the other processes of a
+  // busy machine take does not count.
+  static double threadCpu() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return t.tv_sec + 1e-9 * t.tv_nsec;
+  }
 
   double logging() const {
     const long unlogged = control_steps - logged_steps;

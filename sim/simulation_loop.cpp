@@ -124,6 +124,7 @@ bool SimulationLoop::stepControl() {
   if (done_) return false;
   LoopProfile* profile = options_.profile;
   const double t0 = profile ? seconds() : 0.0;
+  const double cpu0 = profile ? LoopProfile::threadCpu() : 0.0;
   const char* reason = nullptr;
   const long last =
       std::min(physics_.stepsTaken() + physics_.stepsPerControl(), physics_.maxSteps());
@@ -135,7 +136,10 @@ bool SimulationLoop::stepControl() {
     reason = control();
     while (!reason && physics_.stepsTaken() < last) reason = physicsStep();
   }
-  if (profile) profile->wall += seconds() - t0;
+  if (profile) {
+    profile->wall += seconds() - t0;
+    profile->cpu += LoopProfile::threadCpu() - cpu0;
+  }
   if (reason) return end(reason);
   if (physics_.stepsTaken() >= physics_.maxSteps()) return end("max_time");
   return true;
