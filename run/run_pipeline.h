@@ -39,16 +39,13 @@ struct RunRequest {
   // it first): the robots drive it instead of planning again. It must solve the run's own team
   // instance (same grid cells, starts and goals); the independent validator checks that it does.
   const MapfResult* given_team_plan = nullptr;
-  // The simulation loop's threads: 0 chooses (two for a team of kSecondThreadTeamSize vehicles
-  // or more on a machine with two cores or more), 1 or 2 (sim/simulation_loop.h,
-  // SimulationOptions::second_thread; the numbers are the same either way).
-  int loop_threads = 0;
+  // The simulation loop's threads: 1, or 2 to run the controllers and forces on a second thread
+  // during the engine's position stage (sim/simulation_loop.h, SimulationOptions::second_thread;
+  // the numbers are the same either way). One by default: on the 2 shared cores measured so far
+  // the second thread did not pay (docs/performance.md).
+  int loop_threads = 1;
   LoopProfile* profile = nullptr;  // where the loop's time went (sim/loop_profile.h), if given
 };
-
-// A team this large keeps a second core busy enough to pay for the hand-overs (each physics
-// step hands the controllers and forces over and back, a few microseconds).
-constexpr std::size_t kSecondThreadTeamSize = 50;
 
 struct RunSummary {
   int status = 0;                      // CONTRACT.md exit status: 0 ok, 1 task failed

@@ -14,9 +14,8 @@ namespace cosim {
 
 namespace {
 
-bool secondThread(const Scenario& s, const RunRequest& request) {
-  if (request.loop_threads > 0) return request.loop_threads >= 2;
-  return s.vehicles.size() >= kSecondThreadTeamSize && std::thread::hardware_concurrency() >= 2;
+bool secondThread(const RunRequest& request) {
+  return request.loop_threads >= 2 && std::thread::hardware_concurrency() >= 2;
 }
 
 // The log of a run whose vehicles had no plan to follow: who they were, where they were going.
@@ -37,7 +36,7 @@ RunLog fly(const Scenario& s, const WorldModel& world, RunPilots& pilots, const 
   FlightOptions options;
   options.settings = s.sim;
   options.interrupt = request.interrupt;
-  options.second_thread = secondThread(s, request);
+  options.second_thread = secondThread(request);
   options.profile = request.profile;
   return simulateFlight(world, s, pilots.quadrotors, options);
 }
@@ -49,7 +48,7 @@ GroundSimOptions groundOptions(const Scenario& s, RobotPlans& plans, const RunRe
   GroundSimOptions options;
   options.settings = s.sim;
   options.interrupt = request.interrupt;
-  options.second_thread = secondThread(s, request);
+  options.second_thread = secondThread(request);
   options.profile = request.profile;
   NavigationDriver* driver = plans.navigator.get();
   if (driver)
