@@ -79,6 +79,7 @@ void addBenchCommand(CLI::App& app, CommandContext& ctx) {
         std::printf("%s\n", r.name.c_str());
         for (const auto& f : r.figures)
           std::printf("  %-40s %14.4g %s\n", f.name.c_str(), f.value, f.unit.c_str());
+        if (!r.table.empty()) std::printf("%s", r.table.c_str());
         std::printf("  %s\n\n", r.note.c_str());
       }
     }

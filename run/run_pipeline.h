@@ -17,6 +17,7 @@
 #include "run/run_events.h"
 #include "run/scenario_planning.h"
 #include "sim/flight_metrics.h"
+#include "sim/loop_profile.h"
 #include "sim/run_log.h"
 #include "sim/scenario.h"
 
@@ -38,6 +39,12 @@ struct RunRequest {
   // it first): the robots drive it instead of planning again. It must solve the run's own team
   // instance (same grid cells, starts and goals); the independent validator checks that it does.
   const MapfResult* given_team_plan = nullptr;
+  // The simulation loop's threads: 1, or 2 to run the controllers and forces on a second thread
+  // during the engine's position stage (sim/simulation_loop.h, SimulationOptions::second_thread;
+  // the numbers are the same either way). One by default: on the 2 shared cores measured so far
+  // the second thread did not pay (docs/performance.md).
+  int loop_threads = 1;
+  LoopProfile* profile = nullptr;  // where the loop's time went (sim/loop_profile.h), if given
 };
 
 struct RunSummary {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "run/navigation_driver.h"
 #include "run/run_end.h"
@@ -12,6 +13,10 @@
 namespace cosim {
 
 namespace {
+
+bool secondThread(const RunRequest& request) {
+  return request.loop_threads >= 2 && std::thread::hardware_concurrency() >= 2;
+}
 
 // The log of a run whose vehicles had no plan to follow: who they were, where they were going.
 RunLog unplannedLog(const Scenario& s) {
@@ -31,6 +36,8 @@ RunLog fly(const Scenario& s, const WorldModel& world, RunPilots& pilots, const 
   FlightOptions options;
   options.settings = s.sim;
   options.interrupt = request.interrupt;
+  options.second_thread = secondThread(request);
+  options.profile = request.profile;
   return simulateFlight(world, s, pilots.quadrotors, options);
 }
 
@@ -41,6 +48,8 @@ GroundSimOptions groundOptions(const Scenario& s, RobotPlans& plans, const RunRe
   GroundSimOptions options;
   options.settings = s.sim;
   options.interrupt = request.interrupt;
+  options.second_thread = secondThread(request);
+  options.profile = request.profile;
   NavigationDriver* driver = plans.navigator.get();
   if (driver)
     options.obstacle_position = [driver](std::size_t i, double t) {

@@ -9,6 +9,8 @@ SimulationOptions flightSimulationOptions(const FlightOptions& options) {
   o.max_saturated_time = options.max_saturated_time;
   o.log_rate = 0.0;  // every control step: a flight's metrics and plots want the full rate
   o.interrupt = options.interrupt;
+  o.second_thread = options.second_thread;
+  o.profile = options.profile;
   return o;
 }
 

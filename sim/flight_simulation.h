@@ -19,6 +19,8 @@ struct FlightOptions {
   // A vehicle whose mixer stays saturated this long without a break cannot follow its reference
   // (absurd gains, too heavy, a reference beyond the airframe): the run ends as "saturated".
   double max_saturated_time = 2.0;  // s
+  bool second_thread = false;       // SimulationOptions::second_thread
+  LoopProfile* profile = nullptr;   // SimulationOptions::profile
 };
 
 // The loop's options for a flight: every control step logged, hold_after_arrival for the

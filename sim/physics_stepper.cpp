@@ -17,7 +17,8 @@ PhysicsStepper::PhysicsStepper(const WorldModel& world, const Scenario& scenario
       max_steps_(static_cast<long>(std::ceil(settings.max_time / m_->opt.timestep))),
       contacts_(m_, world, scenario),
       aerodynamics_(scenario.disturbances, world, scenario.sim.seed),
-      sensing_(!scenario.sensors.ideal()) {
+      sensing_(!scenario.sensors.ideal()),
+      ground_effect_(scenario.disturbances.ground_effect) {
   const auto& vehicles = world.vehicles();
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
     plants_.push_back(vehicles[v].ground
@@ -47,6 +48,12 @@ void PhysicsStepper::startHovering(mjData* d) {
 }
 
 const char* PhysicsStepper::step(mjData* d, RunLog& log) {
+  applyForces(d);
+  mj_step(m_, d);
+  return afterStep(d, log);
+}
+
+void PhysicsStepper::applyForces(mjData* d) {
   const double dt = m_->opt.timestep;
   for (auto& p : plants_)
     if (p) p->rotors().advance(dt);
@@ -63,7 +70,9 @@ const char* PhysicsStepper::step(mjData* d, RunLog& log) {
       d->qfrc_applied[s.dof] = drive_force_[v][i] = f;
     }
   }
-  mj_step(m_, d);
+}
+
+const char* PhysicsStepper::afterStep(mjData* d, RunLog& log) {
   ++steps_;
   contacts_.update(d, log);
   if (sensing_)

@@ -46,6 +46,16 @@ class PhysicsStepper {
   // One physics step. Returns the run's end_reason if the state can no longer be trusted
   // ("diverged", "unstable"; see sim/simulation_health.h), else nullptr.
   const char* step(mjData* d, RunLog& log);
+  // The same step in parts, for a loop that times them or overlaps them (sim/simulation_loop.h):
+  // applyForces, then the engine (mj_step, or mj_step1 then mj_step2), then afterStep.
+  // applyForces advances the rotors and writes the step's applied forces (rotors, air, drive
+  // servos) from qpos, qvel and the rotors only, so it may run while mj_step1 computes positions
+  // and velocities on another thread, unless forcesReadGeometry(). afterStep books contacts,
+  // samples the sensors and checks the state (step's return value).
+  void applyForces(mjData* d);
+  const char* afterStep(mjData* d, RunLog& log);
+  // The forces read positions MuJoCo computes (ground effect casts rays against the geoms).
+  bool forcesReadGeometry() const { return ground_effect_; }
   // Records in `log` the loop's wall time, the simulated time, the steps taken and MuJoCo's
   // warning count.
   void finish(const mjData* d, RunLog& log) const;
@@ -61,6 +71,7 @@ class PhysicsStepper {
   std::vector<std::unique_ptr<QuadrotorPlant>> plants_;  // nullptr for ground robots
   std::vector<QuadrotorPlant*> plant_pointers_;          // the same, as Aerodynamics wants them
   bool sensing_;                                         // any sensor to sample
+  bool ground_effect_;
   std::vector<std::array<double, 3>> drive_command_, drive_force_;  // per vehicle, per servo
   std::chrono::steady_clock::time_point wall_start_ = std::chrono::steady_clock::now();
   long steps_ = 0;

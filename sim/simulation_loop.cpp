@@ -1,6 +1,7 @@
 #include "sim/simulation_loop.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <utility>
@@ -23,6 +24,18 @@ std::vector<std::size_t> pilotIndices(const WorldModel& world, std::size_t robot
   if (robot_count != robots || quadrotor_count != quadrotors)
     throw std::invalid_argument("SimulationLoop: one pilot per ground robot and per quadrotor");
   return pilot;
+}
+
+double seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+// Adds the seconds since `start` to `total` (when profiling) and returns now.
+double lap(double start, double* total) {
+  const double now = seconds();
+  *total += now - start;
+  return now;
 }
 
 }  // namespace
@@ -64,6 +77,13 @@ SimulationLoop::SimulationLoop(const WorldModel& world, const Scenario& scenario
   beginVehicles(scenario, robots, quadrotors);
   states_.resize(robots.size());
   if (physics_.maxSteps() <= 0) end("max_time");
+  if (options_.second_thread && !physics_.forcesReadGeometry() && m->opt.integrator != mjINT_RK4) {
+    worker_ = std::make_unique<StepWorker>();
+    qpos_seen_.resize(m->nq);
+    view_ = *d;  // the arrays' addresses, which stay; qpos and time are set at every step
+    view_.qpos = qpos_seen_.data();
+  }
+  if (options_.profile) options_.profile->overlapped = worker_ != nullptr;
   physics_.startClock();
 }
 
@@ -102,26 +122,108 @@ void SimulationLoop::placeObstacles(double t) {
 
 bool SimulationLoop::stepControl() {
   if (done_) return false;
-  if (const char* reason = control()) return end(reason);
+  LoopProfile* profile = options_.profile;
+  const double t0 = profile ? seconds() : 0.0;
+  const double cpu0 = profile ? LoopProfile::threadCpu() : 0.0;
+  const char* reason = nullptr;
   const long last =
       std::min(physics_.stepsTaken() + physics_.stepsPerControl(), physics_.maxSteps());
-  while (physics_.stepsTaken() < last) {
-    placeObstacles(d_->time);
-    // (Wind, rotor drag and ground effect act on the quadrotors, also over the robots.)
-    if (const char* fault = physics_.step(d_.get(), log_)) return end(fault);
+  if (worker_) {
+    reason = prepare();
+    control_due_ = true;
+    while (!reason && physics_.stepsTaken() < last) reason = overlappedStep();
+  } else {
+    reason = control();
+    while (!reason && physics_.stepsTaken() < last) reason = physicsStep();
   }
+  if (profile) {
+    profile->wall += seconds() - t0;
+    profile->cpu += LoopProfile::threadCpu() - cpu0;
+  }
+  if (reason) return end(reason);
   if (physics_.stepsTaken() >= physics_.maxSteps()) return end("max_time");
   return true;
 }
 
+const char* SimulationLoop::physicsStep() {
+  placeObstacles(d_->time);
+  // (Wind, rotor drag and ground effect act on the quadrotors, also over the robots.)
+  LoopProfile* profile = options_.profile;
+  if (!profile) return physics_.step(d_.get(), log_);
+  double t = seconds();
+  physics_.applyForces(d_.get());
+  t = lap(t, &profile->forces);
+  mj_step(world_.model(), d_.get());
+  t = lap(t, &profile->engine);
+  const char* fault = physics_.afterStep(d_.get(), log_);
+  lap(t, &profile->after_step);
+  ++profile->physics_steps;
+  return fault;
+}
+
+// mj_step is mj_step1 (positions and velocities: kinematics, collisions, inertia, bias forces)
+// then mj_step2 (actuation, acceleration, constraints, integration). The controllers and the
+// step's forces read only qpos, qvel, qacc, time and their own state, and write only
+// qfrc_applied and their own state, which mj_step1 does not read: they run on the second thread
+// meanwhile. Of what they read, mj_step1 writes only qpos (its kinematics normalise the
+// quaternions in place): the second thread reads a copy taken before (view_). mj_step1 begins
+// with MuJoCo's bad-state checks, which may reset the state; they run here first, so that
+// mj_step1 finds nothing to change.
+const char* SimulationLoop::overlappedStep() {
+  const mjModel* m = world_.model();
+  mjData* d = d_.get();
+  placeObstacles(d->time);
+  mj_checkPos(m, d);
+  mj_checkVel(m, d);
+  std::copy(d->qpos, d->qpos + m->nq, qpos_seen_.begin());
+  view_.time = d->time;
+  control_reason_ = nullptr;
+  worker_->start([this] { secondThreadJob(); });
+  LoopProfile* profile = options_.profile;
+  double t = profile ? seconds() : 0.0;
+  mj_step1(m, d);
+  if (profile) t = lap(t, &profile->engine);
+  worker_->wait();
+  if (profile) t = lap(t, &profile->waited);
+  if (control_reason_) return control_reason_;
+  control_due_ = false;
+  mj_step2(m, d);
+  if (profile) t = lap(t, &profile->engine);
+  const char* fault = physics_.afterStep(d, log_);
+  if (profile) {
+    lap(t, &profile->after_step);
+    ++profile->physics_steps;
+  }
+  return fault;
+}
+
+void SimulationLoop::secondThreadJob() {
+  if (control_due_ && (control_reason_ = controlVehicles(&view_))) return;
+  LoopProfile* profile = options_.profile;
+  const double t = profile ? seconds() : 0.0;
+  physics_.applyForces(&view_);
+  if (profile) lap(t, &profile->forces);
+}
+
 const char* SimulationLoop::control() {
+  if (const char* reason = prepare()) return reason;
+  return controlVehicles(d_.get());
+}
+
+const char* SimulationLoop::prepare() {
   if (options_.interrupt && options_.interrupt->load()) return "interrupted";
   const mjData* d = d_.get();
   const auto& vehicles = world_.vehicles();
   for (std::size_t v = 0; v < vehicles.size(); ++v)
     if (vehicles[v].ground) states_[pilot_[v]] = readPlanarState(d, vehicles[v]);
   if (options_.before_control && !options_.before_control(d->time, states_)) return "gave_up";
+  return nullptr;
+}
 
+const char* SimulationLoop::controlVehicles(const mjData* d) {
+  const auto& vehicles = world_.vehicles();
+  LoopProfile* profile = options_.profile;
+  const double t0 = profile ? seconds() : 0.0;
   const bool record = control_count_++ % controls_per_log_ == 0;
   const double control_dt = physics_.controlDt();
   bool all_done = true, diverged = false, saturated = false;
@@ -146,6 +248,15 @@ const char* SimulationLoop::control() {
       log_.moving_obstacles[i].t.push_back(d->time);
       log_.moving_obstacles[i].pos.push_back({p.x(), p.y(), 0.0});
     }
+  if (profile) {
+    const double spent = seconds() - t0;
+    profile->controllers += spent;
+    ++profile->control_steps;
+    if (record) {
+      profile->controllers_logged += spent;
+      ++profile->logged_steps;
+    }
+  }
   if (diverged || saturated) return diverged ? "diverged" : "saturated";
   if (all_done) return "goal";
   return nullptr;
@@ -166,6 +277,8 @@ RunLog SimulationLoop::finish() {
   if (!done_) end("interrupted");
   log_.end_reason = end_reason_;
   physics_.finish(d_.get(), log_);
+  if (options_.profile)
+    for (int i = 0; i < mjNTIMER; ++i) options_.profile->mujoco_ms[i] = d_->timer[i].duration;
   end_time_ = d_->time;
   d_.reset();
   return std::move(log_);

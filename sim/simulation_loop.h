@@ -20,9 +20,11 @@
 
 #include "sim/aerial_pilot_step.h"
 #include "sim/ground_pilot_step.h"
+#include "sim/loop_profile.h"
 #include "sim/physics_stepper.h"
 #include "sim/run_log.h"
 #include "sim/scenario.h"
+#include "sim/step_worker.h"
 #include "sim/world_model.h"
 
 namespace cosim {
@@ -45,6 +47,13 @@ struct SimulationOptions {
   std::function<bool(double t, const std::vector<PlanarState>& states)> before_control;
   // Centre (x, y) of moving obstacle i at time t; default: the scenario's path and speed.
   std::function<Eigen::Vector2d(std::size_t i, double t)> obstacle_position;
+  // Run the vehicles' controllers and the step's forces on a second thread while MuJoCo computes
+  // the step's positions and velocities (mj_step1; then mj_step2): the same numbers as one
+  // thread, in the time of the engine alone where the second thread has a core. Ignored where
+  // the forces read MuJoCo's geometry (ground effect) or the integrator is RK4. The controllers
+  // then run off the caller's thread: leave it off for controllers that must run on it (Python).
+  bool second_thread = false;
+  LoopProfile* profile = nullptr;  // filled as the loop runs (sim/loop_profile.h), if given
 };
 
 // A vehicle's true state, read from mjData (not what its controller estimates). The free joint's
@@ -103,7 +112,14 @@ class SimulationLoop {
                      std::vector<VehiclePilot>& quadrotors);
   void placeObstacles(double t);
   // The control step: every vehicle's controller and the log; a reason to end the run, or nullptr.
+  // prepare (the interrupt, the robots' states, before_control) runs on the loop's thread,
+  // controlVehicles on the second thread when there is one.
   const char* control();
+  const char* prepare();
+  const char* controlVehicles(const mjData* d);
+  const char* physicsStep();     // one physics step on one thread; a fault, or nullptr
+  const char* overlappedStep();  // the same with the second thread; the control step first
+  void secondThreadJob();        // the second thread's share of overlappedStep
   bool end(const char* reason);
 
   const WorldModel& world_;
@@ -118,6 +134,13 @@ class SimulationLoop {
   std::vector<AerialPilotStep> flights_;
   std::vector<PlanarState> states_;  // the robots' states at the control step
   RunLog log_;
+  std::unique_ptr<StepWorker> worker_;  // the second thread (SimulationOptions::second_thread)
+  // What the second thread reads: d_'s arrays, but qpos as it was before mj_step1 (a copy), and
+  // d_'s time. Not for MuJoCo's functions (its stack is d_'s).
+  mjData view_{};
+  std::vector<mjtNum> qpos_seen_;
+  bool control_due_ = false;            // the next overlapped step starts with the control step
+  const char* control_reason_ = nullptr;  // what the second thread's control step ended with
   long control_count_ = 0;
   bool done_ = false;
   std::string end_reason_;

@@ -17,6 +17,9 @@ struct Section {
   std::string name;   // e.g. "grid_astar_vs_boost"
   std::vector<Figure> figures;
   std::string note;   // one line: what was compared, and whether the target was met
+  // Optional lines printed under the figures (a breakdown whose key numbers are also figures);
+  // not in --json.
+  std::string table;
 };
 
 // quick: a smaller workload (used by tests to check a section runs); full otherwise.
