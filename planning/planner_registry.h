@@ -1,6 +1,7 @@
 #pragma once
-// Planners by name (the names of CONTRACT.md). Each planner family registers its planners from
-// its own file through a register*Planners function listed in planner_registry.cpp.
+// Planners by name (the names a scenario's `planner.name` takes). Each planner family registers
+// its planners from its own file through a register*Planners function listed in
+// planner_registry.cpp.
 #include <functional>
 #include <memory>
 #include <string>

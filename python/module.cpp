@@ -1,5 +1,5 @@
 // The extension behind `import cosim` (python/cosim/__init__.py re-exports it). The API is
-// CONTRACT.md's "Python" section: cosim.run, cosim.plan, cosim.Simulation, cosim.InputError.
+// The Python API (README, "Python"): cosim.run, cosim.plan, cosim.Simulation, cosim.InputError.
 #include "python/bindings.h"
 #include "python/overrides.h"
 #include "python/unknown_vehicle_error.h"

@@ -1,4 +1,5 @@
-"""Start-up hook for interpreters run with PYTHONPATH=build/python (CONTRACT.md's way to use cosim).
+"""Start-up hook for interpreters run with PYTHONPATH=build/python (the README's way to use
+cosim from Python).
 
 Python's `site` module imports the first `sitecustomize` on sys.path at start-up, before the
 script runs. The extension is built against Debian's Python 3.11, whose NumPy lives in

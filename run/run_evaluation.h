@@ -40,7 +40,7 @@ struct RunMetrics {
   int collisions = 0;         // contacts, each touching pair once (TeamContacts::total)
   double min_clearance_m = 0.0;
   RunEnd end = RunEnd::Goal;
-  int status = 0;       // CONTRACT.md exit status: 0 ok, 1 task failed
+  int status = 0;       // the exit status: 0 ok, 1 task failed
   std::string message;  // why the task failed
   double sim_speed_x = 0.0;
 };

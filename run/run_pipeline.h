@@ -48,7 +48,7 @@ struct RunRequest {
 };
 
 struct RunSummary {
-  int status = 0;                      // CONTRACT.md exit status: 0 ok, 1 task failed
+  int status = 0;                      // the exit status: 0 ok, 1 task failed
   std::string message;                 // why the task failed
   std::vector<FlightMetrics> metrics;  // one per vehicle, in the scenario's order
   double sim_speed_x = 0.0;

@@ -1,7 +1,7 @@
 #pragma once
 // MuJoCo's warnings and errors go to cosim's stderr instead of MuJoCo's defaults, which print
 // to stdout, append to MUJOCO_LOG.TXT in the current folder, and, for an error, exit(1) (the
-// "task failed" status of CONTRACT.md). Simulation loops still see each warning in mjData's
+// "task failed" exit status). Simulation loops still see each warning in mjData's
 // warning counters, as before.
 namespace cosim {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Reading a scenario's `sensors:`, `estimator:` and `model_error:` sections (CONTRACT.md,
+// Reading a scenario's `sensors:`, `estimator:` and `model_error:` sections (README,
 // "Sensing, estimation, vehicle realism"); part of sim/scenario_loader.cpp, kept apart because
 // it is one concept: what the flight software knows and believes.
 //

@@ -2,7 +2,8 @@
 # A single-node Slurm (slurmctld + slurmd on localhost, munge auth) on Debian 12 without systemd,
 # for CI and for trying the sweep scripts on one machine. Run as root. Installs slurm-wlm and munge
 # if they are missing. Writes the daemons' PIDs to $PIDS_FILE (default /tmp/cosim-slurm-pids.env)
-# for single_node_teardown.sh, which stops exactly those. Recipe: /work/shared/SLURM.md (tested).
+# for single_node_teardown.sh, which stops exactly those. The recipe follows Slurm's own
+# single-node setup (slurm.conf with one node and one partition).
 # Exit 0 when the node is idle; non-zero with a message otherwise.
 set -euo pipefail
 PIDS_FILE=${PIDS_FILE:-/tmp/cosim-slurm-pids.env}
@@ -19,7 +20,8 @@ if ! command -v slurmctld >/dev/null || ! command -v slurmd >/dev/null || ! comm
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends slurmctld slurmd slurm-client munge >/dev/null
 fi
-# Live daemons only: killed ones linger as zombies until init reaps them (SLURM.md, problem 10).
+# Live daemons only: killed ones linger as zombies until init reaps them (seen on this kind of
+# machine).
 running() { for pid in $(pgrep -x "$1"); do
   [ "$(awk '{print $3}' "/proc/$pid/stat" 2>/dev/null)" = Z ] || return 0; done; return 1; }
 if running slurmctld || running slurmd; then

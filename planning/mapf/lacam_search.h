@@ -56,7 +56,7 @@ struct LacamOutcome {
   std::string message;  // why it failed, empty when solved
   // Solved: start, ..., goals (a vertex per agent). The search minimises the sum of loss; of the
   // solutions it finds (the first and each improvement) this is the one with the lowest sum of
-  // costs, CONTRACT.md's cost, so the reported cost never rises on the way (the two can move
+  // costs, the cost cosim reports, so the reported cost never rises on the way (the two can move
   // apart when an agent leaves its goal again).
   std::vector<std::vector<int>> configurations;
   bool proven_optimal = false;  // the search space was exhausted (sum of loss)
@@ -64,7 +64,7 @@ struct LacamOutcome {
   enum class AnytimeEnd { kNone, kOptimal, kIterations, kTimeLimit, kMemoryLimit };
   AnytimeEnd anytime_end = AnytimeEnd::kNone;
   long first_sum_of_loss = 0, final_sum_of_loss = 0;  // final: the lowest the search reached
-  long first_sum_of_costs = 0;  // of the first solution: arrival times (CONTRACT.md's cost)
+  long first_sum_of_costs = 0;  // of the first solution: arrival times (the cost cosim reports)
   double first_solution_ms = 0.0, last_improvement_ms = 0.0;
   long improvements = 0;  // times the goal's cost dropped after the first solution
   long iterations = 0, nodes = 0, restarts = 0, generator_failures = 0, rediscoveries = 0;

@@ -1,5 +1,5 @@
 #pragma once
-// The interface of every multi-agent planner (names in CONTRACT.md: independent_astar, lra_star,
+// The interface of every multi-agent planner (names: independent_astar, lra_star,
 // ca_star, hca_star, whca_star, cbs, potential_field, lacam, pibt). A planner sees only the
 // instance, a time limit (with an optional stop flag) and a seed; its result is checked by the
 // independent SolutionValidator.

@@ -1,5 +1,5 @@
 #pragma once
-// The multi-agent planners by name (CONTRACT.md: independent_astar, lra_star, ca_star, hca_star,
+// The multi-agent planners by name (independent_astar, lra_star, ca_star, hca_star,
 // whca_star, cbs, potential_field, lacam, pibt), separate from the single-agent PlannerRegistry
 // because they solve a different problem (a MapfInstance, not a PlanningProblem). Parameters
 // come by name from a ParamSet, as for every planner; unknown or misspelt ones are an

@@ -1,5 +1,5 @@
 #pragma once
-// Registers the planners of seed 000 (Pěňčík 2014) by their CONTRACT.md names: msac, saco,
+// Registers the planners of seed 000 (Pěňčík 2014) by their scenario names: msac, saco,
 // sacodm (grid planners) and rna, wf_rna, d_star_lite (navigation in an unknown map, registered as
 // grid planners that navigate a static map seen through the robot's field of view).
 #include "planning/planner_registry.h"

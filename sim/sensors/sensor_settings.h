@@ -1,5 +1,5 @@
 #pragma once
-// What a scenario's `sensors:` and `estimator:` sections ask for (CONTRACT.md, "Sensing,
+// What a scenario's `sensors:` and `estimator:` sections ask for (README, "Sensing,
 // estimation, vehicle realism"). Presets and the source of each default are in
 // sim/sensors/sensor_presets.cpp; the sensor models in sim/sensors/imu_sensor.h and
 // sim/sensors/pose_sensor.h.
