@@ -68,14 +68,16 @@ TEST(QuadrotorTeamRun, WithoutAControllerSectionATeamFliesIndiAndAWrittenOneIsKe
   EXPECT_NE(metrics.find("\"controller\": \"cascade\""), std::string::npos) << r.message;
 }
 
-TEST(QuadrotorTeamRun, TwoVehiclesInOneCellOfTheTeamsGridAreBadInputNamingTheVehicle) {
+// Starts closer than the separation (a1 0.14 m from a0: inside 1.5 ellipsoids) cannot be planned on
+// any roadmap.
+TEST(QuadrotorTeamRun, StartsCloserThanTheSeparationAreBadInputNamingTheVehicle) {
   std::string text = crossingTeam("{name: lacam, margin: 0.1}");
   const std::string a1_start = "start: [0.8, 2.0, 1]";
   text.replace(text.find(a1_start), a1_start.size(), "start: [0.9, 1.1, 1]");  // a0's cell
   std::string metrics;
   try {
-    runTeam(text, "team-shared-cell", metrics);
-    ADD_FAILURE() << "accepted two vehicles in one cell";
+    runTeam(text, "team-close-starts", metrics);
+    ADD_FAILURE() << "accepted two starts closer than the separation";
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "team_test.yaml");
     EXPECT_EQ(e.place(), "vehicles[1].start");
