@@ -1,14 +1,11 @@
 #include "experiments/bench/reference_flight.h"
 
 #include <cstdio>
-#include <memory>
 
-#include "control/controller_factory.h"
-#include "control/piecewise_polynomial_reference.h"
 #include "experiments/bench/bare_replay.h"
+#include "run/given_reference_flight.h"
 #include "sim/flight_metrics.h"
 #include "sim/flight_simulation.h"
-#include "sim/model_error.h"
 
 namespace cosim::bench {
 
@@ -18,21 +15,10 @@ constexpr double kTarget = 0.8;
 
 // One flight of the figure-eight for sim.max_time in the full loop, as `cosim run` flies it.
 RunLog flyOnce(const Scenario& s, const WorldModel& world) {
-  const QuadrotorParams believed = believedAirframe(world.vehicles()[0].params, s.model_error);
-  ParamSet gains = s.controller_gains;
-  const std::unique_ptr<FlightController> controller =
-      makeFlightController(s.controller_name, gains, believed, s.controller_drag_compensation);
-  PiecewisePolynomialReference reference = *s.vehicles[0].reference;
-  std::vector<VehiclePilot> pilots(1);
-  pilots[0].controller = controller.get();
-  pilots[0].reference = &reference;
-  pilots[0].goal = s.vehicles[0].goal();
-  pilots[0].believed_airframe = &believed;
-  pilots[0].reference_end = reference.duration();
   FlightOptions options;
   options.settings = s.sim;
   options.hold_after_arrival = 1e9;  // fly for exactly max_time
-  return simulateFlight(world, s, pilots, options);
+  return flyGivenReference(s, world, options);
 }
 
 }  // namespace

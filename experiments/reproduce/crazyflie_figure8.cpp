@@ -14,7 +14,6 @@
 #include <filesystem>
 #include <sstream>
 
-#include "control/controller_factory.h"
 #include "control/crazyflie_platform.h"
 #include "control/piecewise_polynomial_reference.h"
 #include "core/atomic_file.h"
@@ -22,9 +21,9 @@
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "render/figures.h"
+#include "run/given_reference_flight.h"
 #include "sim/flight_metrics.h"
 #include "sim/flight_simulation.h"
-#include "sim/model_error.h"
 #include "sim/world_model.h"
 
 namespace cosim::reproduce {
@@ -99,20 +98,10 @@ Row fly(const Variant& v, double timescale, const Options& options) {
     setRotorConstant(xml, "time_constant_down", "0.0001");
   }
   const WorldModel world = WorldModel::fromXml(xml, s);
-  const QuadrotorParams believed = believedAirframe(world.vehicles()[0].params, s.model_error);
-  ParamSet gains = s.controller_gains;
-  std::unique_ptr<FlightController> controller =
-      makeFlightController(v.controller, gains, believed);
-  PiecewisePolynomialReference reference = *s.vehicles[0].reference;
-  std::vector<VehiclePilot> pilots(1);
-  pilots[0].controller = controller.get();
-  pilots[0].reference = &reference;
-  pilots[0].goal = s.vehicles[0].goal();
-  pilots[0].believed_airframe = &believed;
-  pilots[0].reference_end = reference.duration();
   FlightOptions flight;
   flight.settings = s.sim;
-  const RunLog log = simulateFlight(world, s, pilots, flight);
+  const RunLog log = flyGivenReference(s, world, flight);
+  const double reference_end = s.vehicles[0].reference->duration();
 
   Row row;
   row.controller = v.label;
@@ -122,7 +111,7 @@ Row fly(const Variant& v, double timescale, const Options& options) {
   row.rmse = m.rmse_m;
   row.max_error = m.max_error_m;
   for (const LogSample& x : log.vehicles[0].samples)
-    if (x.t <= reference.duration()) row.peak_speed = std::max(row.peak_speed, x.ref_vel.norm());
+    if (x.t <= reference_end) row.peak_speed = std::max(row.peak_speed, x.ref_vel.norm());
   return row;
 }
 
