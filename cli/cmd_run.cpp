@@ -14,7 +14,6 @@
 #include "run/run_pipeline.h"
 #include "run/run_summary_line.h"
 #include "run/scenario_checks.h"
-#include "core/input_error.h"
 
 namespace cosim::cli {
 
@@ -69,7 +68,7 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     std::vector<std::string> overrides = a->sets;
     if (a->seed >= 0) overrides.push_back("sim.seed=" + std::to_string(a->seed));
     if (a->video_speed > 0) overrides.push_back("render.speed=" + std::to_string(a->video_speed));
-    Scenario scenario = loadCheckedScenario(path, overrides, PlannerUse::Run);
+    const Scenario scenario = loadCheckedScenario(path, overrides, PlannerUse::Run);
     request.out_dir = prepareOutputDir(a->out, "run");
     lock.acquire(request.out_dir, "--out");
     request.video = !a->no_video;
@@ -77,14 +76,9 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     request.interrupt = &interrupt;
     RunConsole console(!a->quiet);
     request.observer = console.observer();
-    RunSummary s;
-    try {
-      s = executeRun(scenario, request);
-    } catch (const InputError& e) {
-      throw e.inFile(path);  // e.g. a planner's grid too large for the scenario's world
-    }
+    const RunSummary s = executeRun(scenario, request);
     console.finish();
-    if (s.message == "interrupted") {
+    if (s.outcome == RunOutcome::Interrupted) {
       std::cerr << "cosim: interrupted; " << request.out_dir.string() << " holds no finished run\n";
       ctx.status = 1;
       return;
@@ -92,9 +86,9 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     // metrics.json's top level: for a team, the whole team's figures.
     std::cout << "run: " << request.out_dir.string() << "\n"
               << "  " << runSummaryLine(s.metrics_json.json()) << "\n";
-    if (s.status != 0) std::cerr << "cosim: " << s.message << "\n";
+    if (s.outcome == RunOutcome::TaskFailed) std::cerr << "cosim: " << s.message << "\n";
     std::cout << runPagesLine(request.out_dir) << "\n";
-    ctx.status = s.status;
+    ctx.status = s.exitStatus();
   });
 }
 

@@ -139,7 +139,7 @@ int executePlan(const MapfArgs& a, Scenario execution, const MapfResult& plan,
   request.observer = console.observer();
   const RunSummary run = executeRun(execution, request);
   console.finish();
-  if (run.message == "interrupted") {
+  if (run.outcome == RunOutcome::Interrupted) {
     std::cerr << "cosim: interrupted; " << exec_dir.string() << " holds no finished run\n";
     return 1;
   }
@@ -153,8 +153,9 @@ int executePlan(const MapfArgs& a, Scenario execution, const MapfResult& plan,
   std::cout << "executed in physics: " << arrived << "/" << run.metrics.size()
             << " robots arrived, " << contacts << " contacts, max deviation from the plan "
             << deviation << " m\nwritten: " << exec_dir.string() << "/ (metrics.json)\n";
-  if (run.status != 0) std::cerr << "cosim: execution: " << run.message << "\n";
-  return run.status;
+  if (run.outcome == RunOutcome::TaskFailed)
+    std::cerr << "cosim: execution: " << run.message << "\n";
+  return run.exitStatus();
 }
 
 }  // namespace

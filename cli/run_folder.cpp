@@ -44,8 +44,8 @@ RecordedRun recordedRun(const std::filesystem::path& dir) {
   };
   r.timeseries_rows = count("timeseries_rows");
   r.path_rows = count("path_rows");
-  const std::string end = json.value("end_reason", std::string());
-  r.diverged = end == "diverged" || end == "unstable";
+  const std::optional<RunEnd> end = runEndNamed(json.value("end_reason", std::string()));
+  r.diverged = end == RunEnd::Diverged || end == RunEnd::Unstable;
   return r;
 }
 

@@ -7,7 +7,6 @@
 #include <iostream>
 #include <optional>
 
-#include "core/input_error.h"
 #include "core/output_dir_lock.h"
 #include "core/output_files.h"
 #include "core/stop_request.h"
@@ -93,7 +92,7 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
         lock.acquire(*out_dir, "out");
       if (!out_dir->empty()) removeStaleResults(*out_dir, kRunResultNames);
     }
-    Scenario s = loadCheckedScenario(path, sets, PlannerUse::Run);
+    const Scenario s = loadCheckedScenario(path, sets, PlannerUse::Run);
     if (out_dir) {
       request.out_dir = prepareOutputDir(*out_dir, "run");
       lock.acquire(request.out_dir, "out");
@@ -104,17 +103,13 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
     request.observer = [](const RunEvent& e) {
       if (e.kind == RunEventKind::Warning) std::cerr << "cosim: warning: " << e.text << "\n";
     };
-    try {
-      summary = executeRun(s, request);
-    } catch (const InputError& e) {
-      throw e.inFile(path);  // e.g. a planner's grid too large for the scenario's world
-    }
+    summary = executeRun(s, request);
   }
   guard.finish();  // Ctrl-C: KeyboardInterrupt from here
   RunResult r;
-  r.status = summary.status;
+  r.status = summary.exitStatus();
   r.message = summary.message;
-  if (summary.message != "interrupted") r.metrics = jsonValue(summary.metrics_json.str());
+  if (summary.outcome != RunOutcome::Interrupted) r.metrics = jsonValue(summary.metrics_json.str());
   r.log = std::move(summary.log);
   if (out_dir) r.out = request.out_dir.string();
   return r;

@@ -1,29 +1,26 @@
 #pragma once
-// What Python's cosim.Simulation steps: the run pipeline's stages up to the flight (resolve,
-// plan, pilots: run/run_pipeline.h, exactly as `cosim run` takes them), then the flight loop
-// (sim/simulation_loop.h) one control period at a time, and the pipeline's evaluation of the log
-// at any moment (run/run_evaluation.h, run/metrics_json.h). Quadrotor runs only: ground robots
-// drive under a navigator and path followers that only the whole pipeline runs.
+// What Python's cosim.Simulation steps: the run's prepare stage (run/prepared_run.h, the very
+// stages, stop checks and loop options `cosim run` takes), then its simulation loop
+// (sim/simulation_loop.h) one control period at a time, and the run's own evaluation of the log
+// at any moment (summarizeRun). Quadrotor runs only: ground robots drive under a navigator and
+// path followers that only the whole pipeline runs.
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/json_writer.h"
-#include "run/run_pilots.h"
-#include "run/run_plan.h"
-#include "run/run_setup.h"
+#include "run/prepared_run.h"
 #include "sim/simulation_loop.h"
-#include "sim/world_model.h"
 
 namespace cosim::python {
 
 class SteppedSimulation {
  public:
-  // Loads `path` with `overrides` (--set's "key=value"), plans, builds the pilots and starts the
-  // loop with the vehicles hovering at their starts. Throws InputError for bad input and for a
+  // Loads `path` with `overrides` (--set's "key=value"), prepares the run and starts the loop
+  // with the vehicles hovering at their starts. Throws InputError for bad input and for a
   // scenario with ground robots, std::runtime_error if planning found no flyable plan (its
-  // message: "no path found: ..."). Planning polls the stop request (core/stop_request.h).
+  // message: "no path found: ...") or was stopped. Preparing polls the stop request
+  // (core/stop_request.h).
   SteppedSimulation(const std::string& path, const std::vector<std::string>& overrides);
   SteppedSimulation(const SteppedSimulation&) = delete;
   SteppedSimulation& operator=(const SteppedSimulation&) = delete;
@@ -54,15 +51,11 @@ class SteppedSimulation {
  private:
   const SimulationLoop& loop() const;
 
-  Scenario scenario_;
-  RunSetup setup_;
-  std::optional<WorldModel> world_;
-  RunPlan plan_;
-  RunPilots pilots_;
-  std::vector<GroundPilot> no_robots_;
+  const Scenario scenario_;
+  PreparedRun run_;
   std::vector<std::string> names_;
   double control_rate_ = 0.0;
-  // Last: it points into everything above, and goes first.
+  // Last: it points into run_, and goes first.
   std::unique_ptr<SimulationLoop> loop_;
   RunLog final_log_;  // after close
 };

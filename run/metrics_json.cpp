@@ -14,7 +14,7 @@ std::string plannerName(const std::string& name) {
 
 // metrics.json's "fault": the simulation's end when it was a fault of the vehicles.
 std::string faultName(const RunRecord& r) {
-  return isFault(r.metrics.end) ? r.log.end_reason : std::string("none");
+  return isFault(r.metrics.end) ? runEndName(r.log.end_reason) : "none";
 }
 
 // What every run reports first: the outcome and the top-level vehicles' tracking.
@@ -50,9 +50,9 @@ void addFlight(JsonObject& j, const RunRecord& r) {
       .add("estimation_rmse_m", t.estimation_rmse_m)
       .add("sensors", s.sensors.preset)
       .add("estimator", s.estimator.name)
-      .add("controller", s.controller_name)
-      .add("drag_compensation", s.controller_drag_compensation)
-      .add("trajectory_mode", s.trajectory_mode)
+      .add("controller", r.setup.primarySections().controller.name)
+      .add("drag_compensation", r.setup.primarySections().controller.drag_compensation)
+      .add("trajectory_mode", r.setup.primarySections().trajectory.mode)
       .add("vehicle_radius_m", radius)
       .add("inflation_m", r.plan.quadrotors.summary.inflation);
 }
@@ -78,14 +78,14 @@ void addRobots(JsonObject& j, const RunRecord& r) {
 // The quadrotors over ground robots, driven by the `aerial` sections.
 void addQuadrotorsOverRobots(JsonObject& j, const RunRecord& r) {
   if (r.setup.quadrotors.empty()) return;
-  const Scenario& air = r.setup.quadrotorSections(r.scenario);
+  const MotionSections& air = r.setup.quadrotor_sections;
   const RunMetrics& m = r.metrics;
   j.add("uavs", static_cast<int>(r.setup.quadrotors.size()))
       .add("robot_uav_contacts", m.contacts.robot_uav_contacts)
       .add("uav_contacts", m.contacts.uav_contacts)
-      .add("uav_planner", plannerName(air.planner_name))
-      .add("uav_trajectory_mode", air.trajectory_mode)
-      .add("uav_controller", air.controller_name)
+      .add("uav_planner", plannerName(air.planner.name))
+      .add("uav_trajectory_mode", air.trajectory.mode)
+      .add("uav_controller", air.controller.name)
       .add("uav_rmse_m", m.uavs.rmse_m)
       .add("uav_max_error_m", m.uavs.max_error_m)
       .add("longest_saturation_s", m.longest_saturation_s)
@@ -102,7 +102,7 @@ void addRunFacts(JsonObject& j, const RunRecord& r) {
   j.add("seed", static_cast<long>(r.scenario.sim.seed))
       .add("sim_time_s", r.log.sim_time)
       .add("wall_time_s", r.log.wall_time)
-      .add("end_reason", r.log.end_reason)
+      .add("end_reason", runEndName(r.log.end_reason))
       .add("mujoco_warnings", r.log.mujoco_warnings);
   if (!r.setup.ground())
     j.add("fault", faultName(r)).add("longest_saturation_s", m.longest_saturation_s);

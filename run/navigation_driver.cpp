@@ -25,9 +25,10 @@ std::unique_ptr<Navigator> makeNavigator(const std::string& name, ParamSet& p) {
 }
 
 NavigationWorld navigationWorld(const Scenario& s, const WorldModel& world, std::size_t robot_id,
-                                double resolution, double speed, double& inflation) {
+                                double resolution, double speed, double margin,
+                                double& inflation) {
   const double robot = world.vehicles()[robot_id].params.radius;
-  inflation = robot + s.planner_margin;
+  inflation = robot + margin;
   OccupancyGrid grid = robotGrid(s, resolution, inflation);
   std::vector<MovingObstacle> obstacles;
   for (std::size_t i = 0; i < s.moving_obstacles.size(); ++i) {

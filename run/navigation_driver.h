@@ -22,10 +22,11 @@ std::unique_ptr<Navigator> makeNavigator(const std::string& name, ParamSet& p);
 // The navigator's world: the static map as a planar grid, the moving obstacles with their path
 // points snapped to cell centres (the navigator's obstacles live on the grid; the physical ones
 // then follow the very same trajectories), speeds in cells per robot step. `robot` is the
-// robot's index in the scenario; `inflation` receives its radius + the planner's margin.
+// robot's index in the scenario; `inflation` receives its radius + the planner's `margin`.
 // Throws InputError for moving obstacles too large for the grid.
 NavigationWorld navigationWorld(const Scenario& s, const WorldModel& world, std::size_t robot,
-                                double resolution, double speed, double& inflation);
+                                double resolution, double speed, double margin,
+                                double& inflation);
 
 // Drives one robot with a navigator: whenever the robot's commanded step is over, it asks the
 // navigator for the next cell (from the robot's commanded cell) and extends the timed path by one

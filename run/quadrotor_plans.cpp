@@ -17,8 +17,8 @@ namespace {
 // A minimum-snap trajectory through the planned path, within the airframe's limits: speed and
 // acceleration from the scenario's trajectory section, thrust from the model (keeping 20 % of
 // the rotors' thrust for control).
-MinimumSnapResult fitMinimumSnap(const Scenario& s, const QuadrotorParams& q,
-                                 const VehiclePlan& plan, ParamSet& p) {
+MinimumSnapResult fitMinimumSnap(const Scenario& s, const PlannerSection& planner,
+                                 const QuadrotorParams& q, const VehiclePlan& plan, ParamSet& p) {
   MinimumSnapOptions o;
   o.limits.max_speed = p.getDouble("max_speed", 3.0, 0.01, 100.0);
   o.limits.max_acceleration = p.getDouble("max_acceleration", 3.0, 0.01, 100.0);
@@ -32,7 +32,7 @@ MinimumSnapResult fitMinimumSnap(const Scenario& s, const QuadrotorParams& q,
   o.validate();
   // The curve must keep the vehicle's radius plus half the planner's margin clear: the other half
   // is the budget for tracking error.
-  return MinimumSnapTrajectory(o).fit(plan.path, s.world, q.radius + 0.5 * s.planner_margin,
+  return MinimumSnapTrajectory(o).fit(plan.path, s.world, q.radius + 0.5 * planner.margin,
                                       plan.via_indices);
 }
 
@@ -49,7 +49,7 @@ VehiclePlan givenReferencePlan(const VehicleSpec& spec, double inflation) {
 }
 
 // Each quadrotor its own path; the last failure, if any, is the group's.
-void planEachQuadrotor(const Scenario& s, const WorldModel& world,
+void planEachQuadrotor(const Scenario& s, const PlannerSection& planner, const WorldModel& world,
                        const std::vector<std::size_t>& vehicles, const RunRequest& request,
                        const RunReporter& report, QuadrotorPlans& q) {
   for (std::size_t v : vehicles) {
@@ -60,11 +60,11 @@ void planEachQuadrotor(const Scenario& s, const WorldModel& world,
       continue;
     }
     report.message("planning " + s.vehicles[v].name + " with " +
-                   (s.planner_name.empty() ? std::string("given waypoints") : s.planner_name));
+                   (planner.name.empty() ? std::string("given waypoints") : planner.name));
     const double radius = request.plan_as_point_mass ? 0.0 : world.vehicles()[v].params.radius;
-    q.plans.push_back(planVehicle(s, s.vehicles[v], radius, s.planner_params));
+    q.plans.push_back(planVehicle(s, planner, s.vehicles[v], radius));
     for (const auto& name : q.plans.back().ignored_params)
-      report.message("note: planner." + name + " does not apply to " + s.planner_name +
+      report.message("note: planner." + name + " does not apply to " + planner.name +
                      " (ignored)");
   }
   for (const auto& p : q.plans) {
@@ -76,12 +76,12 @@ void planEachQuadrotor(const Scenario& s, const WorldModel& world,
 }
 
 // The team's paths and timed trajectories, planned jointly.
-void planQuadrotorTeam(const Scenario& s, const WorldModel& world,
+void planQuadrotorTeam(const Scenario& s, const MotionSections& m, const WorldModel& world,
                        const std::vector<std::size_t>& vehicles, const RunRequest& request,
                        const RunReporter& report, QuadrotorPlans& q) {
   report.message("planning " + std::to_string(vehicles.size()) + " quadrotors as a team with " +
-                 s.planner_name);
-  QuadrotorTeamFlight flight = planQuadrotorTeamFlight(s, world, vehicles, request);
+                 m.planner.name);
+  QuadrotorTeamFlight flight = planQuadrotorTeamFlight(s, m, world, vehicles, request);
   q.plans = std::move(flight.plans);
   q.summary = summarizeSeparatePlans(q.plans);
   if (!q.plans.empty()) q.summary.counters = q.plans.front().counters;  // the team's, once
@@ -97,17 +97,18 @@ void planQuadrotorTeam(const Scenario& s, const WorldModel& world,
 
 // The reference of quadrotor k planned alone: seed 003's waypoint switching or a minimum-snap
 // fit of its path (nullptr on failure, with q's status and failure set).
-std::unique_ptr<ReferenceSource> singleReference(const Scenario& s, const VehicleSpec& spec,
-                                                 std::size_t k, QuadrotorPlans& q) {
+std::unique_ptr<ReferenceSource> singleReference(const Scenario& s, const MotionSections& m,
+                                                 const VehicleSpec& spec, std::size_t k,
+                                                 QuadrotorPlans& q) {
   if (spec.reference) return std::make_unique<PiecewisePolynomialReference>(*spec.reference);
-  ParamSet traj = s.trajectory_params;
-  if (s.trajectory_mode == "waypoints") {
+  ParamSet traj = m.trajectory.params;
+  if (m.trajectory.mode == "waypoints") {
     const double radius = traj.getDouble("switch_radius", 0.2, 0.01, 100.0);
     traj.requireAllUsed("trajectory mode 'waypoints'");
     return std::make_unique<WaypointReference>(q.plans[k].path.waypoints,
                                                spec.yaw_deg * M_PI / 180.0, radius);
   }
-  MinimumSnapResult fit = fitMinimumSnap(s, q.airframes[k], q.plans[k], traj);
+  MinimumSnapResult fit = fitMinimumSnap(s, m.planner, q.airframes[k], q.plans[k], traj);
   if (!fit.success) {
     q.status = PlanStatus::NoTrajectory;
     q.failure = "no feasible trajectory: " + fit.message;
@@ -120,18 +121,18 @@ std::unique_ptr<ReferenceSource> singleReference(const Scenario& s, const Vehicl
 
 }  // namespace
 
-QuadrotorPlans planQuadrotors(const Scenario& s, const WorldModel& world,
+QuadrotorPlans planQuadrotors(const Scenario& s, const MotionSections& m, const WorldModel& world,
                               const std::vector<std::size_t>& vehicles, Planning planning,
                               const RunRequest& request, const RunReporter& report) {
   QuadrotorPlans q;
   for (std::size_t v : vehicles)
     q.airframes.push_back(believedAirframe(world.vehicles()[v].params, s.model_error));
   if (planning == Planning::Team) {
-    planQuadrotorTeam(s, world, vehicles, request, report, q);
+    planQuadrotorTeam(s, m, world, vehicles, request, report, q);
   } else {
-    planEachQuadrotor(s, world, vehicles, request, report, q);
+    planEachQuadrotor(s, m.planner, world, vehicles, request, report, q);
     for (std::size_t k = 0; k < vehicles.size() && q.status == PlanStatus::Ready; ++k)
-      q.references.push_back(singleReference(s, s.vehicles[vehicles[k]], k, q));
+      q.references.push_back(singleReference(s, m, s.vehicles[vehicles[k]], k, q));
   }
   if (q.status != PlanStatus::Ready) q.references.clear();
   if (!q.plans.empty()) q.trajectory_counters = q.plans.front().trajectory_counters;

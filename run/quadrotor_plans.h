@@ -35,9 +35,10 @@ struct QuadrotorPlans {
 };
 
 // Plans scenario.vehicles[i] (flying world.vehicles()[i]) for each i in `vehicles` with the
-// planner and trajectory sections of `sections`. Throws InputError for bad planner or trajectory
-// parameters.
-QuadrotorPlans planQuadrotors(const Scenario& sections, const WorldModel& world,
+// planner and trajectory of `sections` (the team's controller too: its tracking error widens the
+// team's separation). Throws InputError for bad planner or trajectory parameters.
+QuadrotorPlans planQuadrotors(const Scenario& scenario, const MotionSections& sections,
+                              const WorldModel& world,
                               const std::vector<std::size_t>& vehicles, Planning planning,
                               const RunRequest& request, const RunReporter& report);
 

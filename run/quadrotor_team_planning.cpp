@@ -22,7 +22,8 @@ TeamPlannerSettings readTeamPlannerSettings(ParamSet& p) {
   return s;
 }
 
-std::vector<TeamAgent> teamAgents(const Scenario& s, const WorldModel& world,
+std::vector<TeamAgent> teamAgents(const Scenario& s, const PlannerSection& planner,
+                                  const WorldModel& world,
                                   const std::vector<std::size_t>& vehicles) {
   std::vector<TeamAgent> agents;
   for (std::size_t v : vehicles) {
@@ -35,11 +36,11 @@ std::vector<TeamAgent> teamAgents(const Scenario& s, const WorldModel& world,
     TeamAgent a;
     a.start = spec.start;
     a.goal = spec.goal();
-    a.separation = s.planner_separation.value_or(
+    a.separation = planner.separation.value_or(
         SeparationEllipsoid{q.separation_radius, q.separation_height});
-    a.inflation = q.radius + s.planner_margin;
+    a.inflation = q.radius + planner.margin;
     // As for a single quadrotor's trajectory: half the margin is the budget for tracking error.
-    a.clearance = q.radius + 0.5 * s.planner_margin;
+    a.clearance = q.radius + 0.5 * planner.margin;
     agents.push_back(a);
   }
   return agents;
@@ -70,18 +71,19 @@ void checkQuadrotorTeamPlanner(const Scenario& scenario) {
   makeMapfPlanner(scenario.planner_name, p, "planner.name");
 }
 
-QuadrotorTeamFlight planQuadrotorTeamFlight(const Scenario& s, const WorldModel& world,
+QuadrotorTeamFlight planQuadrotorTeamFlight(const Scenario& s, const MotionSections& m,
+                                            const WorldModel& world,
                                             const std::vector<std::size_t>& vehicles,
                                             const RunRequest& request) {
-  ParamSet p = s.planner_params;
+  ParamSet p = m.planner.params;
   const TeamPlannerSettings settings = readTeamPlannerSettings(p);
-  auto planner = makeMapfPlanner(s.planner_name, p, "planner.name");
-  ParamSet t = s.trajectory_params;
+  auto planner = makeMapfPlanner(m.planner.name, p, "planner.name");
+  ParamSet t = m.trajectory.params;
   TeamPlanningProblem problem;
   problem.world = &s.world;
-  problem.agents = teamAgents(s, world, vehicles);
+  problem.agents = teamAgents(s, m.planner, world, vehicles);
   // Grown by what the controller's tracking error takes off in flight.
-  problem.min_separation = teamSeparationFor(s.controller_name, settings.min_separation);
+  problem.min_separation = teamSeparationFor(m.controller.name, settings.min_separation);
   problem.max_speed = t.getDouble("max_speed", kTeamMaxSpeed, 0.01, 100.0);
   problem.max_acceleration = t.getDouble("max_acceleration", kTeamMaxAcceleration, 0.01, 100.0);
   t.requireAllUsed("trajectory of a quadrotor team (max_speed, max_acceleration)");
@@ -97,18 +99,15 @@ QuadrotorTeamFlight planQuadrotorTeamFlight(const Scenario& s, const WorldModel&
       request.observer(e);
     };
 
-  TeamPlan team;
-  try {
-    team = planQuadrotorTeam(problem, *planner);
-  } catch (const InputError& e) {
-    throw e.inFile(s.file);  // a start or goal the grid cannot hold; a planner without 3D grids
-  }
+  // A start or goal the grid cannot hold, a planner without 3D grids: InputError, which the
+  // prepare stage places in the scenario's file (run/prepared_run.h).
+  TeamPlan team = planQuadrotorTeam(problem, *planner);
   std::map<std::string, std::string> params = p.effective();
-  params["margin"] = std::to_string(s.planner_margin);
+  params["margin"] = std::to_string(m.planner.margin);
   params["min_separation"] = std::to_string(problem.min_separation);
-  if (s.planner_separation) {
-    params["separation.radius"] = std::to_string(s.planner_separation->radius);
-    params["separation.height"] = std::to_string(s.planner_separation->height);
+  if (m.planner.separation) {
+    params["separation.radius"] = std::to_string(m.planner.separation->radius);
+    params["separation.height"] = std::to_string(m.planner.separation->height);
   }
   QuadrotorTeamFlight flight;
   flight.plans = vehiclePlans(team, problem, params);

@@ -31,9 +31,12 @@ struct QuadrotorTeamFlight {
 // parameters before running (throws InputError as the run would).
 void checkQuadrotorTeamPlanner(const Scenario& scenario);
 
-// Plans scenario.vehicles[v] (flying world.vehicles()[v]) for each v in `vehicles` as one team.
+// Plans scenario.vehicles[v] (flying world.vehicles()[v]) for each v in `vehicles` as one team,
+// with the planner and trajectory of `sections` (its controller sets the team's separation).
 // Throws InputError for bad parameters, or starts and goals the team's grid cannot hold.
-QuadrotorTeamFlight planQuadrotorTeamFlight(const Scenario& scenario, const WorldModel& world,
+QuadrotorTeamFlight planQuadrotorTeamFlight(const Scenario& scenario,
+                                            const MotionSections& sections,
+                                            const WorldModel& world,
                                             const std::vector<std::size_t>& vehicles,
                                             const RunRequest& request);
 

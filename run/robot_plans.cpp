@@ -21,7 +21,7 @@ double cruiseSpeed(const Scenario& s, const RunSetup& setup, const WorldModel& w
   double slowest = std::numeric_limits<double>::infinity();
   for (std::size_t v : setup.robots)
     slowest = std::min(slowest, world.vehicles()[v].drive.max_speed);
-  ParamSet p = s.trajectory_params;
+  ParamSet p = setup.robot_sections.trajectory.params;
   const double speed = p.getDouble("max_speed", 0.8 * slowest, 1e-3, 100.0);
   p.requireAllUsed("trajectory (ground robots: max_speed only)");
   if (speed > slowest)
@@ -115,13 +115,14 @@ void teamVehiclePlans(const MapfResult& r, RobotPlans& plans) {
 // given plan (made by the caller on the same instance) is checked and timed like the planner's.
 void planTeam(const Scenario& s, const RunSetup& setup, const WorldModel& world,
               const MapfResult* given, RobotPlans& plans) {
-  ParamSet p = s.planner_params;
+  const PlannerSection& section = setup.robot_sections.planner;
+  ParamSet p = section.params;
   const TeamGrid g = readTeamGrid(s, p);
   const double radius = largestRadius(setup, world);
-  plans.summary.inflation = radius + s.planner_margin;
+  plans.summary.inflation = radius + section.margin;
   const MapfInstance instance = teamInstance(s, setup, g, radius, plans.summary.inflation);
-  auto planner = makeMapfPlanner(s.planner_name, p, "planner.name");
-  checkMapfTableMemory(instance, s.planner_name, s.file);
+  auto planner = makeMapfPlanner(section.name, p, "planner.name");
+  checkMapfTableMemory(instance, section.name, s.file);
   for (const auto& [k, v] : p.effective()) plans.summary.params[k] = v;
   MapfQuery query;
   query.instance = &instance;
@@ -157,7 +158,8 @@ void planEach(const Scenario& s, const RunSetup& setup, const WorldModel& world,
               RobotPlans& plans) {
   for (std::size_t v : setup.robots) {
     const VehiclePlan& p = plans.plans.emplace_back(
-        planVehicle(s, s.vehicles[v], world.vehicles()[v].params.radius, s.planner_params));
+        planVehicle(s, setup.robot_sections.planner, s.vehicles[v],
+                    world.vehicles()[v].params.radius));
     if (!p.success) {
       plans.status = PlanStatus::NoPath;
       plans.message = "no path found for " + s.vehicles[v].name + ": " + p.message;
@@ -174,15 +176,17 @@ void planEach(const Scenario& s, const RunSetup& setup, const WorldModel& world,
 // One robot driven by a navigator, which extends its timed path during the drive.
 void planNavigation(const Scenario& s, const RunSetup& setup, const WorldModel& world,
                     RobotPlans& plans) {
-  const std::string& name = s.planner_name;
-  ParamSet p = s.planner_params;
+  const PlannerSection& section = setup.robot_sections.planner;
+  const std::string& name = section.name;
+  ParamSet p = section.params;
   const double resolution = p.getDouble("resolution", 0.5, 0.01, 100.0);
   auto navigator = makeNavigator(name, p);
   p.requireAllUsed("planner '" + name + "' (in cosim run: resolution and sight)");
   plans.summary.params = p.effective();
   const std::size_t robot = setup.robots.front();
   NavigationWorld nav =
-      navigationWorld(s, world, robot, resolution, plans.cruise_speed, plans.summary.inflation);
+      navigationWorld(s, world, robot, resolution, plans.cruise_speed, section.margin,
+                      plans.summary.inflation);
   plans.paths.resize(1);
   plans.navigator = std::make_unique<NavigationDriver>(
       std::move(navigator), std::move(nav), s.file, s.vehicles[robot],
@@ -223,7 +227,8 @@ RobotPlans planRobots(const Scenario& s, const RunSetup& setup, const WorldModel
   }
   // The timed plan's corners are rounded so that the robots can follow them within their
   // acceleration limit (GroundTimedPath::setSmoothing).
-  const double accel = ParamSet(s.controller_gains).getDouble("max_acceleration", 1.0, 1e-3, 100.0);
+  const double accel = ParamSet(setup.robot_sections.controller.gains)
+                           .getDouble("max_acceleration", 1.0, 1e-3, 100.0);
   for (auto& path : plans.paths) path.setSmoothing(plans.cruise_speed / accel);
   return plans;
 }

@@ -2,18 +2,6 @@
 
 namespace cosim {
 
-RunEnd runEndOf(const std::string& end_reason) {
-  if (end_reason == "goal") return RunEnd::Goal;
-  if (end_reason == "max_time") return RunEnd::MaxTime;
-  if (end_reason == "interrupted") return RunEnd::Interrupted;
-  if (end_reason == "diverged") return RunEnd::Diverged;
-  if (end_reason == "unstable") return RunEnd::Unstable;
-  if (end_reason == "saturated") return RunEnd::Saturated;
-  if (end_reason == "gave_up") return RunEnd::GaveUp;
-  if (end_reason == kNoPathEndReason) return RunEnd::NoPath;
-  return RunEnd::Other;
-}
-
 bool isFault(RunEnd end) {
   return end == RunEnd::Diverged || end == RunEnd::Unstable || end == RunEnd::Saturated;
 }

@@ -17,7 +17,7 @@ namespace {
 // waypoints.
 std::vector<FlightMetrics> eachVehicle(const Scenario& s, const RunSetup& setup,
                                        const RunLog& log) {
-  const bool quadrotor_trajectory = setup.quadrotorSections(s).trajectory_mode != "waypoints";
+  const bool quadrotor_trajectory = setup.quadrotor_sections.trajectory.mode != "waypoints";
   std::vector<FlightMetrics> each;
   for (std::size_t v = 0; v < log.vehicles.size(); ++v)
     each.push_back(computeFlightMetrics(
@@ -101,7 +101,7 @@ std::string failureMessage(const Scenario& s, const RunPlan& plan, const RunLog&
 }
 
 void evaluateOutcome(const Scenario& s, const RunPlan& plan, const RunLog& log, RunMetrics& m) {
-  m.end = runEndOf(log.end_reason);
+  m.end = log.end_reason;
   m.reached_goal = plan.drivable();
   m.min_clearance_m = m.vehicles.empty() ? 0.0 : std::numeric_limits<double>::infinity();
   for (const FlightMetrics& v : m.vehicles) {

@@ -37,7 +37,7 @@ void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario
               .add("scenario_file", std::filesystem::absolute(scenario.file).string())
               .add("timeseries_rows", timeseries_rows)
               .add("path_rows", path_rows)
-              .add("end_reason", log.end_reason)
+              .add("end_reason", runEndName(log.end_reason))
               .str() +
           "\n");
   writeFileAtomically(dir / "path.csv", pathCsv(log));

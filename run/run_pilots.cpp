@@ -35,7 +35,7 @@ std::unique_ptr<GroundController> makeGroundController(ParamSet& gains, const Ve
 void buildRobotPilots(const Scenario& s, const RunSetup& setup, const WorldModel& world,
                       RobotPlans& plans, RunPilots& pilots, bool drivable) {
   for (std::size_t k = 0; k < setup.robots.size(); ++k) {
-    ParamSet gains = s.controller_gains;
+    ParamSet gains = setup.robot_sections.controller.gains;
     pilots.robot_controllers.push_back(
         makeGroundController(gains, world.vehicles()[setup.robots[k]]));
     gains.requireAllUsed("controller.gains (ground robots)");
@@ -52,10 +52,11 @@ void buildRobotPilots(const Scenario& s, const RunSetup& setup, const WorldModel
 
 void buildQuadrotorPilots(const Scenario& s, const RunSetup& setup, QuadrotorPlans& plans,
                           RunPilots& pilots, bool drivable) {
+  const ControllerSection& controller = setup.quadrotor_sections.controller;
   for (std::size_t k = 0; k < setup.quadrotors.size(); ++k) {
-    ParamSet gains = s.controller_gains;
+    ParamSet gains = controller.gains;
     pilots.quadrotor_controllers.push_back(makeFlightController(
-        s.controller_name, gains, plans.airframes[k], s.controller_drag_compensation));
+        controller.name, gains, plans.airframes[k], controller.drag_compensation));
     if (!drivable) continue;
     VehiclePilot& pilot = pilots.quadrotors.emplace_back();
     pilot.believed_airframe = &plans.airframes[k];
@@ -74,8 +75,7 @@ RunPilots buildPilots(const Scenario& scenario, const RunSetup& setup, const Wor
                       RunPlan& plan) {
   RunPilots pilots;
   buildRobotPilots(scenario, setup, world, plan.robots, pilots, plan.drivable());
-  buildQuadrotorPilots(setup.quadrotorSections(scenario), setup, plan.quadrotors, pilots,
-                       plan.drivable());
+  buildQuadrotorPilots(scenario, setup, plan.quadrotors, pilots, plan.drivable());
   return pilots;
 }
 

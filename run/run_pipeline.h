@@ -2,9 +2,10 @@
 // One run of a scenario, for every front end (the cosim program, sweeps, reproductions, Python)
 // and every kind of run (a quadrotor, a quadrotor team, ground robots, robots with quadrotors
 // over them, a navigator, given waypoints), in typed stages:
-//   resolve (run/run_setup.h) -> plan (run/run_plan.h) -> build pilots (run/run_pilots.h) ->
-//   simulate (run/run_simulation.h) -> evaluate (run/run_evaluation.h, metrics.json from
-//   run/metrics_json.h) -> write -> render (run/run_files.h).
+//   prepare (run/prepared_run.h: resolve, run/run_setup.h -> plan, run/run_plan.h -> build
+//   pilots, run/run_pilots.h) -> simulate (run/run_simulation.h) -> conclude (evaluate,
+//   run/run_evaluation.h, metrics.json from run/metrics_json.h -> write -> render,
+//   run/run_files.h).
 // The pipeline prints nothing and exits nothing: what it is doing goes to the request's observer
 // (run/run_events.h), what it found comes back in the RunSummary.
 #include <atomic>
@@ -47,9 +48,16 @@ struct RunRequest {
   LoopProfile* profile = nullptr;  // where the loop's time went (sim/loop_profile.h), if given
 };
 
+// How a run ended for its front end.
+enum class RunOutcome {
+  Succeeded,    // every vehicle reached its goal without a collision
+  TaskFailed,   // no path, goal missed, collision, a fault (the message says which)
+  Interrupted,  // the request's interrupt flag stopped it: nothing finished was written
+};
+
 struct RunSummary {
-  int status = 0;                      // the exit status: 0 ok, 1 task failed
-  std::string message;                 // why the task failed
+  RunOutcome outcome = RunOutcome::Succeeded;
+  std::string message;                 // why the task failed ("" if it succeeded)
   std::vector<FlightMetrics> metrics;  // one per vehicle, in the scenario's order
   double sim_speed_x = 0.0;
   JsonObject metrics_json;  // metrics.json's object (as written into out_dir, if given)
@@ -57,13 +65,17 @@ struct RunSummary {
   // Each vehicle's plan, in the scenario's order (run/run_plan.h vehiclePlans): what the
   // planner made of it, and for a ground robot its timed plan.
   std::vector<VehiclePlan> plans;
+
+  // The exit status of `cosim run`: 0 if the run succeeded, else 1.
+  int exitStatus() const { return outcome == RunOutcome::Succeeded ? 0 : 1; }
 };
 
-// Resolves the scenario's defaults in place (a quadrotor team's controller and trajectory mode:
-// run/run_setup.h), then runs it. Throws InputError for bad input discovered late (unknown
-// planner, bad gains). Stopped by the request's interrupt flag (between stages, in planning,
-// flight and rendering), it returns interruptedRun() having written no metrics.json or index.html.
-RunSummary executeRun(Scenario& scenario, const RunRequest& request);
+// prepareRun -> flyRun -> concludeRun (run/prepared_run.h, run/run_simulation.h). The scenario
+// is read, never changed. Throws InputError for bad input discovered late (unknown planner, bad
+// gains), in the scenario's file. Stopped by the request's interrupt flag (between stages, in
+// planning, flight and rendering), it returns interruptedRun() having written no metrics.json or
+// index.html.
+RunSummary executeRun(const Scenario& scenario, const RunRequest& request);
 
 // Whether the request's interrupt flag is set; what a run stopped by it returns.
 bool stopRequestedFor(const RunRequest& request);

@@ -9,7 +9,7 @@ RunPlan planRun(const Scenario& scenario, const RunSetup& setup, const WorldMode
   RunPlan plan;
   if (setup.ground()) plan.robots = planRobots(scenario, setup, world, request.given_team_plan);
   if (!setup.quadrotors.empty())
-    plan.quadrotors = planQuadrotors(setup.quadrotorSections(scenario), world, setup.quadrotors,
+    plan.quadrotors = planQuadrotors(scenario, setup.quadrotor_sections, world, setup.quadrotors,
                                      setup.quadrotor_planning, request, report);
   if (!drivable(plan.robots.status)) {
     plan.status = plan.robots.status;

@@ -10,22 +10,6 @@ namespace cosim {
 
 namespace {
 
-// The quadrotors' view of a scenario with ground robots: the `aerial` sections in place of the
-// top-level planner, trajectory and controller, which drive the robots.
-Scenario aerialSections(const Scenario& s) {
-  Scenario a = s;
-  a.planner_name = s.aerial.planner_name;
-  a.planner_params = s.aerial.planner_params;
-  a.planner_margin = s.aerial.planner_margin;
-  a.planner_separation = s.aerial.planner_separation;
-  a.trajectory_mode = s.aerial.trajectory_mode;
-  a.trajectory_params = s.aerial.trajectory_params;
-  a.controller_name = s.aerial.controller_name;
-  a.controller_drag_compensation = s.aerial.controller_drag_compensation;
-  a.controller_gains = s.aerial.controller_gains;
-  return a;
-}
-
 // Over ground robots each quadrotor plans alone: aerial.planner.name must be a single-agent
 // planner (a team planner plans quadrotor-only scenarios).
 void checkAerialPlanner(const Scenario& s) {
@@ -38,7 +22,7 @@ void checkAerialPlanner(const Scenario& s) {
                    "unknown single-agent planner '" + name + "' (known: " + known + ")");
 }
 
-void resolveGroundRun(Scenario& s, RunSetup& setup) {
+void resolveGroundRun(const Scenario& s, RunSetup& setup) {
   if (s.disturbances.any() && setup.quadrotors.empty())
     throw InputError(s.file, "disturbances",
                      "wind, rotor drag and ground effect act on quadrotors; this scenario has "
@@ -50,7 +34,8 @@ void resolveGroundRun(Scenario& s, RunSetup& setup) {
   if (setup.robot_planning == Planning::Navigator && setup.robots.size() != 1)
     throw InputError(s.file, "planner.name", "navigators (" + name + ") drive one robot");
   checkAerialPlanner(s);
-  setup.aerial = aerialSections(s);
+  setup.robot_sections = topLevelSections(s);
+  setup.quadrotor_sections = aerialSections(s);
 }
 
 // A quadrotor team whose members all fly given references is not planned (each flies its own);
@@ -70,6 +55,21 @@ bool flyGivenReferences(const Scenario& s) {
   return false;
 }
 
+// Quadrotors alone: the top-level sections are theirs. A team planner plans them together,
+// unless every one flies a given reference.
+void resolveQuadrotorRun(const Scenario& s, RunSetup& setup) {
+  setup.quadrotor_sections = topLevelSections(s);
+  if (!isMapfPlanner(s.planner_name) || flyGivenReferences(s)) return;
+  setup.quadrotor_planning = Planning::Team;
+  // A quadrotor team flies in its members' downwash. Without a controller section it gets indi
+  // rather than the single vehicle's cascade: measured on swarm32.yaml, cascade let a vehicle
+  // sag about 0.2 m under another and break the planned separation (1 downwash violation),
+  // while indi, geometric and dsl_pid kept it (closest 1.48, 1.17 and 1.30 ellipsoids).
+  MotionSections& team = setup.quadrotor_sections;
+  if (!s.controller_given) team.controller.name = "indi";
+  team.trajectory.mode = "minimum_snap";  // what the team flies, whatever the file said
+}
+
 }  // namespace
 
 bool isGroundRun(const Scenario& s) {
@@ -82,7 +82,7 @@ bool isNavigatorName(const std::string& name) {
   return name == "rna" || name == "wf_rna" || name == "d_star_lite";
 }
 
-RunSetup resolveRun(Scenario& s, bool plan_as_point_mass) {
+RunSetup resolveRun(const Scenario& s, bool plan_as_point_mass) {
   RunSetup setup;
   for (std::size_t v = 0; v < s.vehicles.size(); ++v)
     (s.vehicles[v].ground ? setup.robots : setup.quadrotors).push_back(v);
@@ -90,20 +90,13 @@ RunSetup resolveRun(Scenario& s, bool plan_as_point_mass) {
     throw InputError(s.file, "world.moving_obstacles",
                      "moving obstacles need ground robots (omni_base, diff_drive or a URDF): "
                      "quadrotors do not sense them");
-  if (setup.ground()) {
+  if (setup.ground())
     resolveGroundRun(s, setup);
-  } else if (isMapfPlanner(s.planner_name) && !flyGivenReferences(s)) {
-    setup.quadrotor_planning = Planning::Team;
-    // A quadrotor team flies in its members' downwash. Without a controller section it gets indi
-    // rather than the single vehicle's cascade: measured on swarm32.yaml, cascade let a vehicle
-    // sag about 0.2 m under another and break the planned separation (1 downwash violation),
-    // while indi, geometric and dsl_pid kept it (closest 1.48, 1.17 and 1.30 ellipsoids).
-    if (!s.controller_given) s.controller_name = "indi";
-    s.trajectory_mode = "minimum_snap";  // what the team flies, whatever the file said
-  }
+  else
+    resolveQuadrotorRun(s, setup);
   // Seed 003's reproduction plans for a point (run/run_pipeline.h): no margin either.
   if (plan_as_point_mass && setup.quadrotor_planning == Planning::Alone)
-    (setup.aerial ? *setup.aerial : s).planner_margin = 0.0;
+    setup.quadrotor_sections.planner.margin = 0.0;
   return setup;
 }
 

@@ -1,14 +1,14 @@
 #pragma once
 // The first stage of a run: what a scenario asks for, with the defaults that depend on the kind
-// of run resolved. Which vehicles are ground robots (driven by the top-level planner, trajectory
+// of run resolved into a value of its own (the loaded Scenario stays as the file said). Which vehicles are ground robots (driven by the top-level planner, trajectory
 // and controller sections) and which are quadrotors (driven by the top-level sections too, or by
 // the `aerial` sections when they fly over robots); how each group gets its plan; and the
 // defaults of a quadrotor team (its controller and trajectory mode).
 #include <cstddef>
-#include <optional>
 #include <string>
 #include <vector>
 
+#include "run/motion_sections.h"
 #include "sim/scenario.h"
 
 namespace cosim {
@@ -25,18 +25,21 @@ struct RunSetup {
   std::vector<std::size_t> quadrotors;  // likewise
   Planning robot_planning = Planning::Alone;
   Planning quadrotor_planning = Planning::Alone;
-  // The quadrotors' sections when they fly over robots: the scenario with the `aerial` planner,
-  // trajectory and controller in place of the top-level ones (which drive the robots).
-  std::optional<Scenario> aerial;
+  // The robots' sections: the top-level ones (a run with ground robots).
+  MotionSections robot_sections;
+  // The quadrotors' sections: over robots the `aerial` ones, else the top-level ones; with the
+  // defaults of their kind of run resolved (a team's controller and trajectory mode, a
+  // point-mass plan's margin).
+  MotionSections quadrotor_sections;
 
   // A run with ground robots (moving obstacles need them) runs the ground loop; a run of
   // quadrotors alone the flight loop.
   bool ground() const { return !robots.empty(); }
   // The vehicles the top-level sections drive: metrics.json's top-level figures are theirs.
   const std::vector<std::size_t>& primary() const { return ground() ? robots : quadrotors; }
-  // The scenario as the quadrotors' planner, trajectory and controller see it.
-  const Scenario& quadrotorSections(const Scenario& scenario) const {
-    return aerial ? *aerial : scenario;
+  // The sections of the vehicles the top-level sections drive (primary()).
+  const MotionSections& primarySections() const {
+    return ground() ? robot_sections : quadrotor_sections;
   }
 };
 
@@ -46,11 +49,11 @@ bool isGroundRun(const Scenario& scenario);
 // The navigators, which drive one robot deciding step by step: rna, wf_rna and d_star_lite.
 bool isNavigatorName(const std::string& name);
 
-// Sorts the vehicles, picks each group's planning, and resolves in `scenario` the defaults of
-// its kind of run (a quadrotor team flies minimum-snap trajectories, under indi without a
+// Sorts the vehicles, picks each group's planning, and resolves each group's sections with the
+// defaults of its kind of run (a quadrotor team flies minimum-snap trajectories, under indi without a
 // controller section; a point-mass plan keeps no margin). Throws InputError for a scenario no
 // run can serve: moving obstacles without ground robots, disturbances without quadrotors, a
 // navigator for several robots, a team or unknown planner for quadrotors over robots.
-RunSetup resolveRun(Scenario& scenario, bool plan_as_point_mass);
+RunSetup resolveRun(const Scenario& scenario, bool plan_as_point_mass);
 
 }  // namespace cosim

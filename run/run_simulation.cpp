@@ -5,10 +5,8 @@
 #include <thread>
 
 #include "run/navigation_driver.h"
-#include "run/run_end.h"
-#include "run/run_pipeline.h"
+#include "run/prepared_run.h"
 #include "sim/flight_simulation.h"
-#include "sim/ground_simulation.h"
 
 namespace cosim {
 
@@ -26,26 +24,24 @@ RunLog unplannedLog(const Scenario& s) {
     vl.name = v.name;
     vl.goal = v.goal();
   }
-  log.end_reason = kNoPathEndReason;
+  log.end_reason = RunEnd::NoPath;
   return log;
 }
 
-RunLog fly(const Scenario& s, const WorldModel& world, RunPilots& pilots, const RunRequest& request,
-           const RunReporter& report) {
-  report.message("flying (physics step " + std::to_string(s.sim.timestep) + " s)");
+SimulationOptions flightOptions(const Scenario& s, const RunRequest& request) {
   FlightOptions options;
   options.settings = s.sim;
   options.interrupt = request.interrupt;
   options.second_thread = secondThread(request);
   options.profile = request.profile;
-  return simulateFlight(world, s, pilots.quadrotors, options);
+  return flightSimulationOptions(options);
 }
 
 // Before each control step: progress in simulated seconds against the plan's makespan (the run
 // ends about then), then the navigator's next decision, if a navigator drives.
-GroundSimOptions groundOptions(const Scenario& s, RobotPlans& plans, const RunRequest& request,
-                               const RunReporter& report) {
-  GroundSimOptions options;
+SimulationOptions groundOptions(const Scenario& s, RobotPlans& plans, const RunRequest& request,
+                                const RunReporter& report) {
+  SimulationOptions options;
   options.settings = s.sim;
   options.interrupt = request.interrupt;
   options.second_thread = secondThread(request);
@@ -69,30 +65,49 @@ GroundSimOptions groundOptions(const Scenario& s, RobotPlans& plans, const RunRe
   return options;
 }
 
-RunLog drive(const Scenario& s, const RunSetup& setup, const WorldModel& world, RobotPlans& plans,
-             RunPilots& pilots, const RunRequest& request, const RunReporter& report) {
-  const GroundSimOptions options = groundOptions(s, plans, request, report);
-  report.message("driving " + std::to_string(pilots.robots.size()) + " ground robot(s)" +
-                 (setup.quadrotors.empty()
-                      ? std::string()
-                      : " under " + std::to_string(setup.quadrotors.size()) + " quadrotor(s)"));
-  RunLog log = simulateGround(world, s, pilots.robots, pilots.quadrotors, options);
-  if (plans.navigator) {
-    log.vehicles[setup.robots.front()].planned_path = plans.navigator->executed();
-    plans.summary.counters = plans.navigator->counters();
-    plans.plans.front().counters = plans.summary.counters;
-  }
-  return log;
+// What the navigator made of the drive: the robot's executed cells and its counters.
+void recordNavigation(PreparedRun& run, RunLog& log) {
+  RobotPlans& plans = run.plan.robots;
+  if (!plans.navigator) return;
+  log.vehicles[run.setup.robots.front()].planned_path = plans.navigator->executed();
+  plans.summary.counters = plans.navigator->counters();
+  plans.plans.front().counters = plans.summary.counters;
 }
 
 }  // namespace
 
-RunLog simulateRun(const Scenario& scenario, const RunSetup& setup, const WorldModel& world,
-                   RunPlan& plan, RunPilots& pilots, const RunRequest& request,
-                   const RunReporter& report) {
-  if (!plan.drivable()) return unplannedLog(scenario);
-  if (setup.ground()) return drive(scenario, setup, world, plan.robots, pilots, request, report);
-  return fly(scenario, world, pilots, request, report);
+SimulationOptions runLoopOptions(PreparedRun& run) {
+  if (run.setup.ground())
+    return groundOptions(run.scenario, run.plan.robots, run.request, run.report);
+  return flightOptions(run.scenario, run.request);
+}
+
+std::unique_ptr<SimulationLoop> startRunLoop(PreparedRun& run) {
+  run.report.stage(RunStage::Simulate);
+  const RunSetup& setup = run.setup;
+  if (setup.ground())
+    run.report.message(
+        "driving " + std::to_string(setup.robots.size()) + " ground robot(s)" +
+        (setup.quadrotors.empty()
+             ? std::string()
+             : " under " + std::to_string(setup.quadrotors.size()) + " quadrotor(s)"));
+  else
+    run.report.message("flying (physics step " + std::to_string(run.scenario.sim.timestep) + " s)");
+  return std::make_unique<SimulationLoop>(run.world, run.scenario, run.pilots.robots,
+                                          run.pilots.quadrotors, run.loop);
+}
+
+RunLog flyRun(PreparedRun& run) {
+  if (!run.plan.drivable()) {
+    run.report.stage(RunStage::Simulate);
+    return unplannedLog(run.scenario);
+  }
+  const std::unique_ptr<SimulationLoop> loop = startRunLoop(run);
+  while (loop->stepControl()) {
+  }
+  RunLog log = loop->finish();
+  recordNavigation(run, log);
+  return log;
 }
 
 }  // namespace cosim

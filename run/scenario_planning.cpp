@@ -7,11 +7,12 @@
 
 namespace cosim {
 
-VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, double vehicle_radius,
-                        ParamSet params) {
+VehiclePlan planVehicle(const Scenario& scenario, const PlannerSection& section,
+                        const VehicleSpec& vehicle, double vehicle_radius) {
+  ParamSet params = section.params;
   VehiclePlan plan;
-  plan.inflation = vehicle_radius + scenario.planner_margin;
-  if (scenario.planner_name.empty()) {
+  plan.inflation = vehicle_radius + section.margin;
+  if (section.name.empty()) {
     plan.success = true;
     plan.status = PlannerStatus::ExactSolution;
     plan.path.waypoints.push_back(vehicle.start);
@@ -23,9 +24,9 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, do
   }
   const double time_limit = params.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);
   auto planner =
-      makePlanner(scenario.planner_name, params, "key planner.name", &plan.ignored_params);
+      makePlanner(section.name, params, "key planner.name", &plan.ignored_params);
   plan.params = params.effective();
-  plan.params["margin"] = std::to_string(scenario.planner_margin);
+  plan.params["margin"] = std::to_string(section.margin);
 
   PlanningProblem problem;
   problem.world = &scenario.world;
@@ -65,10 +66,17 @@ VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, do
   return plan;
 }
 
+VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, double vehicle_radius,
+                        ParamSet planner_params) {
+  PlannerSection section = topLevelSections(scenario).planner;
+  section.params = std::move(planner_params);
+  return planVehicle(scenario, section, vehicle, vehicle_radius);
+}
+
 VehiclePlan planFirstVehicle(const Scenario& scenario) {
   const WorldModel world = WorldModel::build(scenario);
-  return planVehicle(scenario, scenario.vehicles.front(), world.vehicles().front().params.radius,
-                     scenario.planner_params);
+  return planVehicle(scenario, topLevelSections(scenario).planner, scenario.vehicles.front(),
+                     world.vehicles().front().params.radius);
 }
 
 }  // namespace cosim

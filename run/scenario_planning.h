@@ -7,6 +7,7 @@
 
 #include "planning/path.h"
 #include "planning/planner_status.h"
+#include "run/motion_sections.h"
 #include "sim/scenario.h"
 
 namespace cosim {
@@ -34,8 +35,13 @@ struct VehiclePlan {
   std::vector<double> point_times;
 };
 
-// planner_params is consumed (parameters are marked used); `vehicle_radius` comes from the model.
-// Throws InputError for an unknown planner or bad parameters.
+// `vehicle` planned in the scenario's world by `planner` (its name, parameters and margin);
+// `vehicle_radius` comes from the model. Throws InputError for an unknown planner or bad
+// parameters.
+VehiclePlan planVehicle(const Scenario& scenario, const PlannerSection& planner,
+                        const VehicleSpec& vehicle, double vehicle_radius);
+// The same with the scenario's top-level planner and `planner_params` in place of its own
+// (a benchmark's parameters).
 VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, double vehicle_radius,
                         ParamSet planner_params);
 

@@ -47,7 +47,7 @@ void PhysicsStepper::startHovering(mjData* d) {
   aerodynamics_.apply(m_, d, plant_pointers_, 0.0);
 }
 
-const char* PhysicsStepper::step(mjData* d, RunLog& log) {
+std::optional<RunEnd> PhysicsStepper::step(mjData* d, RunLog& log) {
   applyForces(d);
   mj_step(m_, d);
   return afterStep(d, log);
@@ -72,7 +72,7 @@ void PhysicsStepper::applyForces(mjData* d) {
   }
 }
 
-const char* PhysicsStepper::afterStep(mjData* d, RunLog& log) {
+std::optional<RunEnd> PhysicsStepper::afterStep(mjData* d, RunLog& log) {
   ++steps_;
   contacts_.update(d, log);
   if (sensing_)

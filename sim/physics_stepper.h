@@ -43,9 +43,9 @@ class PhysicsStepper {
 
   // Starts the wall clock of the loop (call just before it).
   void startClock() { wall_start_ = std::chrono::steady_clock::now(); }
-  // One physics step. Returns the run's end_reason if the state can no longer be trusted
-  // ("diverged", "unstable"; see sim/simulation_health.h), else nullptr.
-  const char* step(mjData* d, RunLog& log);
+  // One physics step. Returns how the run ends if the state can no longer be trusted
+  // (Diverged, Unstable; see sim/simulation_health.h), else none.
+  std::optional<RunEnd> step(mjData* d, RunLog& log);
   // The same step in parts, for a loop that times them or overlaps them (sim/simulation_loop.h):
   // applyForces, then the engine (mj_step, or mj_step1 then mj_step2), then afterStep.
   // applyForces advances the rotors and writes the step's applied forces (rotors, air, drive
@@ -53,7 +53,7 @@ class PhysicsStepper {
   // and velocities on another thread, unless forcesReadGeometry(). afterStep books contacts,
   // samples the sensors and checks the state (step's return value).
   void applyForces(mjData* d);
-  const char* afterStep(mjData* d, RunLog& log);
+  std::optional<RunEnd> afterStep(mjData* d, RunLog& log);
   // The forces read positions MuJoCo computes (ground effect casts rays against the geoms).
   bool forcesReadGeometry() const { return ground_effect_; }
   // Records in `log` the loop's wall time, the simulated time, the steps taken and MuJoCo's

@@ -4,10 +4,31 @@
 // or re-evaluated without simulating it again.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace cosim {
+
+// How a run's simulation ended. Decisions use the enum; its name (runEndName) is written only
+// where the end is shown: metrics.json's and run.json's end_reason, and messages.
+enum class RunEnd {
+  Running,      // not ended yet: a loop stepped from outside, looked at mid-run ("running")
+  Goal,         // every vehicle reached its goal and held it ("goal")
+  MaxTime,      // sim.max_time ran out ("max_time")
+  Interrupted,  // SIGINT/SIGTERM, the run's interrupt flag ("interrupted")
+  Diverged,     // NaN or runaway state ("diverged")
+  Unstable,     // MuJoCo found bad numbers in the state or controls ("unstable")
+  Saturated,    // a quadrotor's mixer stayed saturated too long ("saturated")
+  GaveUp,       // the navigator gave up ("gave_up")
+  NoPath,       // not simulated: a vehicle had no plan to follow ("no_path")
+};
+
+// The name a run's end is written with: "running", "goal", "max_time", ...
+const char* runEndName(RunEnd end);
+// The end written as `name` (run.json read back), or none for a name this version does not know.
+std::optional<RunEnd> runEndNamed(std::string_view name);
 
 struct LogSample {
   double t = 0.0;
@@ -62,9 +83,7 @@ struct RunLog {
   double sim_time = 0.0;    // simulated seconds
   double wall_time = 0.0;   // wall-clock seconds of the simulation loop
   long physics_steps = 0;
-  // "goal", "max_time", "interrupted", "diverged" (NaN or runaway state), "unstable" (MuJoCo
-  // bad-number warning), "saturated" (mixer saturated for more than 2 s on end)
-  std::string end_reason;
+  RunEnd end_reason = RunEnd::Running;
   int mujoco_warnings = 0;
 };
 

@@ -17,10 +17,10 @@ bool mujocoFoundBadNumbers(const mjData* d) {
   return false;
 }
 
-const char* physicsFault(const mjModel* m, const mjData* d) {
-  if (!stateIsFinite(m, d)) return "diverged";
-  if (mujocoFoundBadNumbers(d)) return "unstable";
-  return nullptr;
+std::optional<RunEnd> physicsFault(const mjModel* m, const mjData* d) {
+  if (!stateIsFinite(m, d)) return RunEnd::Diverged;
+  if (mujocoFoundBadNumbers(d)) return RunEnd::Unstable;
+  return std::nullopt;
 }
 
 }  // namespace cosim

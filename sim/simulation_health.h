@@ -2,6 +2,10 @@
 // Checks after a physics step that the simulation can still be trusted.
 #include <mujoco/mujoco.h>
 
+#include <optional>
+
+#include "sim/run_log.h"
+
 namespace cosim {
 
 // Every generalised coordinate is a finite number.
@@ -12,8 +16,8 @@ bool stateIsFinite(const mjModel* m, const mjData* d);
 // nothing happened. True once MuJoCo has done so.
 bool mujocoFoundBadNumbers(const mjData* d);
 
-// The run's end_reason if the step just taken cannot be trusted: "diverged" (a non-finite
-// coordinate), "unstable" (MuJoCo found bad numbers); nullptr if it can.
-const char* physicsFault(const mjModel* m, const mjData* d);
+// How the run ends if the step just taken cannot be trusted: Diverged (a non-finite
+// coordinate), Unstable (MuJoCo found bad numbers); none if it can.
+std::optional<RunEnd> physicsFault(const mjModel* m, const mjData* d);
 
 }  // namespace cosim

@@ -76,7 +76,7 @@ SimulationLoop::SimulationLoop(const WorldModel& world, const Scenario& scenario
 
   beginVehicles(scenario, robots, quadrotors);
   states_.resize(robots.size());
-  if (physics_.maxSteps() <= 0) end("max_time");
+  if (physics_.maxSteps() <= 0) end(RunEnd::MaxTime);
   if (options_.second_thread && !physics_.forcesReadGeometry() && m->opt.integrator != mjINT_RK4) {
     worker_ = std::make_unique<StepWorker>();
     qpos_seen_.resize(m->nq);
@@ -125,7 +125,7 @@ bool SimulationLoop::stepControl() {
   LoopProfile* profile = options_.profile;
   const double t0 = profile ? seconds() : 0.0;
   const double cpu0 = profile ? LoopProfile::threadCpu() : 0.0;
-  const char* reason = nullptr;
+  std::optional<RunEnd> reason;
   const long last =
       std::min(physics_.stepsTaken() + physics_.stepsPerControl(), physics_.maxSteps());
   if (worker_) {
@@ -140,12 +140,12 @@ bool SimulationLoop::stepControl() {
     profile->wall += seconds() - t0;
     profile->cpu += LoopProfile::threadCpu() - cpu0;
   }
-  if (reason) return end(reason);
-  if (physics_.stepsTaken() >= physics_.maxSteps()) return end("max_time");
+  if (reason) return end(*reason);
+  if (physics_.stepsTaken() >= physics_.maxSteps()) return end(RunEnd::MaxTime);
   return true;
 }
 
-const char* SimulationLoop::physicsStep() {
+std::optional<RunEnd> SimulationLoop::physicsStep() {
   placeObstacles(d_->time);
   // (Wind, rotor drag and ground effect act on the quadrotors, also over the robots.)
   LoopProfile* profile = options_.profile;
@@ -155,7 +155,7 @@ const char* SimulationLoop::physicsStep() {
   t = lap(t, &profile->forces);
   mj_step(world_.model(), d_.get());
   t = lap(t, &profile->engine);
-  const char* fault = physics_.afterStep(d_.get(), log_);
+  const std::optional<RunEnd> fault = physics_.afterStep(d_.get(), log_);
   lap(t, &profile->after_step);
   ++profile->physics_steps;
   return fault;
@@ -169,7 +169,7 @@ const char* SimulationLoop::physicsStep() {
 // quaternions in place): the second thread reads a copy taken before (view_). mj_step1 begins
 // with MuJoCo's bad-state checks, which may reset the state; they run here first, so that
 // mj_step1 finds nothing to change.
-const char* SimulationLoop::overlappedStep() {
+std::optional<RunEnd> SimulationLoop::overlappedStep() {
   const mjModel* m = world_.model();
   mjData* d = d_.get();
   placeObstacles(d->time);
@@ -177,7 +177,7 @@ const char* SimulationLoop::overlappedStep() {
   mj_checkVel(m, d);
   std::copy(d->qpos, d->qpos + m->nq, qpos_seen_.begin());
   view_.time = d->time;
-  control_reason_ = nullptr;
+  control_reason_.reset();
   worker_->start([this] { secondThreadJob(); });
   LoopProfile* profile = options_.profile;
   double t = profile ? seconds() : 0.0;
@@ -189,7 +189,7 @@ const char* SimulationLoop::overlappedStep() {
   control_due_ = false;
   mj_step2(m, d);
   if (profile) t = lap(t, &profile->engine);
-  const char* fault = physics_.afterStep(d, log_);
+  const std::optional<RunEnd> fault = physics_.afterStep(d, log_);
   if (profile) {
     lap(t, &profile->after_step);
     ++profile->physics_steps;
@@ -205,22 +205,22 @@ void SimulationLoop::secondThreadJob() {
   if (profile) lap(t, &profile->forces);
 }
 
-const char* SimulationLoop::control() {
-  if (const char* reason = prepare()) return reason;
+std::optional<RunEnd> SimulationLoop::control() {
+  if (const std::optional<RunEnd> reason = prepare()) return reason;
   return controlVehicles(d_.get());
 }
 
-const char* SimulationLoop::prepare() {
-  if (options_.interrupt && options_.interrupt->load()) return "interrupted";
+std::optional<RunEnd> SimulationLoop::prepare() {
+  if (options_.interrupt && options_.interrupt->load()) return RunEnd::Interrupted;
   const mjData* d = d_.get();
   const auto& vehicles = world_.vehicles();
   for (std::size_t v = 0; v < vehicles.size(); ++v)
     if (vehicles[v].ground) states_[pilot_[v]] = readPlanarState(d, vehicles[v]);
-  if (options_.before_control && !options_.before_control(d->time, states_)) return "gave_up";
-  return nullptr;
+  if (options_.before_control && !options_.before_control(d->time, states_)) return RunEnd::GaveUp;
+  return std::nullopt;
 }
 
-const char* SimulationLoop::controlVehicles(const mjData* d) {
+std::optional<RunEnd> SimulationLoop::controlVehicles(const mjData* d) {
   const auto& vehicles = world_.vehicles();
   LoopProfile* profile = options_.profile;
   const double t0 = profile ? seconds() : 0.0;
@@ -257,12 +257,12 @@ const char* SimulationLoop::controlVehicles(const mjData* d) {
       ++profile->logged_steps;
     }
   }
-  if (diverged || saturated) return diverged ? "diverged" : "saturated";
-  if (all_done) return "goal";
-  return nullptr;
+  if (diverged || saturated) return diverged ? RunEnd::Diverged : RunEnd::Saturated;
+  if (all_done) return RunEnd::Goal;
+  return std::nullopt;
 }
 
-bool SimulationLoop::end(const char* reason) {
+bool SimulationLoop::end(RunEnd reason) {
   end_reason_ = reason;
   done_ = true;
   return false;
@@ -274,7 +274,7 @@ double SimulationLoop::time() const {
 
 RunLog SimulationLoop::finish() {
   if (!d_) throw std::logic_error("SimulationLoop::finish called twice");
-  if (!done_) end("interrupted");
+  if (!done_) end(RunEnd::Interrupted);
   log_.end_reason = end_reason_;
   physics_.finish(d_.get(), log_);
   if (options_.profile)

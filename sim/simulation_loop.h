@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,8 +43,8 @@ struct SimulationOptions {
   double log_rate = 50.0;                        // Hz
   const std::atomic<bool>* interrupt = nullptr;  // set by SIGINT/SIGTERM handlers
   // Called at each control step before the controllers, with the robots' measured states; a
-  // navigator extends the pilots' paths here. Returning false ends the run with end_reason
-  // "gave_up".
+  // navigator extends the pilots' paths here. Returning false ends the run as
+  // RunEnd::GaveUp.
   std::function<bool(double t, const std::vector<PlanarState>& states)> before_control;
   // Centre (x, y) of moving obstacle i at time t; default: the scenario's path and speed.
   std::function<Eigen::Vector2d(std::size_t i, double t)> obstacle_position;
@@ -84,18 +85,18 @@ class SimulationLoop {
   SimulationLoop& operator=(const SimulationLoop&) = delete;
 
   // One control period: the controllers at time(), then up to stepsPerControl physics steps.
-  // Returns false once the run has ended: every vehicle reached its goal and held it ("goal"),
-  // max_time, an interrupt, a fault ("diverged": a NaN state or a quadrotor far outside the
-  // world; "unstable": MuJoCo found bad numbers; "saturated": a quadrotor's mixer), or
+  // Returns false once the run has ended: every vehicle reached its goal and held it (Goal),
+  // max_time, an interrupt, a fault (Diverged: a NaN state or a quadrotor far outside the
+  // world; Unstable: MuJoCo found bad numbers; Saturated: a quadrotor's mixer), or
   // before_control giving up. Does nothing once the run has ended.
   bool stepControl();
   bool done() const { return done_; }
   double time() const;                                          // s of simulated time
-  const std::string& endReason() const { return end_reason_; }  // empty until the run ends
+  RunEnd endReason() const { return end_reason_; }  // Running until the run ends
   // The run's log, with the wall time, simulated time and physics steps. Callable once; frees
-  // the mjData. A run that has not ended ends "interrupted".
+  // the mjData. A run that has not ended ends Interrupted.
   RunLog finish();
-  // The log so far, as finish() would return it at this moment (end_reason: endReason(), empty
+  // The log so far, as finish() would return it at this moment (end_reason: endReason(), Running
   // while the run goes on), without ending the run: for a front end's metrics mid-flight. A copy
   // of every sample. Throws std::logic_error after finish.
   RunLog snapshot() const;
@@ -111,16 +112,16 @@ class SimulationLoop {
   void beginVehicles(const Scenario& scenario, std::vector<GroundPilot>& robots,
                      std::vector<VehiclePilot>& quadrotors);
   void placeObstacles(double t);
-  // The control step: every vehicle's controller and the log; a reason to end the run, or nullptr.
+  // The control step: every vehicle's controller and the log; how the run ends, or none.
   // prepare (the interrupt, the robots' states, before_control) runs on the loop's thread,
   // controlVehicles on the second thread when there is one.
-  const char* control();
-  const char* prepare();
-  const char* controlVehicles(const mjData* d);
-  const char* physicsStep();     // one physics step on one thread; a fault, or nullptr
-  const char* overlappedStep();  // the same with the second thread; the control step first
+  std::optional<RunEnd> control();
+  std::optional<RunEnd> prepare();
+  std::optional<RunEnd> controlVehicles(const mjData* d);
+  std::optional<RunEnd> physicsStep();     // one physics step on one thread; a fault, or none
+  std::optional<RunEnd> overlappedStep();  // the same with the second thread; control first
   void secondThreadJob();        // the second thread's share of overlappedStep
-  bool end(const char* reason);
+  bool end(RunEnd reason);
 
   const WorldModel& world_;
   SimulationOptions options_;
@@ -140,10 +141,10 @@ class SimulationLoop {
   mjData view_{};
   std::vector<mjtNum> qpos_seen_;
   bool control_due_ = false;            // the next overlapped step starts with the control step
-  const char* control_reason_ = nullptr;  // what the second thread's control step ended with
+  std::optional<RunEnd> control_reason_;  // what the second thread's control step ended with
   long control_count_ = 0;
   bool done_ = false;
-  std::string end_reason_;
+  RunEnd end_reason_ = RunEnd::Running;
   double end_time_ = 0.0;  // time() after finish
 };
 

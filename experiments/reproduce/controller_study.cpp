@@ -67,7 +67,7 @@ struct Row {
   std::string controller;
   double speed = 0.0;
   FlightMetrics metrics;
-  std::string end_reason;
+  RunEnd end_reason = RunEnd::Running;
 };
 
 Row fly(const StudyController& c, double speed, const Options& options) {
@@ -153,10 +153,10 @@ Report controllerStudy(const Options& options) {
         .add("speed_mps", r.speed)
         .add("rmse_m", r.metrics.rmse_m)
         .add("max_error_m", r.metrics.max_error_m)
-        .add("reached_goal", r.metrics.reached_goal && r.end_reason == "goal")
+        .add("reached_goal", r.metrics.reached_goal && r.end_reason == RunEnd::Goal)
         .add("estimation_rmse_m", r.metrics.estimation_rmse_m)
         .add("saturated_fraction", r.metrics.saturated_fraction)
-        .add("end_reason", r.end_reason);
+        .add("end_reason", runEndName(r.end_reason));
     json_rows.push_back(j);
     csv += r.controller + "," + fixed(r.speed, 1) + "," + JsonObject::number(r.metrics.rmse_m) +
            "," + JsonObject::number(r.metrics.max_error_m) + "," +
@@ -193,8 +193,9 @@ Report controllerStudy(const Options& options) {
     md << "| " << fixed(speeds[k], 1) << " |";
     for (std::size_t c = 0; c < per_speed; ++c) {
       const Row& r = rows[k * per_speed + c];
+      const std::string ended = runEndName(r.end_reason);
       md << " " << fixed(r.metrics.rmse_m, 4)
-         << (r.end_reason == "goal" ? "" : " (" + r.end_reason + ")") << " |";
+         << (r.end_reason == RunEnd::Goal ? "" : " (" + ended + ")") << " |";
     }
     const double ratio =
         rows[k * per_speed + 3].metrics.rmse_m / rows[k * per_speed].metrics.rmse_m;

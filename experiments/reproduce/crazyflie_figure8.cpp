@@ -86,7 +86,7 @@ void setRotorConstant(std::string& xml, const std::string& name, const std::stri
 struct Row {
   std::string controller;
   double timescale = 1.0, peak_speed = 0.0, rmse = 0.0, max_error = 0.0;
-  std::string end_reason;
+  RunEnd end_reason = RunEnd::Running;
 };
 
 Row fly(const Variant& v, double timescale, const Options& options) {
@@ -146,8 +146,9 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<double>& sc
        << fixed(find(rows, controllers[0]->label, ts).peak_speed, 2) << " |";
     for (const Variant* c : controllers) {
       const Row& r = find(rows, c->label, ts);
+      const std::string ended = runEndName(r.end_reason);
       md << " " << fixed(r.rmse, 4) << " / " << fixed(r.max_error, 4)
-         << (r.end_reason == "goal" ? "" : " (" + r.end_reason + ")") << " |";
+         << (r.end_reason == RunEnd::Goal ? "" : " (" + ended + ")") << " |";
     }
     md << "\n";
   }
@@ -216,7 +217,7 @@ Report crazyflieFigure8(const Options& options) {
         .add("peak_speed_mps", r.peak_speed)
         .add("rmse_m", r.rmse)
         .add("max_error_m", r.max_error)
-        .add("end_reason", r.end_reason);
+        .add("end_reason", runEndName(r.end_reason));
     json_rows.push_back(j);
     csv += r.controller + "," + fixed(r.timescale, 2) + "," + JsonObject::number(r.peak_speed) +
            "," + JsonObject::number(r.rmse) + "," + JsonObject::number(r.max_error) + "\n";

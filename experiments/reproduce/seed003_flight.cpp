@@ -244,7 +244,7 @@ Report seed003Flight(const Options& options) {
           .add("rmse_m", f.rmse_m)
           .add("max_error_m", f.max_error_m)
           .add("flight_time_s", f.flight_time_s)
-          .add("status", r.status)
+          .add("status", r.exitStatus())
           .add("message", r.message);
       rows.push_back(row);
     }

@@ -44,7 +44,7 @@ RunSummary runText(const std::string& text, const std::string& name, std::string
 TEST(GroundTeamRun, TenRobotsOnValidCbsPlanHaveNoRobotContacts) {
   std::string metrics;
   const RunSummary r = runText(teamScenario("cbs"), "ground-team", metrics);
-  EXPECT_EQ(r.status, 0) << r.message;
+  EXPECT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_EQ(test::jsonNumber(metrics, "robots"), 10);
   EXPECT_EQ(test::jsonNumber(metrics, "robot_contacts"), 0);
   EXPECT_EQ(test::jsonNumber(metrics, "collisions"), 0);
@@ -81,7 +81,7 @@ TEST(GroundTeamRun, IndependentPathsThroughEachOtherMakeRobotContacts) {
   // Straight across, each robot's own shortest path: the rows meet head-on in the middle.
   std::string metrics;
   const RunSummary r = runText(teamScenario("independent_astar", true), "ground-clash", metrics);
-  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.exitStatus(), 1);
   EXPECT_GE(test::jsonNumber(metrics, "robot_contacts"), 5);
 }
 
@@ -96,7 +96,7 @@ TEST(GroundNavigationRun, RnaRobotCrossesBetweenPatrollingCylindersWithoutTouchi
   const RunSummary r = executeRun(s, request);
   const std::string metrics = test::slurp(request.out_dir / "metrics.json");
   std::filesystem::remove_all(request.out_dir);
-  EXPECT_EQ(r.status, 0) << r.message;
+  EXPECT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_EQ(test::jsonNumber(metrics, "moving_obstacles"), 3);
   EXPECT_EQ(test::jsonNumber(metrics, "moving_obstacle_contacts"), 0);
   EXPECT_GT(test::jsonNumber(metrics, "min_moving_obstacle_distance_m"), 0.0);

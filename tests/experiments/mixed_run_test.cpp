@@ -64,7 +64,7 @@ std::string vehicleEntry(const std::string& metrics, const std::string& name) {
 TEST(GroundTeamWithUavs, RobotsOnCbsPlanAndQuadrotorsOverheadAllArriveWithoutContacts) {
   std::string metrics;
   const RunSummary r = runText(kTeamWithUavs, "mixed-team", metrics);
-  EXPECT_EQ(r.status, 0) << r.message;
+  EXPECT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal"));
   EXPECT_EQ(test::jsonNumber(metrics, "robots"), 4);
   EXPECT_EQ(test::jsonNumber(metrics, "uavs"), 2);
@@ -91,14 +91,14 @@ TEST(GroundTeamWithUavs, RobotsOnCbsPlanAndQuadrotorsOverheadAllArriveWithoutCon
 TEST(GroundTeamWithUavs, QuadrotorCrossingARobotAtItsHeightIsARobotUavContact) {
   std::string low, high;
   const RunSummary through = runText(crossing(0.06), "mixed-cross-low", low);
-  EXPECT_EQ(through.status, 1);
+  EXPECT_EQ(through.exitStatus(), 1);
   EXPECT_EQ(through.message, "collision");
   EXPECT_GE(test::jsonNumber(low, "robot_uav_contacts"), 1) << low;
   EXPECT_GE(test::jsonNumber(low, "collisions"), 1);
   EXPECT_GE(test::jsonNumber(vehicleEntry(low, "r0"), "contacts"), 1) << low;
   // The same crossing 0.5 m up passes over the robot.
   const RunSummary over = runText(crossing(0.5), "mixed-cross-high", high);
-  EXPECT_EQ(over.status, 0) << over.message;
+  EXPECT_EQ(over.exitStatus(), 0) << over.message;
   EXPECT_EQ(test::jsonNumber(high, "robot_uav_contacts"), 0);
   EXPECT_EQ(test::jsonNumber(high, "collisions"), 0);
 }
@@ -109,7 +109,7 @@ TEST(GroundTeamWithUavs, SaturatedQuadrotorEndsTheRunAsAFault) {
   const RunSummary r =
       runText(crossing(0.8, "quad_1500g"), "mixed-saturated", metrics,
               {"aerial.controller.name=geometric", "aerial.controller.gains.k_x_xy=10000"});
-  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.exitStatus(), 1);
   EXPECT_NE(r.message.find("saturated"), std::string::npos) << r.message;
   EXPECT_NE(metrics.find("\"fault\": \"saturated\""), std::string::npos) << metrics;
   // From the log (sampled at the robots' 50 Hz): the 2 s limit, give or take a sample. The
@@ -124,7 +124,7 @@ TEST(GroundTeamWithUavs, BundledScenarioFliesOverTheTeamWithoutContacts) {
       test::runWithoutPictures(loadScenario(std::string(COSIM_SOURCE_DIR) +
                                             "/experiments/scenarios/ground_team_with_uavs.yaml"),
                                "mixed-bundled", metrics);
-  EXPECT_EQ(r.status, 0) << r.message;
+  EXPECT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_EQ(test::jsonNumber(metrics, "robots"), 8);
   EXPECT_EQ(test::jsonNumber(metrics, "uavs"), 2);
   EXPECT_EQ(test::jsonNumber(metrics, "collisions"), 0);
@@ -173,11 +173,11 @@ namespace {
 // input rather than a silently calm run.
 TEST(GroundTeamWithUavs, WindActsOnTheQuadrotorsOnly) {
   std::string calm, windy;
-  ASSERT_EQ(runText(kTeamWithUavs, "mixed-calm", calm).status, 0);
+  ASSERT_EQ(runText(kTeamWithUavs, "mixed-calm", calm).exitStatus(), 0);
   const RunSummary r =
       runText(kTeamWithUavs, "mixed-windy", windy,
               {"disturbances.wind=[1.5, 0, 0]", "disturbances.gust=0.3", "disturbances.drag=0.05"});
-  EXPECT_EQ(r.status, 0) << r.message;
+  EXPECT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_GT(test::jsonNumber(windy, "uav_rmse_m"), 3.0 * test::jsonNumber(calm, "uav_rmse_m"));
   EXPECT_EQ(test::jsonNumber(windy, "rmse_m"), test::jsonNumber(calm, "rmse_m"));
   EXPECT_EQ(test::jsonNumber(windy, "executed_makespan_s"),

@@ -35,7 +35,7 @@ RunSummary runTeam(const std::string& text, const std::string& name, std::string
 TEST(QuadrotorTeamRun, FourCrossingCf2ArriveWithoutEnteringEachOthersDownwashEllipsoid) {
   std::string metrics;
   const RunSummary r = runTeam(crossingTeam("{name: lacam, margin: 0.1}"), "team-cf2", metrics);
-  ASSERT_EQ(r.status, 0) << r.message;
+  ASSERT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal"));
   EXPECT_EQ(test::jsonNumber(metrics, "collisions"), 0);
   EXPECT_EQ(test::jsonNumber(metrics, "uav_contacts"), 0);
@@ -60,7 +60,7 @@ TEST(QuadrotorTeamRun, ASeparationSmallerThanTheModelsIsCaughtByTheMetrics) {
 TEST(QuadrotorTeamRun, WithoutAControllerSectionATeamFliesIndiAndAWrittenOneIsKept) {
   std::string metrics;
   RunSummary r = runTeam(crossingTeam("{name: lacam, margin: 0.1}", ""), "team-default", metrics);
-  ASSERT_EQ(r.status, 0) << r.message;
+  ASSERT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_NE(metrics.find("\"controller\": \"indi\""), std::string::npos);
   EXPECT_EQ(test::jsonNumber(metrics, "downwash_violations"), 0);
   r = runTeam(crossingTeam("{name: lacam, margin: 0.1}", "controller: {name: cascade}\n"),
@@ -113,7 +113,7 @@ TEST(QuadrotorTeamRun, ADenseSwapAtHalfAMetreFliesWithoutContactOrDownwashViolat
   for (const std::string controller : {"", "controller: {name: cascade}\n"}) {
     std::string metrics;
     const RunSummary r = runTeam(denseSwap(controller), "team-dense", metrics);
-    ASSERT_EQ(r.status, 0) << controller << r.message;
+    ASSERT_EQ(r.exitStatus(), 0) << controller << r.message;
     EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal")) << controller;
     EXPECT_EQ(test::jsonNumber(metrics, "collisions"), 0) << controller;
     EXPECT_EQ(test::jsonNumber(metrics, "uav_contacts"), 0) << controller;

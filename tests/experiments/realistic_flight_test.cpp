@@ -26,7 +26,7 @@ Flight canyonWith(const std::string& preset) {
 TEST(RealisticFlight, CanyonWithMotionCaptureTracksToMillimetresAndIdealBetter) {
   const Flight mocap = canyonWith("mocap"), ideal = canyonWith("ideal"),
                onboard = canyonWith("onboard");
-  ASSERT_EQ(mocap.summary.status, 0) << mocap.summary.message;
+  ASSERT_EQ(mocap.summary.exitStatus(), 0) << mocap.summary.message;
   EXPECT_EQ(jsonNumber(mocap.metrics, "collisions"), 0);
   EXPECT_GE(jsonNumber(mocap.metrics, "rmse_m"), 0.002);
   EXPECT_LE(jsonNumber(mocap.metrics, "rmse_m"), 0.05);
@@ -41,7 +41,7 @@ TEST(RealisticFlight, DefaultScenarioFliesOnItsEstimateThroughRotorDrag) {
   const Scenario s =
       loadScenario(std::string(COSIM_SOURCE_DIR) + "/experiments/scenarios/default.yaml");
   const RunSummary r = runWithoutPictures(s, "default-realistic", metrics);
-  ASSERT_EQ(r.status, 0) << r.message;
+  ASSERT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_EQ(jsonNumber(metrics, "collisions"), 0);
   EXPECT_NE(metrics.find("\"sensors\": \"mocap\""), std::string::npos);
   EXPECT_NE(metrics.find("\"estimator\": \"ekf\""), std::string::npos);

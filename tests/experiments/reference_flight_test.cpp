@@ -76,7 +76,7 @@ double rmseUntil(const std::vector<std::vector<double>>& rows, double until, std
 
 TEST(ReferenceFlight, FigureEightRmseCoversTheReferencesDurationAndRefColumnsAreTheReference) {
   const Flown f = flyFigureEight("figure8-reference", {});
-  ASSERT_EQ(f.summary.status, 0) << f.summary.message;
+  ASSERT_EQ(f.summary.exitStatus(), 0) << f.summary.message;
   EXPECT_TRUE(f.metrics["reached_goal"].get<bool>());
   EXPECT_EQ(f.metrics["planning_time_ms"].get<double>(), 0.0);  // not planned
   const auto& v = f.metrics["vehicles"][0];
@@ -108,7 +108,7 @@ TEST(ReferenceFlight, AReferenceLongerThanMaxTimeSaysSoAndTheRmseCoversTheRun) {
   // At timescale 2 the figure-eight lasts 14.6 s; the run stops at 3 s.
   const Flown f =
       flyFigureEight("figure8-max-time", {"vehicles[0].reference.timescale=2", "sim.max_time=3"});
-  EXPECT_EQ(f.summary.status, 1);
+  EXPECT_EQ(f.summary.exitStatus(), 1);
   EXPECT_EQ(f.summary.message, "the reference lasts 14.57 s, longer than sim.max_time 3 s");
   EXPECT_EQ(f.metrics["message"], f.summary.message);
   EXPECT_FALSE(f.metrics["reached_goal"].get<bool>());

@@ -1,15 +1,19 @@
 // The run pipeline as a library (what a Python front end calls): without an output folder it
 // writes nothing and hands back everything the files would hold (metrics.json's object, the
 // log, each vehicle's plan); it tells an observer its stages, lines and progress instead of
-// printing; a team's top-level figures are the whole team's.
+// printing; a team's top-level figures are the whole team's. The run resolves its defaults beside
+// the scenario, which stays as loaded; how a run ended is an enum with one name for each end.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "run/run_pipeline.h"
+#include "run/run_setup.h"
 #include "sim/run_log_io.h"
 #include "tests/experiments/cli_test_support.h"
 
@@ -67,7 +71,7 @@ RunSummary runInEmptyFolder(const std::string& text, const std::string& name,
 
 TEST(RunLibrary, WithoutAnOutputFolderWritesNothingAndReturnsWhatTheFilesWouldHold) {
   const RunSummary r = runInEmptyFolder(kTwoCf2, "library-flight");
-  ASSERT_EQ(r.status, 0) << r.message;
+  ASSERT_EQ(r.exitStatus(), 0) << r.message;
   const std::string metrics = r.metrics_json.str();
   EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal"));
   EXPECT_EQ(test::jsonNumber(metrics, "status"), 0);
@@ -84,7 +88,7 @@ TEST(RunLibrary, WithoutAnOutputFolderWritesNothingAndReturnsWhatTheFilesWouldHo
 
 TEST(RunLibrary, ATeamsTopLevelFiguresAreTheWholeTeams) {
   const RunSummary r = runInEmptyFolder(kTwoCf2, "library-team");
-  ASSERT_EQ(r.status, 0) << r.message;
+  ASSERT_EQ(r.exitStatus(), 0) << r.message;
   const std::string metrics = r.metrics_json.str();
   const FlightMetrics& near = r.metrics[0];
   const FlightMetrics& far = r.metrics[1];
@@ -103,7 +107,7 @@ TEST(RunLibrary, AnObserverHearsTheStagesLinesAndNoFilesStages) {
   std::vector<RunEvent> events;
   const RunSummary r = runInEmptyFolder(kOneRobot, "library-events",
                                         [&](const RunEvent& e) { events.push_back(e); });
-  ASSERT_EQ(r.status, 0) << r.message;
+  ASSERT_EQ(r.exitStatus(), 0) << r.message;
   std::vector<RunStage> stages;
   std::vector<std::string> lines;
   int progress = 0;
@@ -123,7 +127,7 @@ TEST(RunLibrary, AnObserverHearsTheStagesLinesAndNoFilesStages) {
 
 TEST(RunLibrary, ARobotsPlanIsItsTimedPath) {
   const RunSummary r = runInEmptyFolder(kOneRobot, "library-robot");
-  ASSERT_EQ(r.status, 0) << r.message;
+  ASSERT_EQ(r.exitStatus(), 0) << r.message;
   ASSERT_EQ(r.plans.size(), 1u);
   const VehiclePlan& p = r.plans[0];
   ASSERT_EQ(p.point_times.size(), 3u);
@@ -146,6 +150,62 @@ TEST(RunLibrary, MetricsJsonIsTheObjectWrittenToTheFolder) {
   EXPECT_EQ(test::slurp(request.out_dir / "metrics.json"), r.metrics_json.str() + "\n");
   EXPECT_EQ(test::slurp(request.out_dir / "timeseries.csv"), timeseriesCsv(r.log));
   std::filesystem::remove_all(request.out_dir);
+}
+
+// Two cf2 swap places under a team planner, without a controller section.
+const char* const kTeamWithoutController =
+    "world:\n  bounds: {min: [0, 0, 0], max: [6, 4, 2.5]}\nvehicles:\n"
+    "  - {name: a, model: cf2, start: [1, 2, 1], goal: [5, 2, 1]}\n"
+    "  - {name: b, model: cf2, start: [5, 2, 1], goal: [1, 2, 1]}\n"
+    "planner: {name: lacam}\n";
+
+TEST(RunLibrary, ATeamsDefaultsAreResolvedBesideTheScenario) {
+  const Scenario s = parseScenario(kTeamWithoutController, "library-team-defaults.yaml");
+  const RunSetup setup = resolveRun(s, false);
+  EXPECT_EQ(setup.quadrotor_planning, Planning::Team);
+  EXPECT_EQ(setup.quadrotor_sections.controller.name, "indi");
+  EXPECT_EQ(setup.quadrotor_sections.trajectory.mode, "minimum_snap");
+  EXPECT_EQ(&setup.primarySections(), &setup.quadrotor_sections);
+  // The scenario keeps what its file said.
+  EXPECT_EQ(s.controller_name, "cascade");
+  EXPECT_EQ(s.trajectory_mode, "waypoints");
+}
+
+TEST(RunLibrary, APointMassPlanKeepsNoMarginAndTheScenarioKeepsItsOwn) {
+  const Scenario s = parseScenario(kTwoCf2, "library-point-mass.yaml");
+  EXPECT_DOUBLE_EQ(resolveRun(s, true).quadrotor_sections.planner.margin, 0.0);
+  EXPECT_DOUBLE_EQ(resolveRun(s, false).quadrotor_sections.planner.margin, 0.3);
+  EXPECT_DOUBLE_EQ(s.planner_margin, 0.3);
+}
+
+TEST(RunLibrary, EveryRunEndIsWrittenAndReadBackByOneName) {
+  const std::vector<std::pair<RunEnd, std::string>> names = {
+      {RunEnd::Running, "running"},     {RunEnd::Goal, "goal"},
+      {RunEnd::MaxTime, "max_time"},    {RunEnd::Interrupted, "interrupted"},
+      {RunEnd::Diverged, "diverged"},   {RunEnd::Unstable, "unstable"},
+      {RunEnd::Saturated, "saturated"}, {RunEnd::GaveUp, "gave_up"},
+      {RunEnd::NoPath, "no_path"}};
+  for (const auto& [end, name] : names) {
+    EXPECT_EQ(runEndName(end), name);
+    EXPECT_EQ(runEndNamed(name), end) << name;
+  }
+  EXPECT_FALSE(runEndNamed("exploded").has_value());
+}
+
+TEST(RunLibrary, AStopBeforePlanningEndsTheRunAsInterrupted) {
+  const Scenario s = parseScenario(kTwoCf2, "library-stopped.yaml");
+  const std::atomic<bool> stop{true};
+  RunRequest request;
+  request.interrupt = &stop;
+  std::vector<RunStage> stages;
+  request.observer = [&stages](const RunEvent& e) {
+    if (e.kind == RunEventKind::Stage) stages.push_back(e.stage);
+  };
+  const RunSummary r = executeRun(s, request);
+  EXPECT_EQ(r.outcome, RunOutcome::Interrupted);
+  EXPECT_EQ(r.exitStatus(), 1);
+  EXPECT_TRUE(r.log.vehicles.empty());  // not flown
+  EXPECT_EQ(stages, std::vector<RunStage>{RunStage::Resolve});
 }
 
 }  // namespace

@@ -60,7 +60,7 @@ inline RunLog straightFlightLog(double seconds, double lag = 0.2) {
   v.reached_goal = true;
   v.arrival_time = seconds;
   log.sim_time = seconds;
-  log.end_reason = "goal";
+  log.end_reason = RunEnd::Goal;
   return log;
 }
 

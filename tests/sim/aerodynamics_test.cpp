@@ -184,7 +184,7 @@ TEST(Downwash, AQuadUnderAnotherTracksAtLeastTwiceAsBadly) {
     return e;
   };
   const RunLog off = fly(false), on = fly(true);
-  ASSERT_EQ(on.end_reason, "max_time");
+  ASSERT_EQ(on.end_reason, RunEnd::MaxTime);
   const double lower_off = maxError(off.vehicles[1]), lower_on = maxError(on.vehicles[1]);
   EXPECT_GE(lower_on, 2.0 * lower_off) << lower_on << " vs " << lower_off;
   // The upper vehicle is not disturbed: its error is the same either way.

@@ -51,7 +51,7 @@ RunLog fly(double seconds, bool (*saturated)(double), double nan_after = 1e9) {
 
 TEST(FlightFaults, MixerSaturatedWithoutABreakEndsTheRunJustAfterTheLimit) {
   const RunLog log = fly(10.0, [](double) { return true; });
-  EXPECT_EQ(log.end_reason, "saturated");
+  EXPECT_EQ(log.end_reason, RunEnd::Saturated);
   // The limit is 2 s of continuous saturation, checked at the 500 Hz control rate.
   EXPECT_NEAR(log.sim_time, 2.0, 0.01);
 }
@@ -59,7 +59,7 @@ TEST(FlightFaults, MixerSaturatedWithoutABreakEndsTheRunJustAfterTheLimit) {
 TEST(FlightFaults, SaturationWithBreaksShorterThanTheLimitDoesNotEndTheRun) {
   // Saturated 1.5 s out of every 2 s: never 2 s in a row.
   const RunLog log = fly(6.0, [](double t) { return std::fmod(t, 2.0) < 1.5; });
-  EXPECT_EQ(log.end_reason, "max_time");
+  EXPECT_EQ(log.end_reason, RunEnd::MaxTime);
   EXPECT_NEAR(log.sim_time, 6.0, 0.01);
 }
 
@@ -79,7 +79,7 @@ TEST(FlightFaults, NanRotorCommandsEndTheRunAsUnstableInsteadOfFlyingOn) {
   // The NaN commands become NaN rotor speeds and thrusts, which MuJoCo's acceleration check
   // finds (it would reset the state and go on).
   EXPECT_NE(g_mujoco_warning.find("QACC"), std::string::npos) << g_mujoco_warning;
-  EXPECT_EQ(log.end_reason, "unstable");
+  EXPECT_EQ(log.end_reason, RunEnd::Unstable);
   EXPECT_GE(log.mujoco_warnings, 1);
   EXPECT_LT(log.sim_time, 1.01);
 }

@@ -190,7 +190,7 @@ TEST(GroundRobotDrive, OmniBaseFollowsLShapedTimedPathWithinFiveCentimetres) {
   path.append(3.2, {2.2, 1});    // 0.4 m/s
   path.append(6.2, {2.2, 2.2});  // a right-angle corner
   const RunLog log = drive("omni_base", path, 0.4, 30.0);
-  EXPECT_EQ(log.end_reason, "goal");
+  EXPECT_EQ(log.end_reason, RunEnd::Goal);
   ASSERT_TRUE(log.vehicles[0].reached_goal);
   EXPECT_LT(log.vehicles[0].arrival_time,
             6.6 + 0.1);  // the smoothed reference rests at 6.2 + 0.4 s
@@ -207,7 +207,7 @@ TEST(GroundRobotDrive, DiffDriveOnWheelsFollowsLShapedTimedPath) {
   path.append(5.2, {1.8, 1});  // 0.16 m/s
   path.append(10.2, {1.8, 1.8});
   const RunLog log = drive("diff_drive", path, 0.16);
-  EXPECT_EQ(log.end_reason, "goal");
+  EXPECT_EQ(log.end_reason, RunEnd::Goal);
   ASSERT_TRUE(log.vehicles[0].reached_goal);
   // Wheels on the floor are not collisions. At the corner the robot must turn in place while
   // the reference moves on, and falls behind by up to about 0.13 m; it catches up after.

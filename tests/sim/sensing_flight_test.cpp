@@ -61,7 +61,7 @@ TEST(SensingFlight, TheControllerFliesOnAnEstimateAsGoodAsItsSensors) {
     Scenario s = hoverWith(preset, 12.0);
     s.estimator.predict_rate = s.sensors.imu.rate;
     const RunLog log = flyGeometric(s);
-    EXPECT_EQ(log.end_reason, "max_time") << preset;
+    EXPECT_EQ(log.end_reason, RunEnd::MaxTime) << preset;
     return computeFlightMetrics(log.vehicles[0], World{}, false).estimation_rmse_m;
   };
   const double ideal = estimation("ideal"), mocap = estimation("mocap"),

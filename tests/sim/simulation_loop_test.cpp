@@ -81,7 +81,7 @@ TEST(SimulationLoop, SteppedByHandToTheEndGivesTheLogOfSimulateFlight) {
   EXPECT_TRUE(loop.done());
   const RunLog log = loop.finish();
 
-  ASSERT_EQ(expected.end_reason, "goal");
+  ASSERT_EQ(expected.end_reason, RunEnd::Goal);
   EXPECT_EQ(log.end_reason, expected.end_reason);
   EXPECT_EQ(log.physics_steps, expected.physics_steps);
   ASSERT_EQ(log.vehicles[0].samples.size(), expected.vehicles[0].samples.size());
@@ -171,7 +171,7 @@ TEST(SimulationLoop, FinishBeforeTheEndIsAnInterruptedRunOfTheStepsTaken) {
   SimulationLoop loop(q.world, s, q.no_robots, q.pilots, flightSimulationOptions(flightOptions(s)));
   for (int n = 0; n < 25; ++n) ASSERT_TRUE(loop.stepControl());
   const RunLog log = loop.finish();
-  EXPECT_EQ(log.end_reason, "interrupted");
+  EXPECT_EQ(log.end_reason, RunEnd::Interrupted);
   EXPECT_EQ(log.physics_steps, 50);
   EXPECT_EQ(log.vehicles[0].samples.size(), 25u);
   EXPECT_NEAR(log.sim_time, 0.05, 1e-12);
@@ -185,7 +185,7 @@ TEST(SimulationLoop, SnapshotIsTheLogSoFarAndTheRunGoesOn) {
   SimulationLoop loop(q.world, s, q.no_robots, q.pilots, flightSimulationOptions(flightOptions(s)));
   for (int n = 0; n < 25; ++n) ASSERT_TRUE(loop.stepControl());
   const RunLog early = loop.snapshot();
-  EXPECT_EQ(early.end_reason, "");  // still running
+  EXPECT_EQ(early.end_reason, RunEnd::Running);  // still running
   EXPECT_EQ(early.physics_steps, 50);
   EXPECT_EQ(early.vehicles[0].samples.size(), 25u);
   EXPECT_NEAR(early.sim_time, 0.05, 1e-12);

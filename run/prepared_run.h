@@ -1,0 +1,56 @@
+#pragma once
+// A run made ready to simulate: the prepare stage of run/run_pipeline.h (resolve -> world ->
+// plan -> pilots -> the simulation loop's options, with a stop check and an event between
+// stages), and the conclude stage that takes the log the loop made (evaluate -> write -> render).
+// `cosim run` and cosim.run go prepare -> fly -> conclude through executeRun; Python's
+// cosim.Simulation prepares the same way and steps the loop itself (startRunLoop,
+// run/run_simulation.h), with the same evaluation for its metrics (summarizeRun).
+#include "run/run_pilots.h"
+#include "run/run_pipeline.h"
+#include "run/run_plan.h"
+#include "run/run_setup.h"
+#include "sim/run_log.h"
+#include "sim/scenario.h"
+#include "sim/simulation_loop.h"
+#include "sim/world_model.h"
+
+namespace cosim {
+
+// The pilots point into the plan and the controllers, and the loop's options into the reporter:
+// a PreparedRun stays where it was made (no copies, no moves).
+struct PreparedRun {
+  // The stages up to the simulation (prepareRun).
+  PreparedRun(const Scenario& scenario, const RunRequest& request);
+  PreparedRun(const PreparedRun&) = delete;
+  PreparedRun& operator=(const PreparedRun&) = delete;
+
+  const Scenario& scenario;  // as loaded: the run reads it, never changes it
+  const RunRequest request;
+  RunReporter report;  // to request.observer, for every stage of the run
+  RunSetup setup;      // the vehicles' groups and their sections, defaults resolved
+  WorldModel world;
+  RunPlan plan;
+  RunPilots pilots;
+  SimulationOptions loop;  // the simulation loop's (run/run_simulation.h runLoopOptions)
+  // The request's interrupt flag stopped the preparation before it ended (after resolve or
+  // plan): plan, pilots and loop are not to be used.
+  bool stopped = false;
+};
+
+// Resolves, composes the world, plans and builds the pilots. Throws InputError for bad input
+// found on the way (unknown planner, bad gains, a grid too large), in the scenario's file: the
+// one place a late error gets its file.
+inline PreparedRun prepareRun(const Scenario& scenario, const RunRequest& request) {
+  return PreparedRun(scenario, request);
+}
+
+// The evaluate stage, silent and writing nothing: the outcome, metrics and metrics.json's
+// object of `log` (a whole run's, or a stepped loop's so far), and each vehicle's plan. The
+// summary's log is left empty.
+RunSummary summarizeRun(const PreparedRun& run, const RunLog& log);
+
+// The stages after the simulation: evaluate, then (with an out_dir) write and render. Returns
+// interruptedRun() if the interrupt flag stopped the rendering.
+RunSummary concludeRun(PreparedRun& run, RunLog log);
+
+}  // namespace cosim
