@@ -91,7 +91,7 @@ RunSummary summarizeRun(const PreparedRun& run, const RunLog& log) {
   return summary;
 }
 
-RunSummary concludeRun(PreparedRun& run, RunLog log) {
+RunSummary concludeRun(PreparedRun& run, RunLog log) try {
   run.report.stage(RunStage::Evaluate);
   RunSummary summary = summarizeRun(run, log);
   if (log.mujoco_warnings > 0)
@@ -100,6 +100,8 @@ RunSummary concludeRun(PreparedRun& run, RunLog log) {
   if (!run.request.out_dir.empty() && !writeRunFolder(run, log, summary)) return interruptedRun();
   summary.log = std::move(log);
   return summary;
+} catch (const InputError& e) {
+  throw e.inFile(run.scenario.file);  // e.g. a video of more frames than allowed
 }
 
 }  // namespace cosim

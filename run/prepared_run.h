@@ -38,8 +38,8 @@ struct PreparedRun {
 };
 
 // Resolves, composes the world, plans and builds the pilots. Throws InputError for bad input
-// found on the way (unknown planner, bad gains, a grid too large), in the scenario's file: the
-// one place a late error gets its file.
+// found on the way (unknown planner, bad gains, a grid too large), in the scenario's file: late
+// errors get their file here and in concludeRun, not in each front end.
 inline PreparedRun prepareRun(const Scenario& scenario, const RunRequest& request) {
   return PreparedRun(scenario, request);
 }
@@ -50,7 +50,8 @@ inline PreparedRun prepareRun(const Scenario& scenario, const RunRequest& reques
 RunSummary summarizeRun(const PreparedRun& run, const RunLog& log);
 
 // The stages after the simulation: evaluate, then (with an out_dir) write and render. Returns
-// interruptedRun() if the interrupt flag stopped the rendering.
+// interruptedRun() if the interrupt flag stopped the rendering. Throws InputError for bad input
+// found while rendering (a video of too many frames), in the scenario's file.
 RunSummary concludeRun(PreparedRun& run, RunLog log);
 
 }  // namespace cosim

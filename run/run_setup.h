@@ -1,9 +1,10 @@
 #pragma once
 // The first stage of a run: what a scenario asks for, with the defaults that depend on the kind
-// of run resolved into a value of its own (the loaded Scenario stays as the file said). Which vehicles are ground robots (driven by the top-level planner, trajectory
-// and controller sections) and which are quadrotors (driven by the top-level sections too, or by
-// the `aerial` sections when they fly over robots); how each group gets its plan; and the
-// defaults of a quadrotor team (its controller and trajectory mode).
+// of run resolved into a value of its own (the loaded Scenario stays as the file said). Which
+// vehicles are ground robots (driven by the top-level planner, trajectory and controller sections)
+// and which are quadrotors (driven by the top-level sections too, or by the `aerial` sections when
+// they fly over robots); how each group gets its plan; and the defaults of a quadrotor team (its
+// controller and trajectory mode).
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -50,10 +51,10 @@ bool isGroundRun(const Scenario& scenario);
 bool isNavigatorName(const std::string& name);
 
 // Sorts the vehicles, picks each group's planning, and resolves each group's sections with the
-// defaults of its kind of run (a quadrotor team flies minimum-snap trajectories, under indi without a
-// controller section; a point-mass plan keeps no margin). Throws InputError for a scenario no
-// run can serve: moving obstacles without ground robots, disturbances without quadrotors, a
-// navigator for several robots, a team or unknown planner for quadrotors over robots.
+// defaults of its kind of run (a quadrotor team flies minimum-snap trajectories, under indi without
+// a controller section; a point-mass plan keeps no margin). Throws InputError for a scenario no run
+// can serve: moving obstacles without ground robots, disturbances without quadrotors, a navigator
+// for several robots, a team or unknown planner for quadrotors over robots.
 RunSetup resolveRun(const Scenario& scenario, bool plan_as_point_mass);
 
 }  // namespace cosim
