@@ -64,7 +64,7 @@ TEST(SimulationLoop, SteppingNControlPeriodsAdvancesTimeByNOverTheControlRate) {
     ASSERT_NEAR(loop.time(), n / 500.0, 1e-12) << "after " << n << " control periods";
   }
   EXPECT_FALSE(loop.done());
-  EXPECT_EQ(loop.endReason(), "");
+  EXPECT_EQ(loop.endReason(), RunEnd::Running);
 }
 
 TEST(SimulationLoop, SteppedByHandToTheEndGivesTheLogOfSimulateFlight) {
