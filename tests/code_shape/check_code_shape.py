@@ -8,7 +8,8 @@
 
 Functions are found by brace depth outside namespaces: a body opens where a '{' takes the depth
 from 0 to 1 on a line that does not open a namespace, class, struct, enum or union, and closes
-where the depth returns to 0. Strings, character literals and comments are blanked first so their
+where the depth returns to 0; a '{' right after '=' opens a variable's initializer (a table of
+data), which is not a function. Strings, character literals and comments are blanked first so their
 braces do not count. Lambdas and local classes count towards the function that holds them.
 Build folders (build*, out, b) and hidden folders are skipped.
 Usage: check_code_shape.py SOURCE_DIR [FOLDER ...]   (exit 1 and one line per offence; FOLDERs,
@@ -25,6 +26,8 @@ MAX_FUNCTION_LINES = 80
 SOURCE_SUFFIXES = ('.cpp', '.h')
 SKIPPED_TOP_FOLDERS = ('out', 'b')
 TYPE_OPENER = re.compile(r'^\s*(template\s*<.*>\s*)?(namespace|class|struct|enum|union)\b')
+# `= {` opens the initializer of a variable (a table of data), not a function body.
+INITIALIZER_OPENER = re.compile(r'(?<![=<>!])=\s*\{')
 
 
 def blank_literals_and_comments(text):
@@ -63,19 +66,23 @@ def blank_literals_and_comments(text):
 def long_functions(path, limit):
     """(first line, length) of every function body in `path` longer than `limit` lines."""
     lines = blank_literals_and_comments(path.read_text()).split('\n')
-    found, stack, start = [], [], None  # stack: True for a namespace/type brace, False otherwise
+    # stack: 'scope' for a namespace/type brace, 'data' inside an initializer, 'code' otherwise
+    found, stack, start = [], [], None
     for number, line in enumerate(lines, 1):
         for ch in line:
             if ch == '{':
-                opener = start is None and bool(TYPE_OPENER.match(line))
-                if start is None and not opener:
-                    start = number  # a function body at namespace or class level
-                    stack.append(False)
+                if start is not None or 'data' in stack:
+                    stack.append(stack[-1] if start is None else 'code')
+                elif TYPE_OPENER.match(line):
+                    stack.append('scope')
+                elif INITIALIZER_OPENER.search(line):
+                    stack.append('data')
                 else:
-                    stack.append(opener if start is None else False)
+                    start = number  # a function body at namespace or class level
+                    stack.append('code')
             elif ch == '}' and stack:
                 stack.pop()
-                if start is not None and all(stack):
+                if start is not None and all(kind == 'scope' for kind in stack):
                     if number - start + 1 > limit:
                         found.append((start, number - start + 1))
                     start = None
@@ -124,7 +131,7 @@ def offences(root, folders=()):
 
 def self_test():
     """The checker itself: a namespace, a class and a lambda do not hide an 81-line function,
-    braces in strings and comments do not count; file limits are 400 lines for sources, 300 for
+    braces in strings and comments do not count, a table of data is not a function; file limits are 400 lines for sources, 300 for
     cli/ and 600 for tests/, tests are not held to the function limit, build folders are skipped
     and FOLDER arguments restrict the check."""
     import tempfile
@@ -146,6 +153,12 @@ def self_test():
         found = long_functions(root / 'sim/long_function.cpp', MAX_FUNCTION_LINES)
         if found != [(5, 81)]:
             print(f'self-test: expected one 81-line function at line 5, found {found}')
+            return 1
+        table = ('const int kTable[2][90] = {\n  {\n' + '    1,\n' * 90 + '  },\n  {1}};\n'
+                 'bool same(int a, int b) {\n  return a == b;\n}\n')
+        write('sim/table.cpp', table)
+        if long_functions(root / 'sim/table.cpp', MAX_FUNCTION_LINES):
+            print('self-test: a 92-line table of data was counted as a function')
             return 1
         write('sim/at_limit.h', lines(400))
         write('sim/over_limit.h', lines(401))
