@@ -4,7 +4,7 @@
 #include "experiments/sweep/sweep_results_table.h"
 #include "experiments/sweep/sweep_summary.h"
 #include "core/input_error.h"
-#include "render/figures.h"
+#include "render/comparison_chart.h"
 
 namespace cosim {
 
