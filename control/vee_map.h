@@ -6,6 +6,8 @@
 
 namespace cosim {
 
-inline Eigen::Vector3d vee(const Eigen::Matrix3d& S) { return {S(2, 1), S(0, 2), S(1, 0)}; }
+inline Eigen::Vector3d vee(const Eigen::Matrix3d& S) {
+  return {S(2, 1), S(0, 2), S(1, 0)};
+}
 
 }  // namespace cosim
