@@ -12,6 +12,80 @@
 
 namespace cosim::cli {
 
+namespace {
+
+struct RenderArgs {
+  std::string dir, camera, out;
+  bool frames = false, quiet = false;
+  double at = -1.0, speedup = 0.0;
+  int width = 0, height = 0, fps = 0;
+};
+
+// The command line's choices over the scenario's render section: camera, frame size, frame rate
+// and time-lapse.
+void applyRenderOptions(const RenderArgs& a, Scenario& s) {
+  if (!a.camera.empty()) {
+    try {
+      cameraKind(a.camera);
+    } catch (const std::invalid_argument&) {
+      throw InputError("command line", "--camera", std::string("must be ") + cameraNames());
+    }
+    if (a.camera == "fixed" && !s.render.has_fixed_camera)
+      throw InputError("command line", "--camera",
+                       "'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]} "
+                       "in the scenario");
+    s.render.camera = a.camera;
+  }
+  if (a.width) s.render.width = a.width;
+  if (a.height) s.render.height = a.height;
+  if (s.render.width % 2 || s.render.height % 2)
+    throw InputError("command line", "--width/--height", "must be even (H.264, yuv420p)");
+  if (a.fps) s.render.fps = a.fps;
+  if (a.speedup > 0) s.render.speedup = a.speedup;
+}
+
+void renderRun(const RenderArgs& a, CommandContext& ctx) {
+  const std::atomic<bool>& interrupt = installInterruptFlag();
+  const std::filesystem::path dir = a.dir;
+  Scenario s = readRunScenario(dir);
+  applyRenderOptions(a, s);
+  // Where the output goes is checked before anything is read or drawn.
+  const std::string camera = s.render.camera;
+  std::filesystem::path out = a.out;
+  if (out.empty()) out = dir / (a.frames ? "frames_" + camera : "video_" + camera + ".mp4");
+  const bool one_frame = out.extension() == ".png" && !a.frames;
+  checkOutputPath(out, a.out.empty() ? "run folder" : "--out", a.frames);
+  RunLog log = readRunLog(dir, s);
+  if (interrupt.load()) {
+    std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
+    ctx.status = 1;
+    return;
+  }
+  const WorldModel world = WorldModel::build(s);  // its off-screen buffer fits the frame size
+  completeRunLog(log, s, world);
+  RunRenderer renderer(world, s, log, s.render.width, s.render.height);
+  if (one_frame) {
+    std::vector<std::uint8_t> rgb;
+    renderer.render(a.at >= 0 ? a.at : renderer.endTime(), camera, rgb);
+    writePng(out, rgb, renderer.width(), renderer.height());
+  } else {
+    const int frames = renderRunVideo(renderer, s.render, camera, out,
+                                      a.frames ? VideoFormat::PngSequence : VideoFormat::Mp4,
+                                      !a.quiet, &interrupt);
+    if (frames == 0) {  // SIGINT/SIGTERM: ffmpeg was stopped and its partial output deleted
+      std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
+      ctx.status = 1;
+      return;
+    }
+    std::cout << "frames: " << frames << " at " << s.render.fps << " fps (" << s.render.speedup
+              << "x simulated time)\n";
+  }
+  std::cout << "rendered: " << out.string() << "\n";
+  ctx.status = 0;
+}
+
+}  // namespace
+
 void addRenderCommand(CLI::App& app, CommandContext& ctx) {
   auto* cmd = app.add_subcommand(
       "render",
@@ -19,13 +93,7 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
       "moving_obstacles.csv (if the run had moving obstacles), without\n"
       "simulating again. Writes a video (.mp4), a PNG frame sequence (--frames), or, if --out\n"
       "ends in .png, one frame (the last, or the one at --at).");
-  struct Args {
-    std::string dir, camera, out;
-    bool frames = false, quiet = false;
-    double at = -1.0, speedup = 0.0;
-    int width = 0, height = 0, fps = 0;
-  };
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<RenderArgs>();
   cmd->add_option("run_dir", a->dir, "folder written by cosim run")->required();
   cmd->add_option("--camera", a->camera,
                   "chase, orbit, top, overview or fixed (fixed needs render.fixed_camera in the "
@@ -48,62 +116,7 @@ void addRenderCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--height", a->height, "frame height in pixels, even (default: the scenario's)")
       ->check(wholeNumberIn(64, 2160));
   cmd->add_flag("--quiet", a->quiet, "no progress bar");
-  cmd->callback([a, &ctx] {
-    const std::atomic<bool>& interrupt = installInterruptFlag();
-    const std::filesystem::path dir = a->dir;
-    Scenario s = readRunScenario(dir);
-    if (!a->camera.empty()) {
-      try {
-        cameraKind(a->camera);
-      } catch (const std::invalid_argument&) {
-        throw InputError("command line", "--camera", std::string("must be ") + cameraNames());
-      }
-      if (a->camera == "fixed" && !s.render.has_fixed_camera)
-        throw InputError("command line", "--camera",
-                         "'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]} "
-                         "in the scenario");
-      s.render.camera = a->camera;
-    }
-    if (a->width) s.render.width = a->width;
-    if (a->height) s.render.height = a->height;
-    if (s.render.width % 2 || s.render.height % 2)
-      throw InputError("command line", "--width/--height", "must be even (H.264, yuv420p)");
-    if (a->fps) s.render.fps = a->fps;
-    if (a->speedup > 0) s.render.speedup = a->speedup;
-    // Where the output goes is checked before anything is read or drawn.
-    const std::string camera = s.render.camera;
-    std::filesystem::path out = a->out;
-    if (out.empty()) out = dir / (a->frames ? "frames_" + camera : "video_" + camera + ".mp4");
-    const bool one_frame = out.extension() == ".png" && !a->frames;
-    checkOutputPath(out, a->out.empty() ? "run folder" : "--out", a->frames);
-    RunLog log = readRunLog(dir, s);
-    if (interrupt.load()) {
-      std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
-      ctx.status = 1;
-      return;
-    }
-    const WorldModel world = WorldModel::build(s);  // its off-screen buffer fits the frame size
-    completeRunLog(log, s, world);
-    RunRenderer renderer(world, s, log, s.render.width, s.render.height);
-    if (one_frame) {
-      std::vector<std::uint8_t> rgb;
-      renderer.render(a->at >= 0 ? a->at : renderer.endTime(), camera, rgb);
-      writePng(out, rgb, renderer.width(), renderer.height());
-    } else {
-      const int frames = renderRunVideo(renderer, s.render, camera, out,
-                                        a->frames ? VideoFormat::PngSequence : VideoFormat::Mp4,
-                                        !a->quiet, &interrupt);
-      if (frames == 0) {  // SIGINT/SIGTERM: ffmpeg was stopped and its partial output deleted
-        std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
-        ctx.status = 1;
-        return;
-      }
-      std::cout << "frames: " << frames << " at " << s.render.fps << " fps (" << s.render.speedup
-                << "x simulated time)\n";
-    }
-    std::cout << "rendered: " << out.string() << "\n";
-    ctx.status = 0;
-  });
+  cmd->callback([a, &ctx] { renderRun(*a, ctx); });
 }
 
 }  // namespace cosim::cli

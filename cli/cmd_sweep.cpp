@@ -11,6 +11,7 @@
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
 #include "core/atomic_file.h"
+#include "core/input_error.h"
 #include "core/output_dir_lock.h"
 #include "core/output_files.h"
 #include "experiments/sweep/sweep_jobs.h"
@@ -18,7 +19,6 @@
 #include "experiments/sweep/sweep_runner.h"
 #include "experiments/sweep/sweep_shard.h"
 #include "experiments/sweep/sweep_spec.h"
-#include "core/input_error.h"
 
 namespace cosim::cli {
 
@@ -40,6 +40,109 @@ std::string fileText(const std::filesystem::path& p) {
   return s.str();
 }
 
+struct SweepArgs {
+  std::string sweep, out, shard = "1/1";
+  int jobs = 0;
+  bool merge_only = false, quiet = false;
+};
+
+// One sweep at a time in the folder: its shards together (each shard once), or the whole sweep
+// or a merge alone (core/output_dir_lock.h). Each job's `cosim run` locks its own job folder as
+// well.
+void lockSweepFolder(const SweepArgs& a, const SweepShard& shard, const std::filesystem::path& out,
+                     OutputDirLock& sweep_lock, OutputDirLock& shard_lock) {
+  const bool sharded = !shard.whole() && !a.merge_only;
+  sweep_lock.acquire(out, "--out",
+                     sharded ? OutputDirLock::Mode::Shared : OutputDirLock::Mode::Exclusive);
+  if (sharded)
+    shard_lock.acquire(out, "--out", OutputDirLock::Mode::Exclusive,
+                       ".cosim-shard-" + std::to_string(shard.index) + "-of-" +
+                           std::to_string(shard.count) + ".lock");
+}
+
+// Runs the shard's unfinished jobs; returns 1 if they were interrupted, else 0.
+int runShardJobs(const SweepArgs& a, const SweepSpec& spec, const SweepShard& shard,
+                 const std::vector<SweepJob>& jobs, const std::filesystem::path& out,
+                 const std::atomic<bool>& interrupt) {
+  SweepRunOptions o;
+  o.out_dir = out;
+  o.jobs = a.jobs > 0 ? a.jobs : availableCores();
+  o.shard = shard;
+  o.video = spec.video;
+  o.job_timeout_s = spec.job_timeout_s;
+  o.kill_grace_s = spec.kill_grace_s;
+  o.progress = !a.quiet;
+  o.interrupt = &interrupt;
+  const SweepRunReport r = runSweepJobs(jobs, o);
+  if (!r.interrupted) return 0;
+  std::cerr << "cosim: sweep interrupted: " << r.unfinished
+            << " job(s) left unfinished; run the same command again to resume\n";
+  return 1;
+}
+
+// The merged tables and figure, and what the user must know about them; returns the exit
+// status (`status`, or 1 when --merge-only finds jobs missing).
+int mergeSweep(const SweepArgs& a, const SweepSpec& spec, const std::vector<SweepJob>& jobs,
+               const std::filesystem::path& out, int status) {
+  const SweepOutputs merged = writeSweepOutputs(spec, jobs, out);
+  std::cout << "sweep: " << out.string() << "\n  results.csv: " << merged.rows << " of "
+            << jobs.size() << " jobs"
+            << (merged.unfinished ? " (" + std::to_string(merged.unfinished) + " unfinished)" : "")
+            << "\n";
+  if (merged.program_builds > 1)
+    std::cerr << "sweep: warning: the results come from " << merged.program_builds
+              << " different builds of cosim (the sweep was resumed after a rebuild); delete "
+              << (out / "jobs").string() << " to rerun every job with this one\n";
+  if (!merged.figure_problem.empty())
+    std::cerr << "sweep: no figure.png: " << merged.figure_problem << "\n";
+  if (a.merge_only && merged.unfinished > 0) status = 1;
+  return status;
+}
+
+// The command: lock the folder, run the shard's jobs (unless --merge-only), merge (unless only
+// one shard of several ran); the exit status goes into ctx.status.
+void runSweep(const SweepArgs& a, CommandContext& ctx) {
+  const std::atomic<bool>& interrupt = installInterruptFlag();
+  const SweepSpec spec = loadSweepSpec(a.sweep);
+  const SweepShard shard =
+      parseSweepShard(a.shard, [](const char* name) -> const char* { return std::getenv(name); });
+  const std::filesystem::path out =
+      prepareOutputDir(a.out.empty() ? "out/sweep-" + spec.name : a.out, "sweep");
+  OutputDirLock sweep_lock, shard_lock;
+  lockSweepFolder(a, shard, out, sweep_lock, shard_lock);
+  const std::vector<SweepJob> jobs = expandSweepJobs(spec, out);
+  // A copy of the sweep file beside its results (same text from every shard).
+  const std::string text = fileText(spec.file);
+  if (fileText(out / "sweep.yaml") != text) writeFileAtomically(out / "sweep.yaml", text);
+
+  int status = 0;
+  if (!a.merge_only) {
+    // The merged tables of an earlier invocation go before any job runs: until this one merges
+    // again, nothing in the folder may present a result whose inputs have since changed.
+    removeStaleResults(out, {"results.csv", "summary.csv", "figure.png", "figure.svg"});
+    std::vector<SweepJob> mine;
+    for (const auto& j : jobs)
+      if (shard.owns(j.id)) mine.push_back(j);
+    validateSweepJobs(spec, mine);
+    if (interrupt.load()) {
+      std::cerr << "cosim: sweep interrupted before its jobs started; run the same command "
+                   "again to start it\n";
+      ctx.status = 1;
+      return;
+    }
+    status = runShardJobs(a, spec, shard, jobs, out, interrupt);
+    if (!shard.whole()) {
+      if (!a.quiet)
+        std::cerr << "sweep: shard " << shard.index << "/" << shard.count
+                  << " done; when every shard is, merge with: cosim sweep " << a.sweep
+                  << " --merge-only --out " << out.string() << "\n";
+      ctx.status = status;
+      return;
+    }
+  }
+  ctx.status = mergeSweep(a, spec, jobs, out, status);
+}
+
 }  // namespace
 
 void addSweepCommand(CLI::App& app, CommandContext& ctx) {
@@ -55,12 +158,7 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
       "job (of the shard) has a result, whatever its status; 1 if interrupted or, with\n"
       "--merge-only, if jobs are missing; 2 for bad input. Format: experiments/sweeps/example.yaml "
       "(commented).");
-  struct Args {
-    std::string sweep, out, shard = "1/1";
-    int jobs = 0;
-    bool merge_only = false, quiet = false;
-  };
-  auto a = std::make_shared<Args>();
+  auto a = std::make_shared<SweepArgs>();
   cmd->add_option("sweep", a->sweep, "sweep YAML file")->required();
   cmd->add_option("--jobs", a->jobs, "jobs run in parallel (default: the available cores)")
       ->check(wholeNumberIn(1, 4096));
@@ -70,83 +168,7 @@ void addSweepCommand(CLI::App& app, CommandContext& ctx) {
   cmd->add_option("--out", a->out, "output folder (default: out/sweep-<sweep name>)");
   cmd->add_flag("--merge-only", a->merge_only, "only merge finished jobs into results.csv");
   cmd->add_flag("--quiet", a->quiet, "no progress lines");
-  cmd->callback([a, &ctx] {
-    const std::atomic<bool>& interrupt = installInterruptFlag();
-    const SweepSpec spec = loadSweepSpec(a->sweep);
-    const SweepShard shard = parseSweepShard(
-        a->shard, [](const char* name) -> const char* { return std::getenv(name); });
-    const std::filesystem::path out =
-        prepareOutputDir(a->out.empty() ? "out/sweep-" + spec.name : a->out, "sweep");
-    // One sweep at a time in the folder: its shards together (each shard once), or the whole
-    // sweep or a merge alone (core/output_dir_lock.h). Each job's `cosim run` locks its own
-    // job folder as well.
-    OutputDirLock sweep_lock, shard_lock;
-    const bool sharded = !shard.whole() && !a->merge_only;
-    sweep_lock.acquire(out, "--out",
-                       sharded ? OutputDirLock::Mode::Shared : OutputDirLock::Mode::Exclusive);
-    if (sharded)
-      shard_lock.acquire(out, "--out", OutputDirLock::Mode::Exclusive,
-                         ".cosim-shard-" + std::to_string(shard.index) + "-of-" +
-                             std::to_string(shard.count) + ".lock");
-    const std::vector<SweepJob> jobs = expandSweepJobs(spec, out);
-    // A copy of the sweep file beside its results (same text from every shard).
-    const std::string text = fileText(spec.file);
-    if (fileText(out / "sweep.yaml") != text) writeFileAtomically(out / "sweep.yaml", text);
-
-    int status = 0;
-    if (!a->merge_only) {
-      // The merged tables of an earlier invocation go before any job runs: until this one merges
-      // again, nothing in the folder may present a result whose inputs have since changed.
-      removeStaleResults(out, {"results.csv", "summary.csv", "figure.png", "figure.svg"});
-      std::vector<SweepJob> mine;
-      for (const auto& j : jobs)
-        if (shard.owns(j.id)) mine.push_back(j);
-      validateSweepJobs(spec, mine);
-      if (interrupt.load()) {
-        std::cerr << "cosim: sweep interrupted before its jobs started; run the same command "
-                     "again to start it\n";
-        ctx.status = 1;
-        return;
-      }
-      SweepRunOptions o;
-      o.out_dir = out;
-      o.jobs = a->jobs > 0 ? a->jobs : availableCores();
-      o.shard = shard;
-      o.video = spec.video;
-      o.job_timeout_s = spec.job_timeout_s;
-      o.kill_grace_s = spec.kill_grace_s;
-      o.progress = !a->quiet;
-      o.interrupt = &interrupt;
-      const SweepRunReport r = runSweepJobs(jobs, o);
-      if (r.interrupted) {
-        std::cerr << "cosim: sweep interrupted: " << r.unfinished
-                  << " job(s) left unfinished; run the same command again to resume\n";
-        status = 1;
-      }
-      if (!shard.whole()) {
-        if (!a->quiet)
-          std::cerr << "sweep: shard " << shard.index << "/" << shard.count
-                    << " done; when every shard is, merge with: cosim sweep " << a->sweep
-                    << " --merge-only --out " << out.string() << "\n";
-        ctx.status = status;
-        return;
-      }
-    }
-    const SweepOutputs merged = writeSweepOutputs(spec, jobs, out);
-    std::cout << "sweep: " << out.string() << "\n  results.csv: " << merged.rows << " of "
-              << jobs.size() << " jobs"
-              << (merged.unfinished ? " (" + std::to_string(merged.unfinished) + " unfinished)"
-                                    : "")
-              << "\n";
-    if (merged.program_builds > 1)
-      std::cerr << "sweep: warning: the results come from " << merged.program_builds
-                << " different builds of cosim (the sweep was resumed after a rebuild); delete "
-                << (out / "jobs").string() << " to rerun every job with this one\n";
-    if (!merged.figure_problem.empty())
-      std::cerr << "sweep: no figure.png: " << merged.figure_problem << "\n";
-    if (a->merge_only && merged.unfinished > 0) status = 1;
-    ctx.status = status;
-  });
+  cmd->callback([a, &ctx] { runSweep(*a, ctx); });
 }
 
 }  // namespace cosim::cli

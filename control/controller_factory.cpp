@@ -3,6 +3,7 @@
 #include "control/cascade_controller.h"
 #include "control/crazyflie_controller_factory.h"
 #include "control/dsl_pid_controller.h"
+#include "control/gain_reading.h"
 #include "control/geometric_controller.h"
 #include "control/indi_controller.h"
 #include "core/input_error.h"
@@ -11,13 +12,7 @@ namespace cosim {
 
 namespace {
 
-Eigen::Vector3d readAxes(ParamSet& p, const std::string& prefix, const Eigen::Vector3d& fallback) {
-  // Roll and pitch share one gain (the airframe is symmetric); yaw has its own.
-  const double rp = p.getDouble(prefix + "_rp", fallback.x(), 0.0, 1e4);
-  const double yaw = p.getDouble(prefix + "_yaw", fallback.z(), 0.0, 1e4);
-  return {rp, rp, yaw};
-}
-
+// Roll and pitch share one gain (the airframe is symmetric); yaw has its own.
 CascadeGains readCascadeGains(ParamSet& p) {
   CascadeGains g;
   g.pos_kp = p.getDouble("pos_kp", g.pos_kp, 0.0, 100.0);
@@ -27,9 +22,9 @@ CascadeGains readCascadeGains(ParamSet& p) {
   g.max_speed_xy = p.getDouble("max_speed_xy", g.max_speed_xy, 0.01, 100.0);
   g.max_speed_z = p.getDouble("max_speed_z", g.max_speed_z, 0.01, 100.0);
   g.max_tilt_deg = p.getDouble("max_tilt_deg", g.max_tilt_deg, 1.0, 89.0);
-  g.att_kp = readAxes(p, "att_kp", g.att_kp);
-  g.rate_kp = readAxes(p, "rate_kp", g.rate_kp);
-  g.rate_ki = readAxes(p, "rate_ki", g.rate_ki);
+  g.att_kp = readRollPitchAndYaw(p, "att_kp", g.att_kp, 1e4);
+  g.rate_kp = readRollPitchAndYaw(p, "rate_kp", g.rate_kp, 1e4);
+  g.rate_ki = readRollPitchAndYaw(p, "rate_ki", g.rate_ki, 1e4);
   g.max_rate = p.getDouble("max_rate", g.max_rate, 0.1, 100.0);
   return g;
 }
@@ -37,32 +32,23 @@ CascadeGains readCascadeGains(ParamSet& p) {
 GeometricGains readGeometricGains(ParamSet& p) {
   GeometricGains g;
   // Horizontal axes share one gain; z has its own.
-  const double kx_xy = p.getDouble("k_x_xy", g.k_x.x(), 0.0, 1e4);
-  g.k_x = {kx_xy, kx_xy, p.getDouble("k_x_z", g.k_x.z(), 0.0, 1e4)};
-  const double kv_xy = p.getDouble("k_v_xy", g.k_v.x(), 0.0, 1e4);
-  g.k_v = {kv_xy, kv_xy, p.getDouble("k_v_z", g.k_v.z(), 0.0, 1e4)};
+  g.k_x = readHorizontalAndZ(p, "k_x", g.k_x, 1e4);
+  g.k_v = readHorizontalAndZ(p, "k_v", g.k_v, 1e4);
   g.k_i = p.getDouble("k_i", g.k_i, 0.0, 1e4);
   g.i_limit = p.getDouble("i_limit", g.i_limit, 0.0, 100.0);
   g.i_velocity_zone = p.getDouble("i_velocity_zone", g.i_velocity_zone, 0.0, 100.0);
-  g.k_R = readAxes(p, "k_R", g.k_R);
-  g.k_omega = readAxes(p, "k_omega", g.k_omega);
+  g.k_R = readRollPitchAndYaw(p, "k_R", g.k_R, 1e4);
+  g.k_omega = readRollPitchAndYaw(p, "k_omega", g.k_omega, 1e4);
   g.max_tilt_deg = p.getDouble("max_tilt_deg", g.max_tilt_deg, 1.0, 89.0);
   return g;
-}
-
-// Horizontal axes share one gain; z has its own.
-Eigen::Vector3d readHorizontalAndZ(ParamSet& p, const std::string& prefix,
-                                   const Eigen::Vector3d& fallback, double hi) {
-  const double xy = p.getDouble(prefix + "_xy", fallback.x(), 0.0, hi);
-  return {xy, xy, p.getDouble(prefix + "_z", fallback.z(), 0.0, hi)};
 }
 
 IndiGains readIndiGains(ParamSet& p) {
   IndiGains g;
   g.k_x = readHorizontalAndZ(p, "k_x", g.k_x, 1e4);
   g.k_v = readHorizontalAndZ(p, "k_v", g.k_v, 1e4);
-  g.k_xi = readAxes(p, "k_xi", g.k_xi);
-  g.k_omega = readAxes(p, "k_omega", g.k_omega);
+  g.k_xi = readRollPitchAndYaw(p, "k_xi", g.k_xi, 1e4);
+  g.k_omega = readRollPitchAndYaw(p, "k_omega", g.k_omega, 1e4);
   g.filter_cutoff_hz = p.getDouble("filter_cutoff_hz", g.filter_cutoff_hz, 0.1, 1e4);
   g.max_tilt_deg = p.getDouble("max_tilt_deg", g.max_tilt_deg, 1.0, 89.0);
   return g;
@@ -76,13 +62,9 @@ DslPidGains readDslPidGains(ParamSet& p) {
   g.d_for = readHorizontalAndZ(p, "d_for", g.d_for, 1e3);
   g.i_pos_limit_xy = p.getDouble("i_pos_limit_xy", g.i_pos_limit_xy, 0.0, 1e3);
   g.i_pos_limit_z = p.getDouble("i_pos_limit_z", g.i_pos_limit_z, 0.0, 1e3);
-  const auto readTorqueAxes = [&](const std::string& prefix, const Eigen::Vector3d& fallback) {
-    const double rp = p.getDouble(prefix + "_rp", fallback.x(), 0.0, 1e7);
-    return Eigen::Vector3d(rp, rp, p.getDouble(prefix + "_yaw", fallback.z(), 0.0, 1e7));
-  };
-  g.p_tor = readTorqueAxes("p_tor", g.p_tor);
-  g.i_tor = readTorqueAxes("i_tor", g.i_tor);
-  g.d_tor = readTorqueAxes("d_tor", g.d_tor);
+  g.p_tor = readRollPitchAndYaw(p, "p_tor", g.p_tor, 1e7);
+  g.i_tor = readRollPitchAndYaw(p, "i_tor", g.i_tor, 1e7);
+  g.d_tor = readRollPitchAndYaw(p, "d_tor", g.d_tor, 1e7);
   g.i_rpy_limit_rp = p.getDouble("i_rpy_limit_rp", g.i_rpy_limit_rp, 0.0, 1e4);
   g.i_rpy_limit_yaw = p.getDouble("i_rpy_limit_yaw", g.i_rpy_limit_yaw, 0.0, 1e4);
   g.max_torque_pwm = p.getDouble("max_torque_pwm", g.max_torque_pwm, 0.0, 65535.0);

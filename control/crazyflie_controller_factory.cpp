@@ -5,28 +5,23 @@
 #include "control/crazyflie_lee_controller.h"
 #include "control/crazyflie_mellinger_controller.h"
 #include "control/crazyflie_pid_controller.h"
+#include "control/gain_reading.h"
 
 namespace cosim {
 
 namespace {
 
 // x and y share one gain; z has its own (the firmware's defaults are symmetric in x and y).
-Eigen::Vector3d readXyZ(ParamSet& p, const std::string& prefix, const Eigen::Vector3d& fallback,
-                        double hi) {
-  const double xy = p.getDouble(prefix + "_xy", fallback.x(), 0.0, hi);
-  return {xy, xy, p.getDouble(prefix + "_z", fallback.z(), 0.0, hi)};
-}
-
 CrazyflieLeeGains readLee(ParamSet& p) {
   CrazyflieLeeGains g;
-  g.kpos_p = readXyZ(p, "kpos_p", g.kpos_p, 1e4);
-  g.kpos_d = readXyZ(p, "kpos_d", g.kpos_d, 1e4);
-  g.kpos_i = readXyZ(p, "kpos_i", g.kpos_i, 1e4);
+  g.kpos_p = readHorizontalAndZ(p, "kpos_p", g.kpos_p, 1e4);
+  g.kpos_d = readHorizontalAndZ(p, "kpos_d", g.kpos_d, 1e4);
+  g.kpos_i = readHorizontalAndZ(p, "kpos_i", g.kpos_i, 1e4);
   g.kpos_p_limit = p.getDouble("kpos_p_limit", g.kpos_p_limit, 0.0, 1e4);
   g.kpos_d_limit = p.getDouble("kpos_d_limit", g.kpos_d_limit, 0.0, 1e4);
-  g.k_r = readXyZ(p, "kr", g.k_r, 10.0);
-  g.k_omega = readXyZ(p, "komega", g.k_omega, 10.0);
-  g.k_i = readXyZ(p, "ki", g.k_i, 10.0);
+  g.k_r = readHorizontalAndZ(p, "kr", g.k_r, 10.0);
+  g.k_omega = readHorizontalAndZ(p, "komega", g.k_omega, 10.0);
+  g.k_i = readHorizontalAndZ(p, "ki", g.k_i, 10.0);
   g.mass = p.getDouble("mass", -1.0, -1.0, 100.0);
   return g;
 }

@@ -41,6 +41,28 @@ class CrazyflieFirmwareController : public FlightController {
   ControlOutput output_;
 };
 
+// A firmware law with its gain set (`Gains`, which has a `mass` field, kg) and the mass it
+// believes: gains.mass if positive, else the mass of the airframe the controller is given (the
+// vehicle's mass, times model_error.mass if set). crazyflie-firmware's platform_defaults_cf21bl.h
+// says of CF_MASS (0.0393 kg) "Default: Crazyflie 2.1 Brushless with propeller guards, 350mAh
+// battery, and Lighthouse deck. Update this value with the mass of your specific setup if
+// different", through CONFIG_MODIFIED_CF_MASS or the controller's mass parameter (ctrlLee.mass,
+// ctrlMel.mass); a scenario that states the flown mass describes a firmware configured as asked.
+// A firmware left at its default on a vehicle of another mass is gains {mass: 0.0393} (or
+// model_error.mass).
+template <class Gains>
+class CrazyflieMassBasedController : public CrazyflieFirmwareController {
+ protected:
+  CrazyflieMassBasedController(const QuadrotorParams& airframe, const Gains& gains,
+                               const CrazyfliePlatform& platform)
+      : CrazyflieFirmwareController(airframe, platform),
+        gains_(gains),
+        mass_(gains.mass > 0.0 ? gains.mass : airframe.mass) {}
+
+  Gains gains_;
+  double mass_;  // kg
+};
+
 // The body rates the high-level commander puts into the setpoint (attitudeRate), from the
 // reference by differential flatness (pptraj.c, after Mellinger and Kumar 2011 eq. 7):
 // z_b = (a + g e3) / |a + g e3|, x from the yaw, h = (j - (j . z_b) z_b) / |a + g e3|,

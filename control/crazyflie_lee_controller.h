@@ -17,13 +17,7 @@
 // is followed: the moment drops the paper's -J (w^ R^T R_d w_d - R^T R_d dw_d) term, the
 // integrals are not bounded (Kpos_I_limit is declared but unused; Kpos_I is 0 by default), both
 // integrals reset whenever T < 0.01 N, and no tilt limit applies.
-// The believed mass m is ctrlLee.mass if given, else the mass of the airframe the controller is
-// given (the vehicle's mass, times model_error.mass if set): crazyflie-firmware's
-// platform_defaults_cf21bl.h says of CF_MASS (0.0393 kg) "Default: Crazyflie 2.1 Brushless with
-// propeller guards, 350mAh battery, and Lighthouse deck. Update this value with the mass of your
-// specific setup if different", through CONFIG_MODIFIED_CF_MASS or the ctrlLee.mass parameter;
-// a scenario that states the flown mass describes a firmware configured as asked. A firmware
-// left at its default on a vehicle of another mass is gains {mass: 0.0393} (or model_error.mass).
+// The believed mass m: ctrlLee.mass if given, else the airframe's (CrazyflieMassBasedController).
 #include "control/crazyflie_firmware_controller.h"
 
 namespace cosim {
@@ -43,7 +37,7 @@ struct CrazyflieLeeGains {
   double mass = -1.0;  // ctrlLee.mass, kg; negative: the given airframe's mass (configured)
 };
 
-class CrazyflieLeeController : public CrazyflieFirmwareController {
+class CrazyflieLeeController : public CrazyflieMassBasedController<CrazyflieLeeGains> {
  public:
   CrazyflieLeeController(const QuadrotorParams& airframe, const CrazyflieLeeGains& gains = {},
                          const CrazyfliePlatform& platform = crazyflie21BrushlessPlatform());
@@ -64,8 +58,6 @@ class CrazyflieLeeController : public CrazyflieFirmwareController {
   void resetLaw() override;
 
  private:
-  CrazyflieLeeGains gains_;
-  double mass_;
   Eigen::Vector3d i_error_pos_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d i_error_att_ = Eigen::Vector3d::Zero();
 };

@@ -3,20 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cosim {
+#include "control/vee_map.h"
 
-namespace {
-Eigen::Vector3d vee(const Eigen::Matrix3d& S) {
-  return {S(2, 1), S(0, 2), S(1, 0)};
-}
-}  // namespace
+namespace cosim {
 
 CrazyflieMellingerController::CrazyflieMellingerController(const QuadrotorParams& airframe,
                                                            const CrazyflieMellingerGains& gains,
                                                            const CrazyfliePlatform& platform)
-    : CrazyflieFirmwareController(airframe, platform),
-      gains_(gains),
-      mass_(gains.mass > 0.0 ? gains.mass : airframe.mass) {}
+    : CrazyflieMassBasedController(airframe, gains, platform) {}
 
 void CrazyflieMellingerController::resetLaw() {
   i_error_.setZero();

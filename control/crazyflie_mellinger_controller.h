@@ -15,13 +15,7 @@
 // +-32000, as the firmware hands them to its legacy power distribution. The gains were tuned for
 // the brushed Crazyflie 2.x; on the Brushless build the same PWM numbers mean other forces (its
 // THRUST_MAX scale): the firmware's default behaviour on this platform, kept as it is.
-// The believed mass m is ctrlMel.mass if given, else the mass of the airframe the controller is
-// given (the vehicle's mass, times model_error.mass if set): crazyflie-firmware's
-// platform_defaults_cf21bl.h says of CF_MASS (0.0393 kg) "Default: Crazyflie 2.1 Brushless with
-// propeller guards, 350mAh battery, and Lighthouse deck. Update this value with the mass of your
-// specific setup if different", through CONFIG_MODIFIED_CF_MASS or the ctrlMel.mass parameter;
-// a scenario that states the flown mass describes a firmware configured as asked. A firmware
-// left at its default on a vehicle of another mass is gains {mass: 0.0393} (or model_error.mass).
+// The believed mass m: ctrlMel.mass if given, else the airframe's (CrazyflieMassBasedController).
 #include "control/crazyflie_firmware_controller.h"
 
 namespace cosim {
@@ -37,7 +31,7 @@ struct CrazyflieMellingerGains {
   double kd_omega_rp = 200;  // PWM per rad/s^2
 };
 
-class CrazyflieMellingerController : public CrazyflieFirmwareController {
+class CrazyflieMellingerController : public CrazyflieMassBasedController<CrazyflieMellingerGains> {
  public:
   CrazyflieMellingerController(const QuadrotorParams& airframe,
                                const CrazyflieMellingerGains& gains = {},
@@ -60,8 +54,6 @@ class CrazyflieMellingerController : public CrazyflieFirmwareController {
   void resetLaw() override;
 
  private:
-  CrazyflieMellingerGains gains_;
-  double mass_;
   Eigen::Vector3d i_error_ = Eigen::Vector3d::Zero();    // of e_p, m s
   Eigen::Vector3d i_error_m_ = Eigen::Vector3d::Zero();  // of -e_R, s
   Eigen::Vector2d prev_rate_error_ = Eigen::Vector2d::Zero();

@@ -52,19 +52,14 @@ void writeText(const std::filesystem::path& p, const std::string& text) {
   if (!out) throw std::runtime_error("cannot write " + p.string());
 }
 
-std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
-
 // Viridis for the error palette, as in the videos.
 std::string errorPalette(double scale, const std::string& label) {
   std::ostringstream s;
   s << "set palette defined (";
   for (int i = 0; i <= 8; ++i)
     s << (i ? ", " : "") << i / 8.0 << " '" << hexColour(errorColour(i / 8.0)) << "'";
-  s << ")\nset cbrange [0:" << num(scale) << "]\nset cblabel " << gnuplotString(label) << "\n";
+  s << ")\nset cbrange [0:" << gnuplotNumber(scale) << "]\nset cblabel " << gnuplotString(label)
+    << "\n";
   return s.str();
 }
 
@@ -78,16 +73,18 @@ void writeVehicleData(const VehicleLog& v, const std::vector<double>& err,
                ? v.samples.size() - 1  // always end with the last sample
                : i + step) {
     const LogSample& x = v.samples[i];
-    s << num(x.t) << ' ' << num(x.pos.x()) << ' ' << num(x.pos.y()) << ' ' << num(x.pos.z()) << ' '
-      << num(x.ref_pos.x()) << ' ' << num(x.ref_pos.y()) << ' ' << num(x.ref_pos.z()) << ' '
-      << num(err[i]) << '\n';
+    s << gnuplotNumber(x.t) << ' ' << gnuplotNumber(x.pos.x()) << ' ' << gnuplotNumber(x.pos.y())
+      << ' ' << gnuplotNumber(x.pos.z()) << ' ' << gnuplotNumber(x.ref_pos.x()) << ' '
+      << gnuplotNumber(x.ref_pos.y()) << ' ' << gnuplotNumber(x.ref_pos.z()) << ' '
+      << gnuplotNumber(err[i]) << '\n';
   }
   writeText(file, s.str());
 }
 
 void writePathData(const std::vector<Eigen::Vector3d>& path, const std::filesystem::path& file) {
   std::ostringstream s;
-  for (const auto& p : path) s << num(p.x()) << ' ' << num(p.y()) << ' ' << num(p.z()) << '\n';
+  for (const auto& p : path)
+    s << gnuplotNumber(p.x()) << ' ' << gnuplotNumber(p.y()) << ' ' << gnuplotNumber(p.z()) << '\n';
   writeText(file, s.str());
 }
 
@@ -111,14 +108,14 @@ std::string obstacleObjects(const World& world, int horizontal, int vertical,
             ? 0.55
             : 0.2 + 0.65 * std::clamp((top - world.bounds_min.z()) / world_height, 0.0, 1.0);
     const std::string style = " fc rgb '" + std::string(kObstacleFill) +
-                              "' fillstyle transparent solid " + num(opacity) + " border lc rgb '" +
-                              kObstacleEdge + "' lw 0.8 back\n";
+                              "' fillstyle transparent solid " + gnuplotNumber(opacity) +
+                              " border lc rgb '" + kObstacleEdge + "' lw 0.8 back\n";
     const double c = std::cos(o.yaw_deg * M_PI / 180.0), sn = std::sin(o.yaw_deg * M_PI / 180.0);
     if (o.type == ObstacleType::Sphere || (o.type == ObstacleType::Cylinder && vertical != 2)) {
       // A circle from above (spheres, and cylinders standing on z).
-      s << "set object " << id++ << " ellipse at " << num(o.pos[horizontal]) << ","
-        << num(o.pos[vertical]) << " size " << num(2 * o.radius) << "," << num(2 * o.radius)
-        << " units xy" << style;
+      s << "set object " << id++ << " ellipse at " << gnuplotNumber(o.pos[horizontal]) << ","
+        << gnuplotNumber(o.pos[vertical]) << " size " << gnuplotNumber(2 * o.radius) << ","
+        << gnuplotNumber(2 * o.radius) << " units xy" << style;
     } else if (o.type == ObstacleType::Cylinder || vertical == 2) {
       // From the side: the horizontal extent of the (rotated) footprint, the full height.
       double half_h;
@@ -129,9 +126,10 @@ std::string obstacleObjects(const World& world, int horizontal, int vertical,
                                  : 0.5 * (std::abs(sn) * o.size.x() + std::abs(c) * o.size.y());
       }
       const double half_v = 0.5 * (o.type == ObstacleType::Cylinder ? o.height : o.size.z());
-      s << "set object " << id++ << " rectangle from " << num(o.pos[horizontal] - half_h) << ","
-        << num(o.pos[2] - half_v) << " to " << num(o.pos[horizontal] + half_h) << ","
-        << num(o.pos[2] + half_v) << style;
+      s << "set object " << id++ << " rectangle from " << gnuplotNumber(o.pos[horizontal] - half_h)
+        << "," << gnuplotNumber(o.pos[2] - half_v) << " to "
+        << gnuplotNumber(o.pos[horizontal] + half_h) << "," << gnuplotNumber(o.pos[2] + half_v)
+        << style;
     } else {
       // A box from above: its rotated footprint.
       s << "set object " << id++ << " polygon";
@@ -140,7 +138,7 @@ std::string obstacleObjects(const World& world, int horizontal, int vertical,
       for (int k = 0; k < 5; ++k) {
         const double x = o.pos.x() + c * corners[k][0] - sn * corners[k][1];
         const double y = o.pos.y() + sn * corners[k][0] + c * corners[k][1];
-        s << (k ? " to " : " from ") << num(x) << "," << num(y);
+        s << (k ? " to " : " from ") << gnuplotNumber(x) << "," << gnuplotNumber(y);
       }
       s << style;
     }
@@ -238,6 +236,116 @@ std::string pathPlot(const RunLog& log, int h, int v, const std::vector<ErrorRef
   return p.str();
 }
 
+// The error figure's series (one per vehicle, its data files written into `work_dir`): the
+// plot command, the RMSE and arrival marks, and the largest error (the colour scale's top).
+struct ErrorSeries {
+  std::string plot, marks;
+  double max_error = 0.0;
+};
+
+ErrorSeries errorSeries(const RunLog& log, const World& world,
+                        const std::vector<ErrorReference>& refs,
+                        const std::filesystem::path& work_dir) {
+  double max_error = 0.0;
+  std::ostringstream error_plot, error_marks;
+  error_plot << "plot ";
+  for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
+    const VehicleLog& v = log.vehicles[a];
+    const std::vector<double> err = trackingErrors(v, refs[a]);
+    for (double e : err) max_error = std::max(max_error, e);
+    writeVehicleData(v, err, work_dir / dataFile('v', a));
+    std::vector<Eigen::Vector3d> planned = v.planned_path;
+    if (planned.empty() && !v.samples.empty()) planned.push_back(v.samples.front().pos);
+    if (planned.empty()) planned.push_back(v.goal);
+    writePathData(planned, work_dir / dataFile('p', a));
+    writePathData({v.goal}, work_dir / dataFile('g', a));
+    const bool several = log.vehicles.size() > 1;
+    const std::string colour =
+        hexColour(several ? agentColour(a) : Eigen::Vector3f(0.13f, 0.35f, 0.65f));
+    const FlightMetrics m = computeFlightMetrics(v, world, refs[a] != ErrorReference::PlannedPath);
+    error_plot << (a ? ", \\\n     " : "") << "'v" << a
+               << ".dat' using 1:8 with lines lw 2 lc rgb '" << colour << "' title "
+               << gnuplotString((several ? v.name + ": " : std::string()) + "RMSE " +
+                                gnuplotNumber(std::round(m.rmse_m * 1000) / 1000) + " m, max " +
+                                gnuplotNumber(std::round(m.max_error_m * 1000) / 1000) + " m");
+    error_marks << "set arrow from graph 0, first " << gnuplotNumber(m.rmse_m)
+                << " to graph 1, first " << gnuplotNumber(m.rmse_m)
+                << " nohead dt (4,4) lw 1 lc rgb '" << colour << "'\n";
+    if (v.reached_goal && v.arrival_time >= 0)
+      error_marks << "set arrow from first " << gnuplotNumber(v.arrival_time)
+                  << ", graph 0 to first " << gnuplotNumber(v.arrival_time)
+                  << ", graph 1 nohead dt (2,3) lw 1 lc rgb '#606060'\n"
+                  << "set label " << gnuplotString("goal reached ") << " at first "
+                  << gnuplotNumber(v.arrival_time)
+                  << ", graph 0.5 right rotate by 90 offset -0.8,0 tc rgb '#404040' font ',9'\n";
+    error_marks << "set label " << gnuplotString("RMSE") << " at graph 0.005, first "
+                << gnuplotNumber(m.rmse_m) << " left offset 0,0.6 tc rgb '" << colour
+                << "' font ',9'\n";
+  }
+  return {error_plot.str(), error_marks.str(), max_error};
+}
+
+// What the colour bar measures against: the reference every vehicle shares, or each one's own.
+std::string referenceName(const std::vector<ErrorReference>& refs) {
+  bool one_reference = true;
+  for (ErrorReference r : refs) one_reference = one_reference && r == refs.front();
+  return !one_reference ? "each vehicle's own reference"
+         : refs.empty() ? "the planned path"
+                        : std::string("the ") + errorReferenceName(refs.front());
+}
+
+// The look every figure shares: border, grid, tics and key.
+const char* kCommonStyle =
+    "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid lc rgb '#dddddd' lw 1\n"
+    "set tics out nomirror\nset key box lc rgb '#bbbbbb' opaque samplen 2.5 spacing 1.1 "
+    "font ',10' Left reverse\n";
+
+// The top view's script: equal axes over the whole world.
+std::string topView(const RunLog& log, const Scenario& scenario,
+                    const std::vector<ErrorReference>& refs, const std::string& palette,
+                    bool plans) {
+  const World& world = scenario.world;
+  const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
+  const std::string planner =
+      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
+  std::ostringstream top;
+  top << kCommonStyle << palette << obstacleObjects(world, 0, 1) << "set title "
+      << gnuplotString(
+             std::string(plans ? "Top view: planned vs flown path (" : "Top view: flown paths (") +
+             planner + "; darker obstacles are taller)")
+      << "\n"
+      << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
+      << "set xrange [" << gnuplotNumber(lo.x()) << ":" << gnuplotNumber(hi.x())
+      << "]\nset yrange [" << gnuplotNumber(lo.y()) << ":" << gnuplotNumber(hi.y())
+      << "]\nset key outside below horizontal center\n"
+      << pathPlot(log, 0, 1, refs, plans) << "\n";
+  return top.str();
+}
+
+// The side view's script, along the axis the flight crosses most (the other horizontal axis is
+// depth).
+std::string sideView(const RunLog& log, const World& world, const std::vector<ErrorReference>& refs,
+                     const std::string& palette, bool plans) {
+  const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
+  int along = 0;
+  if (!log.vehicles.empty() && !log.vehicles[0].samples.empty()) {
+    const Eigen::Vector3d d = log.vehicles[0].goal - log.vehicles[0].samples.front().pos;
+    along = std::abs(d.y()) > std::abs(d.x()) ? 1 : 0;
+  }
+  std::ostringstream side;
+  side << kCommonStyle << palette
+       << obstacleObjects(world, along, 2, obstaclesNearPaths(world, log)) << "set title "
+       << gnuplotString("Side view (looking along " + axisName(1 - along) + "; obstacles within " +
+                        gnuplotNumber(kSideViewDepth) + " m of the paths only; height exaggerated)")
+       << "\n"
+       << "set xlabel '" << axisName(along) << " [m]'\nset ylabel 'z [m]'\nset size ratio 0.42\n"
+       << "set xrange [" << gnuplotNumber(lo[along]) << ":" << gnuplotNumber(hi[along])
+       << "]\nset yrange [" << gnuplotNumber(lo.z()) << ":" << gnuplotNumber(hi.z())
+       << "]\nset key outside below horizontal center\n"
+       << pathPlot(log, along, 2, refs, plans) << "\n";
+  return side.str();
+}
+
 }  // namespace
 
 std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scenario,
@@ -247,206 +355,37 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
   // Each vehicle's error against its own reference, as in its metrics (log_lookup.h).
   std::vector<ErrorReference> refs;
   for (std::size_t a = 0; a < log.vehicles.size(); ++a) refs.push_back(errorReference(scenario, a));
-  double max_error = 0.0;
-  std::ostringstream error_plot, error_marks;
-  error_plot << "plot ";
-  for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
-    const VehicleLog& v = log.vehicles[a];
-    const std::vector<double> err = trackingErrors(v, refs[a]);
-    for (double e : err) max_error = std::max(max_error, e);
-    writeVehicleData(v, err, work.path() / dataFile('v', a));
-    std::vector<Eigen::Vector3d> planned = v.planned_path;
-    if (planned.empty() && !v.samples.empty()) planned.push_back(v.samples.front().pos);
-    if (planned.empty()) planned.push_back(v.goal);
-    writePathData(planned, work.path() / dataFile('p', a));
-    writePathData({v.goal}, work.path() / dataFile('g', a));
-    const bool several = log.vehicles.size() > 1;
-    const std::string colour =
-        hexColour(several ? agentColour(a) : Eigen::Vector3f(0.13f, 0.35f, 0.65f));
-    const FlightMetrics m = computeFlightMetrics(v, world, refs[a] != ErrorReference::PlannedPath);
-    error_plot << (a ? ", \\\n     " : "") << "'v" << a
-               << ".dat' using 1:8 with lines lw 2 lc rgb '" << colour << "' title "
-               << gnuplotString((several ? v.name + ": " : std::string()) + "RMSE " +
-                                num(std::round(m.rmse_m * 1000) / 1000) + " m, max " +
-                                num(std::round(m.max_error_m * 1000) / 1000) + " m");
-    error_marks << "set arrow from graph 0, first " << num(m.rmse_m) << " to graph 1, first "
-                << num(m.rmse_m) << " nohead dt (4,4) lw 1 lc rgb '" << colour << "'\n";
-    if (v.reached_goal && v.arrival_time >= 0)
-      error_marks << "set arrow from first " << num(v.arrival_time) << ", graph 0 to first "
-                  << num(v.arrival_time) << ", graph 1 nohead dt (2,3) lw 1 lc rgb '#606060'\n"
-                  << "set label " << gnuplotString("goal reached ") << " at first "
-                  << num(v.arrival_time)
-                  << ", graph 0.5 right rotate by 90 offset -0.8,0 tc rgb '#404040' font ',9'\n";
-    error_marks << "set label " << gnuplotString("RMSE") << " at graph 0.005, first "
-                << num(m.rmse_m) << " left offset 0,0.6 tc rgb '" << colour << "' font ',9'\n";
-  }
-  const double scale = errorScaleMax(max_error, errorScaleFloor(scenario.sim.goal_tolerance));
+  const ErrorSeries series = errorSeries(log, world, refs, work.path());
+  const double scale =
+      errorScaleMax(series.max_error, errorScaleFloor(scenario.sim.goal_tolerance));
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
   const std::string planner =
       scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
-  bool one_reference = true;
-  for (ErrorReference r : refs) one_reference = one_reference && r == refs.front();
-  const std::string reference_name = !one_reference ? "each vehicle's own reference"
-                                     : refs.empty()
-                                         ? "the planned path"
-                                         : std::string("the ") + errorReferenceName(refs.front());
-  const std::string colour_label = "error to " + reference_name + " [m]";
-
-  std::ostringstream common;
-  common << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid lc rgb '#dddddd' lw 1\n"
-         << "set tics out nomirror\nset key box lc rgb '#bbbbbb' opaque samplen 2.5 spacing 1.1 "
-            "font ',10' Left reverse\n";
+  const std::string reference_name = referenceName(refs);
+  const std::string palette = errorPalette(scale, "error to " + reference_name + " [m]");
 
   std::ostringstream error;
-  error << common.str() << "set title "
+  error << kCommonStyle << "set title "
         << gnuplotString("Tracking error against " + reference_name + " (" + planner + ")")
         << "\nset xlabel 'time [s]'\nset ylabel 'position error [m]'\nset yrange [0:*]\nset xrange "
            "[0:*]\n"
         << "set key top right\n"
-        << error_marks.str() << error_plot.str() << "\n";
+        << series.marks << series.plot << "\n";
 
   const bool plans = log.vehicles.size() <= 1 || scenario.render.team_plans;
-  std::ostringstream top;
-  top << common.str() << errorPalette(scale, colour_label) << obstacleObjects(world, 0, 1)
-      << "set title "
-      << gnuplotString(
-             std::string(plans ? "Top view: planned vs flown path (" : "Top view: flown paths (") +
-             planner + "; darker obstacles are taller)")
-      << "\n"
-      << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
-      << "set xrange [" << num(lo.x()) << ":" << num(hi.x()) << "]\nset yrange [" << num(lo.y())
-      << ":" << num(hi.y()) << "]\nset key outside below horizontal center\n"
-      << pathPlot(log, 0, 1, refs, plans) << "\n";
-
-  // Side view along the axis the flight crosses most (the other horizontal axis is depth).
-  int along = 0;
-  if (!log.vehicles.empty() && !log.vehicles[0].samples.empty()) {
-    const Eigen::Vector3d d = log.vehicles[0].goal - log.vehicles[0].samples.front().pos;
-    along = std::abs(d.y()) > std::abs(d.x()) ? 1 : 0;
-  }
-  std::ostringstream side;
-  side << common.str() << errorPalette(scale, colour_label)
-       << obstacleObjects(world, along, 2, obstaclesNearPaths(world, log)) << "set title "
-       << gnuplotString("Side view (looking along " + axisName(1 - along) + "; obstacles within " +
-                        num(kSideViewDepth) + " m of the paths only; height exaggerated)")
-       << "\n"
-       << "set xlabel '" << axisName(along) << " [m]'\nset ylabel 'z [m]'\nset size ratio 0.42\n"
-       << "set xrange [" << num(lo[along]) << ":" << num(hi[along]) << "]\nset yrange ["
-       << num(lo.z()) << ":" << num(hi.z()) << "]\nset key outside below horizontal center\n"
-       << pathPlot(log, along, 2, refs, plans) << "\n";
-
   // The top view keeps equal axes: the canvas height follows the world's aspect ratio (the
   // plot is ~760 px wide; title, axes and key take ~190 px).
   const double aspect = (hi.y() - lo.y()) / std::max(1e-9, hi.x() - lo.x());
   const int top_height = 2 * static_cast<int>(std::clamp(95.0 + 380.0 * aspect, 250.0, 700.0));
-  std::string script = plotBoth("error", 1000, 480, error.str()) + "reset\n" +
-                       plotBoth("top", 1000, top_height, top.str()) + "reset\n" +
-                       plotBoth("side", 1000, 560, side.str());
+  std::string script =
+      plotBoth("error", 1000, 480, error.str()) + "reset\n" +
+      plotBoth("top", 1000, top_height, topView(log, scenario, refs, palette, plans)) + "reset\n" +
+      plotBoth("side", 1000, 560, sideView(log, world, refs, palette, plans));
   runGnuplot(script, work.path());
   const std::vector<std::string> names = {"error", "top", "side"};
   for (const auto& n : names)
     for (const char* ext : {".png", ".svg"}) work.publish(n + ext, dir / (n + ext));
   return names;
-}
-
-void writeComparisonChart(const std::filesystem::path& csv_path, const std::string& x_column,
-                          const std::string& y_column, const std::string& group_column,
-                          const std::filesystem::path& out_base) {
-  const CsvTable t = readCsvTable(csv_path);
-  const std::string file = csv_path.string();
-  const std::size_t xi = t.column(x_column, file), yi = t.column(y_column, file);
-  const std::size_t gi = group_column.empty() ? 0 : t.column(group_column, file);
-  // Values per (group, x), groups and x values in order of first appearance.
-  std::vector<std::string> groups, xs;
-  std::map<std::pair<std::string, std::string>, std::vector<double>> cells;
-  bool numeric_x = true;
-  for (const auto& row : t.rows) {
-    char* end = nullptr;
-    const double y = std::strtod(row[yi].c_str(), &end);
-    if (row[yi].empty() || *end != '\0' || !std::isfinite(y)) continue;
-    const std::string g = group_column.empty() ? y_column : row[gi];
-    const std::string& x = row[xi];
-    char* xend = nullptr;
-    std::strtod(x.c_str(), &xend);
-    numeric_x = numeric_x && !x.empty() && *xend == '\0';
-    if (std::find(groups.begin(), groups.end(), g) == groups.end()) groups.push_back(g);
-    if (std::find(xs.begin(), xs.end(), x) == xs.end()) xs.push_back(x);
-    cells[{g, x}].push_back(y);
-  }
-  if (cells.empty())
-    throw InputError(file, "column " + y_column, "no row has a numeric value to chart");
-  if (numeric_x)
-    std::stable_sort(xs.begin(), xs.end(), [](const std::string& a, const std::string& b) {
-      return std::strtod(a.c_str(), nullptr) < std::strtod(b.c_str(), nullptr);
-    });
-  const auto stats = [](const std::vector<double>& v) {
-    double mean = 0.0, var = 0.0;
-    for (double x : v) mean += x;
-    mean /= static_cast<double>(v.size());
-    for (double x : v) var += (x - mean) * (x - mean);
-    return std::make_pair(mean,
-                          v.size() > 1 ? std::sqrt(var / static_cast<double>(v.size() - 1)) : 0.0);
-  };
-
-  const std::filesystem::path out_dir =
-      out_base.has_parent_path() ? out_base.parent_path() : std::filesystem::path(".");
-  WorkDir work(out_dir);
-  std::ostringstream data, body;
-  body << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid ytics lc rgb '#dddddd'\n"
-       << "set tics out nomirror\nset key outside right top box lc rgb '#bbbbbb' font ',10'\n"
-       << "set datafile missing '?'\nset title " << gnuplotString(y_column + " by " + x_column)
-       << "\n"
-       << "set xlabel " << gnuplotString(x_column) << "\nset ylabel " << gnuplotString(y_column)
-       << "\n";
-  // Colours: the agents' palette, distinguishable for colour-blind readers.
-  if (numeric_x) {
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-      for (const auto& x : xs) {
-        auto it = cells.find({groups[g], x});
-        if (it == cells.end()) continue;
-        const auto [mean, sd] = stats(it->second);
-        data << x << ' ' << num(mean) << ' ' << num(sd) << '\n';
-      }
-      data << "\n\n";  // next gnuplot index
-    }
-    body << "plot ";
-    for (std::size_t g = 0; g < groups.size(); ++g)
-      body << (g ? ", \\\n     " : "") << "'chart.dat' index " << g
-           << " using 1:2:3 with yerrorlines lw 2 pt 7 ps 0.8 lc rgb '"
-           << hexColour(agentColour(g + 4)) << "' title " << gnuplotString(groups[g]);
-    body << "\n";
-  } else {
-    for (const auto& x : xs) {
-      std::string label = x;
-      std::replace(label.begin(), label.end(), ' ', '_');
-      data << '"' << label << '"';
-      for (const auto& g : groups) {
-        auto it = cells.find({g, x});
-        if (it == cells.end()) {
-          data << " ? ?";
-        } else {
-          const auto [mean, sd] = stats(it->second);
-          data << ' ' << num(mean) << ' ' << num(sd);
-        }
-      }
-      data << '\n';
-    }
-    body << "set style data histogram\nset style histogram errorbars gap 1.5 lw 1\n"
-         << "set style fill solid 0.85 border rgb '#303030'\nset boxwidth 0.9\nset yrange [0:*]\n"
-         << "set xtics rotate by -30 left noenhanced\n";
-    if (groups.size() == 1) body << "set key off\n";
-    body << "plot ";
-    for (std::size_t g = 0; g < groups.size(); ++g)
-      body << (g ? ", \\\n     " : "") << "'chart.dat' using " << 2 + 2 * g << ":" << 3 + 2 * g
-           << (g == 0 ? ":xtic(1)" : "") << " lc rgb '" << hexColour(agentColour(g + 4))
-           << "' title " << gnuplotString(groups[g]);
-    body << "\n";
-  }
-  writeText(work.path() / "chart.dat", data.str());
-  runGnuplot(plotBoth("chart", 900, 500, body.str()), work.path());
-  const std::string base = out_base.filename().string();
-  work.publish("chart.png", out_dir / (base + ".png"));
-  work.publish("chart.svg", out_dir / (base + ".svg"));
 }
 
 }  // namespace cosim

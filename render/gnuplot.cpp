@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -36,6 +37,12 @@ void GnuplotScratch::publish(const std::string& name) const {
   const std::string base = out_base_name_.string();
   moveIntoPlace(work_ / (name + ".png"), out_dir_ / (base + ".png"));
   moveIntoPlace(work_ / (name + ".svg"), out_dir_ / (base + ".svg"));
+}
+
+std::string gnuplotNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
 }
 
 std::string gnuplotString(const std::string& s) {

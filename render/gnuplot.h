@@ -30,6 +30,9 @@ class GnuplotScratch {
   std::filesystem::path out_dir_, out_base_name_, work_;
 };
 
+// A number for a gnuplot script or data file: six significant digits (printf's %.6g).
+std::string gnuplotNumber(double v);
+
 // A string literal for a gnuplot script (single-quoted; gnuplot doubles inner quotes).
 std::string gnuplotString(const std::string& s);
 

@@ -84,6 +84,94 @@ double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
+// The frames to draw: the scenario and flight, the frame size and count, and the video file the
+// pipelines encode to (removed after each).
+struct RenderBenchSetup {
+  const Scenario& s;
+  const RunLog& log;
+  const WorldModel& world;
+  int width, height, frames;
+  std::filesystem::path video;
+};
+
+// Bare: the engine's renderer alone on the same model, camera path and frame size; seconds.
+double bareRenderSeconds(const RenderBenchSetup& b) {
+  const Scenario& s = b.s;
+  const RunLog& log = b.log;
+  const mjModel* m = b.world.model();
+  const int width = b.width, height = b.height, frames = b.frames;
+  OffscreenContext ctx(m, width, height);
+  mjData* d = mj_makeData(m);
+  mj_forward(m, d);
+  mjvScene scene;
+  mjvCamera cam;
+  mjvOption opt;
+  mjv_defaultScene(&scene);
+  mjv_makeScene(m, &scene, m->ngeom + 100);
+  mjv_defaultCamera(&cam);
+  mjv_defaultOption(&opt);
+  cam.type = mjCAMERA_FREE;
+  const CameraRig rig(s, log, static_cast<double>(width) / height);
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * height * 3);
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int k = 0; k < frames; ++k) {
+    // The same chase camera poses as the full pipeline below.
+    const CameraPose pose = rig.pose(CameraKind::Chase, k / 30.0 + 10.0);
+    for (int i = 0; i < 3; ++i) cam.lookat[i] = pose.lookat[i];
+    cam.azimuth = pose.azimuth;
+    cam.elevation = pose.elevation;
+    cam.distance = pose.distance;
+    mjv_updateScene(m, d, &opt, nullptr, &cam, mjCAT_ALL, &scene);
+    mjr_render(ctx.viewport(), &scene, ctx.context());
+    mjr_readPixels(rgb.data(), nullptr, ctx.viewport(), ctx.context());
+  }
+  const double elapsed = seconds(t0);
+  mjv_freeScene(&scene);
+  mj_deleteData(d);
+  return elapsed;
+}
+
+// Full: the video path of `cosim run` (chase camera, all overlays, encoding) over the first
+// `frames` frames of the flight at 30 fps; seconds.
+double fullPipelineSeconds(const RenderBenchSetup& b) {
+  const int width = b.width, height = b.height, frames = b.frames;
+  const std::filesystem::path& video = b.video;
+  const Scenario& s = b.s;
+  const RunLog& log = b.log;
+  const WorldModel& world = b.world;
+  RunRenderer renderer(world, s, log, width, height);
+  std::vector<std::uint8_t> rgb;
+  const auto t0 = std::chrono::steady_clock::now();
+  VideoEncoder encoder(video, width, height, 30);
+  for (int k = 0; k < frames; ++k) {
+    renderer.render(k / 30.0 + 10.0, CameraKind::Chase, rgb);
+    encoder.addFrame(rgb);
+  }
+  encoder.finish();
+  const double elapsed = seconds(t0);
+  std::filesystem::remove(video);
+  return elapsed;
+}
+
+// Parallel: the same frames rendered on `workers` threads, handed to the encoder in order, as
+// `cosim run` renders its videos; seconds.
+double parallelPipelineSeconds(const RenderBenchSetup& b, int workers) {
+  const int width = b.width, height = b.height, frames = b.frames;
+  const std::filesystem::path& video = b.video;
+  const Scenario& s = b.s;
+  const RunLog& log = b.log;
+  const WorldModel& world = b.world;
+  const FrameSequence sequence{CameraKind::Chase, frames, 1.0 / 30.0, width, height, 10.0};
+  const auto t0 = std::chrono::steady_clock::now();
+  VideoEncoder encoder(video, width, height, 30);
+  renderFramesInOrder(world, s, log, sequence, workers,
+                      [&](std::vector<std::uint8_t>& rgb) { encoder.addFrame(rgb); });
+  encoder.finish();
+  const double elapsed = seconds(t0);
+  std::filesystem::remove(video);
+  return elapsed;
+}
+
 }  // namespace
 
 Section benchRenderPipeline(bool quick) {
@@ -95,71 +183,16 @@ Section benchRenderPipeline(bool quick) {
   s.render.height = height;
   const RunLog log = benchLog(s);
   const WorldModel world = WorldModel::build(s);
-  const mjModel* m = world.model();
   const std::filesystem::path video = std::filesystem::temp_directory_path() /
                                       ("cosim_bench_render_" + std::to_string(getpid()) + ".mp4");
+  const RenderBenchSetup setup{s, log, world, width, height, frames, video};
 
   double best_bare = 1e300, best_full = 1e300, best_parallel = 1e300;
   const int workers = defaultRenderWorkers();
   for (int round = 0; round < rounds; ++round) {
-    {
-      // Bare: the engine's renderer alone on the same model, camera path and frame size.
-      OffscreenContext ctx(m, width, height);
-      mjData* d = mj_makeData(m);
-      mj_forward(m, d);
-      mjvScene scene;
-      mjvCamera cam;
-      mjvOption opt;
-      mjv_defaultScene(&scene);
-      mjv_makeScene(m, &scene, m->ngeom + 100);
-      mjv_defaultCamera(&cam);
-      mjv_defaultOption(&opt);
-      cam.type = mjCAMERA_FREE;
-      const CameraRig rig(s, log, static_cast<double>(width) / height);
-      std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * height * 3);
-      const auto t0 = std::chrono::steady_clock::now();
-      for (int k = 0; k < frames; ++k) {
-        // The same chase camera poses as the full pipeline below.
-        const CameraPose pose = rig.pose(CameraKind::Chase, k / 30.0 + 10.0);
-        for (int i = 0; i < 3; ++i) cam.lookat[i] = pose.lookat[i];
-        cam.azimuth = pose.azimuth;
-        cam.elevation = pose.elevation;
-        cam.distance = pose.distance;
-        mjv_updateScene(m, d, &opt, nullptr, &cam, mjCAT_ALL, &scene);
-        mjr_render(ctx.viewport(), &scene, ctx.context());
-        mjr_readPixels(rgb.data(), nullptr, ctx.viewport(), ctx.context());
-      }
-      best_bare = std::min(best_bare, seconds(t0));
-      mjv_freeScene(&scene);
-      mj_deleteData(d);
-    }
-    {
-      // Full: the video path of `cosim run` (chase camera, all overlays, encoding) over the
-      // first `frames` frames of the flight at 30 fps.
-      RunRenderer renderer(world, s, log, width, height);
-      std::vector<std::uint8_t> rgb;
-      const auto t0 = std::chrono::steady_clock::now();
-      VideoEncoder encoder(video, width, height, 30);
-      for (int k = 0; k < frames; ++k) {
-        renderer.render(k / 30.0 + 10.0, CameraKind::Chase, rgb);
-        encoder.addFrame(rgb);
-      }
-      encoder.finish();
-      best_full = std::min(best_full, seconds(t0));
-      std::filesystem::remove(video);
-    }
-    {
-      // Parallel: the same frames rendered on every core, handed to the encoder in order, as
-      // `cosim run` renders its videos.
-      const FrameSequence sequence{CameraKind::Chase, frames, 1.0 / 30.0, width, height, 10.0};
-      const auto t0 = std::chrono::steady_clock::now();
-      VideoEncoder encoder(video, width, height, 30);
-      renderFramesInOrder(world, s, log, sequence, workers,
-                          [&](std::vector<std::uint8_t>& rgb) { encoder.addFrame(rgb); });
-      encoder.finish();
-      best_parallel = std::min(best_parallel, seconds(t0));
-      std::filesystem::remove(video);
-    }
+    best_bare = std::min(best_bare, bareRenderSeconds(setup));
+    best_full = std::min(best_full, fullPipelineSeconds(setup));
+    best_parallel = std::min(best_parallel, parallelPipelineSeconds(setup, workers));
   }
   Section out;
   out.name = "render_pipeline";

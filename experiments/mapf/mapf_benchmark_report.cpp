@@ -35,8 +35,8 @@ std::string mapfBenchmarkCsv(const std::string& map, const std::vector<MapfBench
            (r.success && r.anytime ? std::to_string(r.first_cost) : "") + "," +
            (r.success && r.anytime ? std::to_string(r.sum_of_costs) : "") + "," +
            (run ? std::to_string(r.conflicts) : "") + "," +
-           (run ? fixedDigits(r.table_mb, 1) : "") + "," + (run ? fixedDigits(r.peak_rss_mb, 1) : "") +
-           "," + csvField(r.message) + "\n";
+           (run ? fixedDigits(r.table_mb, 1) : "") + "," +
+           (run ? fixedDigits(r.peak_rss_mb, 1) : "") + "," + csvField(r.message) + "\n";
   }
   return csv;
 }
@@ -64,28 +64,14 @@ std::string mapfSuccessRateCsv(const MapfBenchmarkSetup& s, const MapfBenchmarkT
   return csv;
 }
 
-std::string mapfBenchmarkMarkdown(const MapfBenchmarkSetup& s,
-                                  const std::vector<MapfBenchmarkRow>& rows,
-                                  const MapfBenchmarkTally& t,
-                                  const std::vector<std::string>& notes) {
-  const std::string map = fileStem(s.map);
-  std::string scens;
-  for (const auto& f : s.scens) scens += (scens.empty() ? "" : ", ") + fileStem(f);
-  std::string md = "# MAPF benchmark: " + map + "\n\n" + "Scenarios: " + scens +
-                   ". Agents: " + std::to_string(s.counts.front()) + " to " +
-                   std::to_string(s.counts.back()) + " (" + std::to_string(s.counts.size()) +
-                   " counts). Time limit " + fixedDigits(s.time_limit_s, 1) + " s per run, " +
-                   std::to_string(s.connectivity) + "-connected, seed " + std::to_string(s.seed) +
-                   ". Solved = the independent validator accepts the paths. SOC = sum of arrival "
-                   "times; every move and wait costs one step.";
-  if (!s.keep_going)
-    md +=
-        " A planner that failed on a scenario was not run there at larger counts (`skipped`, "
-        "counted as not solved).";
-  md += "\n\n";
-  for (const auto& n : notes) md += "- " + n + "\n";
-  if (!notes.empty()) md += "\n";
+namespace {
 
+// The summary table: per planner its runs, solved runs, the largest count solved every run, its
+// mean time and its sum of costs against CBS's (optimal) on the instances both solved.
+std::string plannerSummaryTable(const MapfBenchmarkSetup& s,
+                                const std::vector<MapfBenchmarkRow>& rows,
+                                const MapfBenchmarkTally& t) {
+  std::string md;
   // CBS is optimal: on instances both solve, its sum of costs is the reference.
   std::map<std::pair<std::string, int>, long> cbs_soc;
   for (const MapfBenchmarkRow& r : rows)
@@ -123,6 +109,12 @@ std::string mapfBenchmarkMarkdown(const MapfBenchmarkSetup& s,
           (cbs > 0 ? std::to_string(above) : "-") + " |\n";
   }
 
+  return md;
+}
+
+// Success rate (%) per planner and agent count.
+std::string successRateTable(const MapfBenchmarkSetup& s, const MapfBenchmarkTally& t) {
+  std::string md;
   md += "\n## Success rate (%) by agents\n\n| agents |";
   for (const auto& p : s.planners) md += " " + p + " |";
   md += "\n|---|";
@@ -145,7 +137,13 @@ std::string mapfBenchmarkMarkdown(const MapfBenchmarkSetup& s,
     if (any) md += line + "\n";
   }
 
-  // Anytime planners (they report a first solution): how much the search improved it.
+  return md;
+}
+
+// Anytime planners (they report a first solution): how much the search improved it.
+std::string anytimeImprovement(const MapfBenchmarkSetup& s,
+                               const std::vector<MapfBenchmarkRow>& rows) {
+  std::string md;
   for (const std::string& p : s.planners) {
     double first = 0, final = 0, first_ms = 0;
     int k = 0;
@@ -159,8 +157,13 @@ std::string mapfBenchmarkMarkdown(const MapfBenchmarkSetup& s,
           " ms; final SOC / first SOC " + fixedDigits(final / first, 3) + ".\n";
   }
 
-  md += "\n";
-  md += lacamStarPublishedMarkdown(map);
+  return md;
+}
+
+// Ours beside LaCAM*'s published figures: lacam's solved runs and first solutions within 10 s.
+std::string lacamAgainstPublished(const MapfBenchmarkSetup& s,
+                                  const std::vector<MapfBenchmarkRow>& rows) {
+  std::string md;
   if (std::find(s.planners.begin(), s.planners.end(), "lacam") != s.planners.end()) {
     int runs = 0, solved = 0, in_10s = 0;
     for (const MapfBenchmarkRow& r : rows)
@@ -174,6 +177,39 @@ std::string mapfBenchmarkMarkdown(const MapfBenchmarkSetup& s,
           " %), the first solution within 10 s in " + std::to_string(in_10s) + " (" +
           fixedDigits(100.0 * in_10s / runs, 1) + " %).\n";
   }
+  return md;
+}
+
+}  // namespace
+
+std::string mapfBenchmarkMarkdown(const MapfBenchmarkSetup& s,
+                                  const std::vector<MapfBenchmarkRow>& rows,
+                                  const MapfBenchmarkTally& t,
+                                  const std::vector<std::string>& notes) {
+  const std::string map = fileStem(s.map);
+  std::string scens;
+  for (const auto& f : s.scens) scens += (scens.empty() ? "" : ", ") + fileStem(f);
+  std::string md = "# MAPF benchmark: " + map + "\n\n" + "Scenarios: " + scens +
+                   ". Agents: " + std::to_string(s.counts.front()) + " to " +
+                   std::to_string(s.counts.back()) + " (" + std::to_string(s.counts.size()) +
+                   " counts). Time limit " + fixedDigits(s.time_limit_s, 1) + " s per run, " +
+                   std::to_string(s.connectivity) + "-connected, seed " + std::to_string(s.seed) +
+                   ". Solved = the independent validator accepts the paths. SOC = sum of arrival "
+                   "times; every move and wait costs one step.";
+  if (!s.keep_going)
+    md +=
+        " A planner that failed on a scenario was not run there at larger counts (`skipped`, "
+        "counted as not solved).";
+  md += "\n\n";
+  for (const auto& n : notes) md += "- " + n + "\n";
+  if (!notes.empty()) md += "\n";
+
+  md += plannerSummaryTable(s, rows, t);
+  md += successRateTable(s, t);
+  md += anytimeImprovement(s, rows);
+  md += "\n";
+  md += lacamStarPublishedMarkdown(map);
+  md += lacamAgainstPublished(s, rows);
   return md;
 }
 

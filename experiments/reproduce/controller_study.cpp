@@ -134,17 +134,8 @@ void writeStudyChart(const std::vector<Row>& rows, const std::filesystem::path& 
   scratch.publish("chart");
 }
 
-}  // namespace
-
-Report controllerStudy(const Options& options) {
-  const std::vector<double> speeds =
-      options.quick ? std::vector<double>{2.0, 8.0} : std::vector<double>{2.0, 4.0, 6.0, 8.0};
-  std::vector<Row> rows;
-  for (double v : speeds)
-    for (const StudyController& c : kControllers) rows.push_back(fly(c, v, options));
-
-  const std::filesystem::path dir(options.out_dir);
-  // controller-study.json's rows (README, Reproductions) and the CSV behind the figure.
+// controller-study.json's rows (README, Reproductions); writes the CSV behind the figure.
+std::vector<JsonObject> studyRows(const std::vector<Row>& rows, const std::filesystem::path& dir) {
   std::vector<JsonObject> json_rows;
   std::string csv = "controller,speed_mps,rmse_m,max_error_m,reached_goal,estimation_rmse_m\n";
   for (const Row& r : rows) {
@@ -164,26 +155,13 @@ Report controllerStudy(const Options& options) {
            JsonObject::number(r.metrics.estimation_rmse_m) + "\n";
   }
   writeFileAtomically(dir / "controller-study.csv", csv);
-  writeStudyChart(rows, dir / "controller-study");
+  return json_rows;
+}
 
+// The RMSE table (with indi_drag / geometric per speed) and the max-error table.
+std::string studyTables(const std::vector<double>& speeds, const std::vector<Row>& rows) {
   std::ostringstream md;
-  md << "# Controller study: tracking a figure-eight at increasing speed\n\n"
-     << "quad_1500g (PX4's Iris constants) flies a lemniscate of Gerono (16 x 8 m, "
-     << (options.quick ? 1 : 2)
-     << " laps from rest and back to rest, peak speed at the centre "
-        "crossings) with per-rotor drag (RotorS/PX4 form), a model error (the controller "
-        "believes mass x1.05, inertia x1.10, thrust coefficient x0.95), and motion-capture "
-        "sensing (1 mm, 0.5 deg, 100 Hz, 10 ms late, plus an ADIS16448-class IMU) fused by the "
-        "error-state EKF. MuJoCo at 1 kHz, control at 500 Hz, seed "
-     << options.seed
-     << ". RMSE and max error: true position against the reference, over the "
-        "whole flight.\n\n"
-     << "Sun et al. (T-RO 2022), real flights: an INDI inner loop plus a drag model cut the "
-        "tracking error of differential-flatness-based control by more than 78 %, the more the "
-        "faster the flight. They report no table for this vehicle or this track, so the "
-        "comparison is qualitative: the column \"indi_drag / geometric\" should fall well below "
-        "1 and fall with speed.\n\n"
-     << "| speed [m/s] |";
+  md << "| speed [m/s] |";
   for (const StudyController& c : kControllers) md << " " << c.label << " RMSE [m] |";
   md << " indi_drag / geometric |\n|---|";
   for (std::size_t i = 0; i <= std::size(kControllers); ++i) md << "---|";
@@ -212,6 +190,41 @@ Report controllerStudy(const Options& options) {
       md << " " << fixed(rows[k * per_speed + c].metrics.max_error_m, 4) << " |";
     md << "\n";
   }
+  return md.str();
+}
+
+}  // namespace
+
+Report controllerStudy(const Options& options) {
+  const std::vector<double> speeds =
+      options.quick ? std::vector<double>{2.0, 8.0} : std::vector<double>{2.0, 4.0, 6.0, 8.0};
+  std::vector<Row> rows;
+  for (double v : speeds)
+    for (const StudyController& c : kControllers) rows.push_back(fly(c, v, options));
+
+  const std::filesystem::path dir(options.out_dir);
+  const std::vector<JsonObject> json_rows = studyRows(rows, dir);
+  writeStudyChart(rows, dir / "controller-study");
+
+  std::ostringstream md;
+  md << "# Controller study: tracking a figure-eight at increasing speed\n\n"
+     << "quad_1500g (PX4's Iris constants) flies a lemniscate of Gerono (16 x 8 m, "
+     << (options.quick ? 1 : 2)
+     << " laps from rest and back to rest, peak speed at the centre "
+        "crossings) with per-rotor drag (RotorS/PX4 form), a model error (the controller "
+        "believes mass x1.05, inertia x1.10, thrust coefficient x0.95), and motion-capture "
+        "sensing (1 mm, 0.5 deg, 100 Hz, 10 ms late, plus an ADIS16448-class IMU) fused by the "
+        "error-state EKF. MuJoCo at 1 kHz, control at 500 Hz, seed "
+     << options.seed
+     << ". RMSE and max error: true position against the reference, over the "
+        "whole flight.\n\n"
+     << "Sun et al. (T-RO 2022), real flights: an INDI inner loop plus a drag model cut the "
+        "tracking error of differential-flatness-based control by more than 78 %, the more the "
+        "faster the flight. They report no table for this vehicle or this track, so the "
+        "comparison is qualitative: the column \"indi_drag / geometric\" should fall well below "
+        "1 and fall with speed.\n\n"
+     << studyTables(speeds, rows);
+  const std::size_t per_speed = std::size(kControllers);
   const double top_ratio = rows[(speeds.size() - 1) * per_speed + 3].metrics.rmse_m /
                            rows[(speeds.size() - 1) * per_speed].metrics.rmse_m;
   md << "\nAt " << fixed(speeds.back(), 1) << " m/s indi_drag tracks with "

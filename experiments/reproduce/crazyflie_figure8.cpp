@@ -20,7 +20,7 @@
 #include "core/json_writer.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
-#include "render/figures.h"
+#include "render/comparison_chart.h"
 #include "run/given_reference_flight.h"
 #include "sim/flight_metrics.h"
 #include "sim/flight_simulation.h"

@@ -31,55 +31,68 @@ Seed000Stats msacRuns(const Seed000Scene& scene, int m, int max_iterations, bool
   return runSeed000(msac, scene, runs, seed);
 }
 
-}  // namespace
+// What every table of this reproduction runs on: the scenes, their optima, the runs and seed.
+struct MsacSetting {
+  const Options& options;
+  int runs;
+  std::uint64_t seed;
+  const Seed000SceneSet& scenes;
+};
 
-Report seed000Msac(const Options& options) {
-  const int runs = seed000RunCount(options);
-  const std::uint64_t seed = options.seed;
-  const Seed000SceneSet scenes = seed000Scenes();
-  const Seed000Scene &free_scene = scenes.free_scene, &scene1 = scenes.scene1,
-                     &scene2 = scenes.scene2;
-  const double opt_free = scenes.opt_free, opt1 = scenes.opt1, opt2 = scenes.opt2;
-  std::ostringstream out;
-  std::vector<JsonObject> rows;
-  out << seed000Preamble("Seed 000: MSAC (Multi-Scout Ants Cooperation)", scenes, runs, seed,
-                         "unconditional diagonals, S_max = 1250. Our MSAC stops early when its "
-                         "path equals the obstacle-free octile distance (nothing can be "
-                         "shorter); the seed's always ran MAX iterations.");
+// Table 6.1: tabu table versions (time only; 100 searches in the seed).
+std::vector<Seed000Column> tabuTable(const MsacSetting& at, std::ostringstream& out,
+                                     std::vector<JsonObject>& rows) {
+  const int runs = at.runs;
+  const std::uint64_t seed = at.seed;
+  const Seed000Scene& scene1 = at.scenes.scene1;
+  std::vector<Seed000Column> cols;
+  const double seed_t[3] = {0.586, 0.130, 0.104};
+  for (int v = 1; v <= 3; ++v)
+    cols.push_back({"version " + std::to_string(v), seed_t[v - 1], kNone, kNone,
+                    msacRuns(scene1, 4, 3, true, v, at.options.quick ? runs : 10 * runs, seed)});
+  out << seed000Table("Table 6.1: tabu table version, scene 1 (MAX 3, m 4)", "tabu table", cols,
+                      at.scenes.opt1, rows);
+  out << "Seed: version 3 is 5.6x faster than version 1; ours: "
+      << seed000Number(cols[0].ours.mean_ms / cols[2].ours.mean_ms, 1) << "x.\n\n";
+  return cols;
+}
 
-  // Table 6.1: tabu table versions (time only; 100 searches in the seed).
-  std::vector<Seed000Column> tabu_cols, post_cols[2];
-  {
-    std::vector<Seed000Column>& cols = tabu_cols;
-    const double seed_t[3] = {0.586, 0.130, 0.104};
-    for (int v = 1; v <= 3; ++v)
-      cols.push_back({"version " + std::to_string(v), seed_t[v - 1], kNone, kNone,
-                      msacRuns(scene1, 4, 3, true, v, options.quick ? runs : 10 * runs, seed)});
-    out << seed000Table("Table 6.1: tabu table version, scene 1 (MAX 3, m 4)", "tabu table", cols,
-                        opt1, rows);
-    out << "Seed: version 3 is 5.6x faster than version 1; ours: "
-        << seed000Number(cols[0].ours.mean_ms / cols[2].ours.mean_ms, 1) << "x.\n\n";
-  }
-  // Tables 6.2 and 6.3: post-processing.
-  for (int scene_no : {1, 2}) {
-    const Seed000Scene& scene = scene_no == 1 ? scene1 : scene2;
-    const double seed_t[2] = {scene_no == 1 ? 0.1010 : 3.694, scene_no == 1 ? 0.0860 : 3.070};
-    const double seed_mean[2] = {scene_no == 1 ? 73.84 : 149.12, scene_no == 1 ? 73.84 : 1018.16};
-    const double seed_min[2] = {scene_no == 1 ? 73.84 : 140.17, scene_no == 1 ? 73.84 : 808.67};
-    std::vector<Seed000Column>& cols = post_cols[scene_no - 1];
-    for (int k = 0; k < 2; ++k)
-      cols.push_back({k == 0 ? "yes" : "no", seed_t[k], seed_mean[k], seed_min[k],
-                      msacRuns(scene, 4, 3, k == 0, 3, runs, seed)});
-    out << seed000Table(std::string("Table 6.") + (scene_no == 1 ? "2" : "3") +
-                            ": path post-processing, scene " + std::to_string(scene_no) +
-                            " (MAX 3, m 4)",
-                        "post-processing", cols, scene_no == 1 ? opt1 : opt2, rows);
-    if (scene_no == 2)
-      out << "Seed: processing shortens the average " << seed000Number(1018.16 / 149.12, 1)
-          << "x; ours: " << seed000Number(cols[1].ours.mean_length / cols[0].ours.mean_length, 1)
-          << "x.\n\n";
-  }
-  // Tables 6.4-6.7: number of ants and MAX.
+// Tables 6.2 and 6.3: post-processing on scene 1 or 2.
+std::vector<Seed000Column> postProcessingTable(const MsacSetting& at, int scene_no,
+                                               std::ostringstream& out,
+                                               std::vector<JsonObject>& rows) {
+  const int runs = at.runs;
+  const std::uint64_t seed = at.seed;
+  const Seed000Scene &scene1 = at.scenes.scene1, &scene2 = at.scenes.scene2;
+  const double opt1 = at.scenes.opt1, opt2 = at.scenes.opt2;
+  std::vector<Seed000Column> cols;
+  const Seed000Scene& scene = scene_no == 1 ? scene1 : scene2;
+  const double seed_t[2] = {scene_no == 1 ? 0.1010 : 3.694, scene_no == 1 ? 0.0860 : 3.070};
+  const double seed_mean[2] = {scene_no == 1 ? 73.84 : 149.12, scene_no == 1 ? 73.84 : 1018.16};
+  const double seed_min[2] = {scene_no == 1 ? 73.84 : 140.17, scene_no == 1 ? 73.84 : 808.67};
+  for (int k = 0; k < 2; ++k)
+    cols.push_back({k == 0 ? "yes" : "no", seed_t[k], seed_mean[k], seed_min[k],
+                    msacRuns(scene, 4, 3, k == 0, 3, runs, seed)});
+  out << seed000Table(std::string("Table 6.") + (scene_no == 1 ? "2" : "3") +
+                          ": path post-processing, scene " + std::to_string(scene_no) +
+                          " (MAX 3, m 4)",
+                      "post-processing", cols, scene_no == 1 ? opt1 : opt2, rows);
+  if (scene_no == 2)
+    out << "Seed: processing shortens the average " << seed000Number(1018.16 / 149.12, 1)
+        << "x; ours: " << seed000Number(cols[1].ours.mean_length / cols[0].ours.mean_length, 1)
+        << "x.\n\n";
+  return cols;
+}
+
+// Tables 6.4-6.7: number of ants and MAX.
+std::vector<std::vector<Seed000Column>> antSweepTables(const MsacSetting& at,
+                                                       std::ostringstream& out,
+                                                       std::vector<JsonObject>& rows) {
+  const int runs = at.runs;
+  const std::uint64_t seed = at.seed;
+  const Seed000Scene &free_scene = at.scenes.free_scene, &scene1 = at.scenes.scene1,
+                     &scene2 = at.scenes.scene2;
+  const double opt_free = at.scenes.opt_free, opt1 = at.scenes.opt1, opt2 = at.scenes.opt2;
   struct Sweep {
     const char* title;
     const Seed000Scene* scene;
@@ -127,34 +140,63 @@ Report seed000Msac(const Options& options) {
     out << seed000Table(s.title, "m", cols, s.optimum, rows);
     sweep_cols.push_back(cols);
   }
-  // Claim 4 and the speed remark of §6.1.4: MAX 1, m 1.
-  {
-    const int many = options.quick ? 10 : 10 * runs;
-    const Seed000Stats s2 = msacRuns(scene2, 1, 1, true, 3, many, seed);
-    const Seed000Stats s1_on = msacRuns(scene1, 1, 1, true, 3, many, seed);
-    const Seed000Stats s1_off = msacRuns(scene1, 1, 1, false, 3, many, seed);
-    out << "### MAX 1, m 1 (§6.1.4)\n\n| figure | seed | ours |\n|---|---|---|\n"
-        << "| scene 2: runs without a path | about 30% | "
-        << seed000Number(100.0 * s2.failures / s2.runs, 0) << "% of " << s2.runs << " |\n"
-        << "| scene 1: avg. time with post-processing | 0.0176 s | "
-        << seed000Number(s1_on.mean_ms, 3) << " ms |\n"
-        << "| scene 1: avg. time without post-processing | 0.00839 s | "
-        << seed000Number(s1_off.mean_ms, 3) << " ms |\n"
-        << "| scene 1: avg. length with / without processing | - | "
-        << seed000Number(s1_on.mean_length, 2) << " / " << seed000Number(s1_off.mean_length, 2)
-        << " |\n\n";
-    MsacResults results{tabu_cols, post_cols[0], post_cols[1], sweep_cols, s2};
-    out << msacMaps(options, scenes, results) << agreementSection(msacFindings(results, scenes));
-    JsonObject row;
-    row.add("table", "MAX 1, m 1 (6.1.4)")
-        .add("scene2_failure_percent", 100.0 * s2.failures / s2.runs)
-        .add("seed_scene2_failure_percent", 30.0)
-        .add("scene1_time_ms_with_processing", s1_on.mean_ms)
-        .add("seed_scene1_time_s_with_processing", 0.0176)
-        .add("scene1_time_ms_without_processing", s1_off.mean_ms)
-        .add("seed_scene1_time_s_without_processing", 0.00839);
-    rows.push_back(row);
-  }
+  return sweep_cols;
+}
+
+// Claim 4 and the speed remark of §6.1.4: MAX 1, m 1. Returns scene 2's runs (for the findings).
+Seed000Stats maxOneSection(const MsacSetting& at, std::ostringstream& out,
+                           std::vector<JsonObject>& rows) {
+  const int runs = at.runs;
+  const std::uint64_t seed = at.seed;
+  const Options& options = at.options;
+  const Seed000Scene &scene1 = at.scenes.scene1, &scene2 = at.scenes.scene2;
+  const int many = options.quick ? 10 : 10 * runs;
+  const Seed000Stats s2 = msacRuns(scene2, 1, 1, true, 3, many, seed);
+  const Seed000Stats s1_on = msacRuns(scene1, 1, 1, true, 3, many, seed);
+  const Seed000Stats s1_off = msacRuns(scene1, 1, 1, false, 3, many, seed);
+  out << "### MAX 1, m 1 (§6.1.4)\n\n| figure | seed | ours |\n|---|---|---|\n"
+      << "| scene 2: runs without a path | about 30% | "
+      << seed000Number(100.0 * s2.failures / s2.runs, 0) << "% of " << s2.runs << " |\n"
+      << "| scene 1: avg. time with post-processing | 0.0176 s | "
+      << seed000Number(s1_on.mean_ms, 3) << " ms |\n"
+      << "| scene 1: avg. time without post-processing | 0.00839 s | "
+      << seed000Number(s1_off.mean_ms, 3) << " ms |\n"
+      << "| scene 1: avg. length with / without processing | - | "
+      << seed000Number(s1_on.mean_length, 2) << " / " << seed000Number(s1_off.mean_length, 2)
+      << " |\n\n";
+  JsonObject row;
+  row.add("table", "MAX 1, m 1 (6.1.4)")
+      .add("scene2_failure_percent", 100.0 * s2.failures / s2.runs)
+      .add("seed_scene2_failure_percent", 30.0)
+      .add("scene1_time_ms_with_processing", s1_on.mean_ms)
+      .add("seed_scene1_time_s_with_processing", 0.0176)
+      .add("scene1_time_ms_without_processing", s1_off.mean_ms)
+      .add("seed_scene1_time_s_without_processing", 0.00839);
+  rows.push_back(row);
+  return s2;
+}
+
+}  // namespace
+
+Report seed000Msac(const Options& options) {
+  const int runs = seed000RunCount(options);
+  const std::uint64_t seed = options.seed;
+  const Seed000SceneSet scenes = seed000Scenes();
+  std::ostringstream out;
+  std::vector<JsonObject> rows;
+  out << seed000Preamble("Seed 000: MSAC (Multi-Scout Ants Cooperation)", scenes, runs, seed,
+                         "unconditional diagonals, S_max = 1250. Our MSAC stops early when its "
+                         "path equals the obstacle-free octile distance (nothing can be "
+                         "shorter); the seed's always ran MAX iterations.");
+  const MsacSetting at{options, runs, seed, scenes};
+  const std::vector<Seed000Column> tabu_cols = tabuTable(at, out, rows);
+  std::vector<Seed000Column> post_cols[2];
+  for (int scene_no : {1, 2})
+    post_cols[scene_no - 1] = postProcessingTable(at, scene_no, out, rows);
+  const std::vector<std::vector<Seed000Column>> sweep_cols = antSweepTables(at, out, rows);
+  const Seed000Stats s2 = maxOneSection(at, out, rows);
+  MsacResults results{tabu_cols, post_cols[0], post_cols[1], sweep_cols, s2};
+  out << msacMaps(options, scenes, results) << agreementSection(msacFindings(results, scenes));
   return {out.str(), rows};
 }
 

@@ -114,6 +114,151 @@ std::vector<Table> seedTables() {
   };
 }
 
+// Tables 6.8-6.16: every column of the seed's tables run `runs` times.
+std::vector<std::vector<Seed000Column>> sacodmTables(const Seed000SceneSet& scenes, int runs,
+                                                     std::uint64_t seed, std::ostringstream& out,
+                                                     std::vector<JsonObject>& rows) {
+  const Seed000Scene* scene_of[3] = {&scenes.free_scene, &scenes.scene1, &scenes.scene2};
+  const double optimum_of[3] = {scenes.opt_free, scenes.opt1, scenes.opt2};
+  std::vector<std::vector<Seed000Column>> results;
+  for (const Table& t : seedTables()) {
+    std::vector<Seed000Column> cols;
+    for (const Column& c : t.columns) {
+      Saco saco = makeSaco(c.setting);
+      cols.push_back({c.label, c.seed_time_s, c.seed_mean, c.seed_min,
+                      runSeed000(saco, *scene_of[t.scene], runs, seed)});
+    }
+    out << seed000Table(t.title, t.swept, cols, optimum_of[t.scene], rows);
+    results.push_back(cols);
+  }
+  return results;
+}
+
+// §6.3: MSAC (m 4, MAX 3, post-processing) against the best SACOdm setting of each scene; fills
+// msac_stats with MSAC's runs per scene.
+void msacVsSacodmSection(const Seed000SceneSet& scenes, int runs, std::uint64_t seed,
+                         const std::vector<std::vector<Seed000Column>>& results,
+                         Seed000Stats (&msac_stats)[3], std::ostringstream& out,
+                         std::vector<JsonObject>& rows) {
+  const Seed000Scene* scene_of[3] = {&scenes.free_scene, &scenes.scene1, &scenes.scene2};
+  MsacParams mp;
+  mp.s_max = 1250;
+  mp.conditional_diagonal = false;
+  Msac msac(mp);
+  // The seed's SACOdm of §6.3 per scene: Table 6.8 beta 1, Table 6.12 EAS 1, Table 6.16 beta 1.
+  const std::pair<int, int> best_sacodm[3] = {{0, 1}, {4, 1}, {8, 1}};
+  const double seed_msac[3][2] = {{65.05, 65.05}, {73.84, 73.84}, {146.95, 136.75}};
+  // The seed's MSAC times for m 4, MAX 3: Tables 6.7, 6.6 and 6.4.
+  const double seed_msac_time_s[3] = {0.145, 0.100, 3.682};
+  out << "### Section 6.3: MSAC against SACOdm\n\nMSAC m 4, MAX 3, S_max 1250 with "
+         "post-processing; SACOdm as the seed's best setting per scene (Table 6.8 beta 1, "
+         "Table 6.12 EAS 1, Table 6.16 beta 1). Lengths: average / minimum.\n\n"
+         "| scene | seed MSAC | our MSAC | seed SACOdm | our SACOdm | shorter minimum: seed | "
+         "ours | SACOdm / MSAC time: seed | ours |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (int k = 0; k < 3; ++k) {
+    const Seed000Stats m = runSeed000(msac, *scene_of[k], runs, seed);
+    msac_stats[k] = m;
+    const Seed000Column& sc = results[best_sacodm[k].first][best_sacodm[k].second];
+    const bool seed_sacodm_shorter = sc.seed_min < seed_msac[k][1];
+    const bool our_sacodm_shorter = sc.ours.min_length < m.min_length;
+    out << "| " << scene_of[k]->name << " | " << seed000Number(seed_msac[k][0], 2) << " / "
+        << seed000Number(seed_msac[k][1], 2) << " | " << seed000Number(m.mean_length, 2) << " / "
+        << seed000Number(m.min_length, 2) << " | " << seed000Number(sc.seed_mean, 2) << " / "
+        << seed000Number(sc.seed_min, 2) << " | " << seed000Number(sc.ours.mean_length, 2) << " / "
+        << seed000Number(sc.ours.min_length, 2) << " | "
+        << (seed_sacodm_shorter ? "SACOdm" : "MSAC") << " | "
+        << (our_sacodm_shorter ? "SACOdm" : "MSAC") << " | "
+        << seed000Number(sc.seed_time_s / seed_msac_time_s[k], 0) << "x | "
+        << seed000Number(sc.ours.mean_ms / m.mean_ms, 1) << "x |\n";
+    JsonObject row;
+    row.add("table", "6.3 MSAC vs SACOdm")
+        .add("scene", scene_of[k]->name)
+        .add("msac_mean_length", m.mean_length)
+        .add("msac_min_length", m.min_length)
+        .add("msac_mean_time_ms", m.mean_ms)
+        .add("sacodm_mean_length", sc.ours.mean_length)
+        .add("sacodm_min_length", sc.ours.min_length)
+        .add("seed_msac_mean_length", seed_msac[k][0])
+        .add("seed_msac_min_length", seed_msac[k][1])
+        .add("seed_sacodm_mean_length", sc.seed_mean)
+        .add("seed_sacodm_min_length", sc.seed_min);
+    rows.push_back(row);
+  }
+}
+
+// Fig. 6.5: the first walk of SACOdm with beta = gamma = 0 (that is, SACO), raw and processed.
+// A walk is capped at max_walk_factor x the cell count (2500 here); the default 20 (50 000
+// steps) would stop walks shorter than the seed's 58 895-step one, so the cap is lifted.
+constexpr int kLiftedWalkFactor = 2000;
+
+// The first walks of `runs` single-ant, single-iteration SACO runs on one scene.
+Fig65 firstWalks(const Seed000Scene* scene, int runs, std::uint64_t seed) {
+  double raw_sum = 0, raw_max = 0, loop_free = 0, smoothed = 0;
+  int n = 0;
+  for (int i = 0; i < runs; ++i) {
+    Setting s;
+    s.beta = 0;
+    s.iterations = 1;
+    s.ants = 1;
+    s.max_walk_factor = kLiftedWalkFactor;
+    Saco saco = makeSaco(s);
+    GridQuery q;
+    q.grid = &scene->grid;
+    q.start = scene->start;
+    q.goal = scene->goal;
+    q.seed = seed + i;
+    const GridPlanResult r = saco.solveGrid(q);
+    if (!r.success) continue;
+    ++n;
+    raw_sum += r.counters.at("first_walk_raw_length");
+    raw_max = std::max(raw_max, r.counters.at("first_walk_raw_length"));
+    loop_free += r.counters.at("first_walk_loop_free_length");
+    smoothed += r.counters.at("first_walk_smoothed_length");
+  }
+  return {n,
+          runs,
+          n ? raw_sum / n : kNone,
+          raw_max,
+          n ? loop_free / n : kNone,
+          n ? smoothed / n : kNone};
+}
+
+void firstWalkSection(const Seed000SceneSet& scenes, int runs, std::uint64_t seed,
+                      Fig65 (&fig65)[2], std::ostringstream& out, std::vector<JsonObject>& rows) {
+  out << "### Fig. 6.5: cycle removal and light smoothing of the first walk (beta 0, gamma 0)\n\n"
+      << "Seed (one extreme walk, scene not stated): raw 58,895.5, without cycles 257.6, "
+         "smoothed 153.5. Our walks are capped at "
+      << kLiftedWalkFactor
+      << " x the cell count here (5 million steps; the planner's default cap, 20 x, would end "
+         "walks shorter than the seed's), so that a walk as long as the seed's can finish.\n\n"
+         "| scene | walks that reached the goal | raw: mean / max | without cycles: mean | "
+         "smoothed: mean |\n|---|---|---|---|---|\n";
+  int fig65_index = 0;
+  for (const Seed000Scene* scene : {&scenes.free_scene, &scenes.scene2}) {
+    const Fig65 walks = firstWalks(scene, runs, seed);
+    fig65[fig65_index++] = walks;
+    const int n = walks.walks;
+    const double raw_max = walks.raw_max;
+    out << "| " << scene->name << " | " << n << " of " << runs << " | "
+        << seed000Number(walks.raw_mean, 1) << " / " << seed000Number(raw_max, 1) << " | "
+        << seed000Number(walks.loop_free_mean, 1) << " | " << seed000Number(walks.smoothed_mean, 1)
+        << " |\n";
+    JsonObject row;
+    row.add("table", "Fig. 6.5")
+        .add("scene", scene->name)
+        .add("walks", n)
+        .add("raw_mean", walks.raw_mean)
+        .add("raw_max", raw_max)
+        .add("loop_free_mean", walks.loop_free_mean)
+        .add("smoothed_mean", walks.smoothed_mean)
+        .add("seed_raw", 58895.5)
+        .add("seed_loop_free", 257.6)
+        .add("seed_smoothed", 153.5);
+    rows.push_back(row);
+  }
+  out << "\n";
+}
+
 }  // namespace
 
 Report seed000Sacodm(const Options& options) {
@@ -127,130 +272,12 @@ Report seed000Sacodm(const Options& options) {
                          "its cycles removed and is lightly smoothed as soon as it is built "
                          "(§4.5.2). Where the seed's table does not name the pheromone update, "
                          "Ant System.");
-  const Seed000Scene* scene_of[3] = {&scenes.free_scene, &scenes.scene1, &scenes.scene2};
-  const double optimum_of[3] = {scenes.opt_free, scenes.opt1, scenes.opt2};
-  const std::vector<Table> tables = seedTables();
-  std::vector<std::vector<Seed000Column>> results;
-  for (const Table& t : tables) {
-    std::vector<Seed000Column> cols;
-    for (const Column& c : t.columns) {
-      Saco saco = makeSaco(c.setting);
-      cols.push_back({c.label, c.seed_time_s, c.seed_mean, c.seed_min,
-                      runSeed000(saco, *scene_of[t.scene], runs, seed)});
-    }
-    out << seed000Table(t.title, t.swept, cols, optimum_of[t.scene], rows);
-    results.push_back(cols);
-  }
-
-  // §6.3: MSAC (m 4, MAX 3, post-processing) against the best SACOdm setting of each scene.
+  const std::vector<std::vector<Seed000Column>> results =
+      sacodmTables(scenes, runs, seed, out, rows);
   Seed000Stats msac_stats[3];
-  {
-    MsacParams mp;
-    mp.s_max = 1250;
-    mp.conditional_diagonal = false;
-    Msac msac(mp);
-    // The seed's SACOdm of §6.3 per scene: Table 6.8 beta 1, Table 6.12 EAS 1, Table 6.16 beta 1.
-    const std::pair<int, int> best_sacodm[3] = {{0, 1}, {4, 1}, {8, 1}};
-    const double seed_msac[3][2] = {{65.05, 65.05}, {73.84, 73.84}, {146.95, 136.75}};
-    // The seed's MSAC times for m 4, MAX 3: Tables 6.7, 6.6 and 6.4.
-    const double seed_msac_time_s[3] = {0.145, 0.100, 3.682};
-    out << "### Section 6.3: MSAC against SACOdm\n\nMSAC m 4, MAX 3, S_max 1250 with "
-           "post-processing; SACOdm as the seed's best setting per scene (Table 6.8 beta 1, "
-           "Table 6.12 EAS 1, Table 6.16 beta 1). Lengths: average / minimum.\n\n"
-           "| scene | seed MSAC | our MSAC | seed SACOdm | our SACOdm | shorter minimum: seed | "
-           "ours | SACOdm / MSAC time: seed | ours |\n|---|---|---|---|---|---|---|---|---|\n";
-    for (int k = 0; k < 3; ++k) {
-      const Seed000Stats m = runSeed000(msac, *scene_of[k], runs, seed);
-      msac_stats[k] = m;
-      const Seed000Column& sc = results[best_sacodm[k].first][best_sacodm[k].second];
-      const bool seed_sacodm_shorter = sc.seed_min < seed_msac[k][1];
-      const bool our_sacodm_shorter = sc.ours.min_length < m.min_length;
-      out << "| " << scene_of[k]->name << " | " << seed000Number(seed_msac[k][0], 2) << " / "
-          << seed000Number(seed_msac[k][1], 2) << " | " << seed000Number(m.mean_length, 2) << " / "
-          << seed000Number(m.min_length, 2) << " | " << seed000Number(sc.seed_mean, 2) << " / "
-          << seed000Number(sc.seed_min, 2) << " | " << seed000Number(sc.ours.mean_length, 2)
-          << " / " << seed000Number(sc.ours.min_length, 2) << " | "
-          << (seed_sacodm_shorter ? "SACOdm" : "MSAC") << " | "
-          << (our_sacodm_shorter ? "SACOdm" : "MSAC") << " | "
-          << seed000Number(sc.seed_time_s / seed_msac_time_s[k], 0) << "x | "
-          << seed000Number(sc.ours.mean_ms / m.mean_ms, 1) << "x |\n";
-      JsonObject row;
-      row.add("table", "6.3 MSAC vs SACOdm")
-          .add("scene", scene_of[k]->name)
-          .add("msac_mean_length", m.mean_length)
-          .add("msac_min_length", m.min_length)
-          .add("msac_mean_time_ms", m.mean_ms)
-          .add("sacodm_mean_length", sc.ours.mean_length)
-          .add("sacodm_min_length", sc.ours.min_length)
-          .add("seed_msac_mean_length", seed_msac[k][0])
-          .add("seed_msac_min_length", seed_msac[k][1])
-          .add("seed_sacodm_mean_length", sc.seed_mean)
-          .add("seed_sacodm_min_length", sc.seed_min);
-      rows.push_back(row);
-    }
-  }
-
-  // Fig. 6.5: the first walk of SACOdm with beta = gamma = 0 (that is, SACO), raw and processed.
-  // A walk is capped at max_walk_factor x the cell count (2500 here); the default 20 (50 000
-  // steps) would stop walks shorter than the seed's 58 895-step one, so the cap is lifted.
-  constexpr int kLiftedWalkFactor = 2000;
-  out << "### Fig. 6.5: cycle removal and light smoothing of the first walk (beta 0, gamma 0)\n\n"
-      << "Seed (one extreme walk, scene not stated): raw 58,895.5, without cycles 257.6, "
-         "smoothed 153.5. Our walks are capped at "
-      << kLiftedWalkFactor
-      << " x the cell count here (5 million steps; the planner's default cap, 20 x, would end "
-         "walks shorter than the seed's), so that a walk as long as the seed's can finish.\n\n"
-         "| scene | walks that reached the goal | raw: mean / max | without cycles: mean | "
-         "smoothed: mean |\n|---|---|---|---|---|\n";
+  msacVsSacodmSection(scenes, runs, seed, results, msac_stats, out, rows);
   Fig65 fig65[2];
-  int fig65_index = 0;
-  for (const Seed000Scene* scene : {&scenes.free_scene, &scenes.scene2}) {
-    double raw_sum = 0, raw_max = 0, loop_free = 0, smoothed = 0;
-    int n = 0;
-    for (int i = 0; i < runs; ++i) {
-      Setting s;
-      s.beta = 0;
-      s.iterations = 1;
-      s.ants = 1;
-      s.max_walk_factor = kLiftedWalkFactor;
-      Saco saco = makeSaco(s);
-      GridQuery q;
-      q.grid = &scene->grid;
-      q.start = scene->start;
-      q.goal = scene->goal;
-      q.seed = seed + i;
-      const GridPlanResult r = saco.solveGrid(q);
-      if (!r.success) continue;
-      ++n;
-      raw_sum += r.counters.at("first_walk_raw_length");
-      raw_max = std::max(raw_max, r.counters.at("first_walk_raw_length"));
-      loop_free += r.counters.at("first_walk_loop_free_length");
-      smoothed += r.counters.at("first_walk_smoothed_length");
-    }
-    fig65[fig65_index++] = {n,
-                            runs,
-                            n ? raw_sum / n : kNone,
-                            raw_max,
-                            n ? loop_free / n : kNone,
-                            n ? smoothed / n : kNone};
-    out << "| " << scene->name << " | " << n << " of " << runs << " | "
-        << seed000Number(n ? raw_sum / n : kNone, 1) << " / " << seed000Number(raw_max, 1) << " | "
-        << seed000Number(n ? loop_free / n : kNone, 1) << " | "
-        << seed000Number(n ? smoothed / n : kNone, 1) << " |\n";
-    JsonObject row;
-    row.add("table", "Fig. 6.5")
-        .add("scene", scene->name)
-        .add("walks", n)
-        .add("raw_mean", n ? raw_sum / n : kNone)
-        .add("raw_max", raw_max)
-        .add("loop_free_mean", n ? loop_free / n : kNone)
-        .add("smoothed_mean", n ? smoothed / n : kNone)
-        .add("seed_raw", 58895.5)
-        .add("seed_loop_free", 257.6)
-        .add("seed_smoothed", 153.5);
-    rows.push_back(row);
-  }
-  out << "\n";
+  firstWalkSection(scenes, runs, seed, fig65, out, rows);
   const SacodmResults all{results, msac_stats, fig65, scenes};
   out << sacodmMaps(options, all) << agreementSection(sacodmFindings(all));
   return {out.str(), rows};

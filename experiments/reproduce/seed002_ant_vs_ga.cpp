@@ -76,15 +76,21 @@ GridPlanResult solve(const Method& m, const Seed002Workspace& w, const GridQuery
   return GeneticAlgorithm(p).solveGrid(q);
 }
 
-}  // namespace
+// What the whole study adds up to, for the findings: per workspace the optimum of each query,
+// the count of queries the ants win and of workspaces where the GA is slower, and the gap to the
+// optimum summed over queries.
+struct AntVsGaTally {
+  int ant_wins[2] = {0, 0};   // queries where the ant's mean beats the GA's: [thesis, ours]
+  int ga_slower[2] = {0, 0};  // workspaces where the GA takes longer than the ants
+  double gap_sum[kMethodCount] = {0, 0, 0, 0};  // sum over queries of mean / optimum - 1
+  std::vector<double> optima[3];
+  std::vector<std::string> map_files;
+};
 
-Report seed002AntVsGa(const Options& options) {
-  const int runs = options.runs > 0 ? options.runs : (options.quick ? 1 : 10);
-  // --quick also cuts the iterations and generations to a fifth (the seed's ants, walking
-  // thousands of cells each, take seconds per query).
-  const int effort_divisor = options.quick ? 5 : 1;
-  std::ostringstream md, csv;
-  std::vector<JsonObject> rows;
+// The report's opening: how the workspaces were rebuilt, what each column runs, and the length
+// table's header.
+std::string antVsGaIntroduction(const Options& options, int runs) {
+  std::ostringstream md;
   md << "# Seed 002, part A: grid ant algorithm vs genetic algorithm\n\n"
      << "**The workspaces are rebuilt** (the seed's figures are missing): 100 x 100 cells of "
         "5 cm, rectangular obstacles (4 / 8 / 14), the seed's start and target points (cm; cell "
@@ -122,106 +128,106 @@ Report seed002AntVsGa(const Options& options) {
      << "); lengths in cm, mean (best) over runs.\n\n"
      << "| workspace | start | target | seed ant | seed GA | A* optimum | ant, seed's heuristic | "
         "GA, plain | ant, ours | GA, ours |\n|---|---|---|---|---|---|---|---|---|---|\n";
-  csv << "workspace,start,target,method,runs,successes,mean_length_cm,best_length_cm,"
-         "median_time_ms,optimal_cm,seed_ant_cm,seed_ga_cm\n";
-  std::ostringstream times;
-  times << "\n| workspace | ants / iterations | GA population / generations | seed ant [s] | "
-           "seed GA [s] | seed GA/ant | ant, seed's heuristic [ms] | GA, plain [ms] | ant, ours "
-           "[ms] | GA, ours [ms] | plain GA/ant | our GA/ant |\n"
-           "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  int ant_wins[2] = {0, 0};   // queries where the ant's mean beats the GA's: [thesis, ours]
-  int ga_slower[2] = {0, 0};  // workspaces where the GA takes longer than the ants
-  double gap_sum[kMethodCount] = {0, 0, 0, 0};  // sum over queries of mean / optimum - 1
-  std::vector<double> optima[3];
-  std::vector<std::string> map_files;
-  const auto ws = seed002Workspaces();
-  for (std::size_t wi = 0; wi < ws.size(); ++wi) {
-    const Seed002Workspace& w = ws[wi];
-    const OccupancyGrid grid = seed002Grid(w);
-    std::vector<double> query_times[kMethodCount];
-    for (int qi = 0; qi < 3; ++qi) {
-      const Seed002Query& sq = seed002Queries()[qi];
-      const Cell s = sq.start(), t = sq.target();
-      const GridPlanResult opt = planAStar(grid, s, t);
-      const double optimum = opt.success ? opt.length * kSeed002CellCm : NAN;
-      optima[wi].push_back(optimum);
-      Runs r[kMethodCount];
-      for (int run = 0; run < runs; ++run) {
-        GridQuery q;
-        q.grid = &grid;
-        q.start = s;
-        q.goal = t;
-        q.seed = options.seed + run;
-        q.time_limit_s = 60.0;
-        for (int k = 0; k < kMethodCount; ++k) {
-          const GridPlanResult res = solve(kMethods[k], w, q, effort_divisor);
-          ++r[k].runs;
-          r[k].times_ms.push_back(res.time_ms);
-          if (!res.success) continue;
-          ++r[k].ok;
-          if (r[k].lengths_cm.empty() || res.length * kSeed002CellCm < r[k].best())
-            r[k].best_path = res.cells;
-          r[k].lengths_cm.push_back(res.length * kSeed002CellCm);
-        }
-      }
-      const std::string sp = point(sq.sx, sq.sy), tp = point(sq.tx, sq.ty);
-      md << "| " << w.name << " | " << sp << " | " << tp << " | "
-         << fmt("%.2f", kSeed002Length[wi][qi][0]) << " | "
-         << fmt("%.2f", kSeed002Length[wi][qi][1]) << " | " << fmt("%.1f", optimum);
-      JsonObject row;
-      row.add("workspace", static_cast<int>(wi) + 1)
-          .add("start_cm", sp)
-          .add("target_cm", tp)
-          .add("optimal_m", optimum / 100.0)
-          .add("seed_ant_m", kSeed002Length[wi][qi][0] / 100.0)
-          .add("seed_ga_m", kSeed002Length[wi][qi][1] / 100.0)
-          .add("runs", runs);
-      for (int k = 0; k < kMethodCount; ++k) {
-        const Spread len = spreadOf(r[k].lengths_cm), time = spreadOf(r[k].times_ms);
-        md << " | " << fmt("%.1f", len.mean) << " (" << fmt("%.1f", r[k].best()) << ")";
-        const std::string key = kMethods[k].key;
-        row.add(key + "_mean_m", len.mean / 100.0)
-            .add(key + "_best_m", r[k].best() / 100.0)
-            .add(key + "_successes", r[k].ok)
-            .add(key + "_time_ms_median", time.median);
-        query_times[k].push_back(time.median);
-        gap_sum[k] += len.mean / optimum - 1.0;
-        csv << "\"" << w.name << "\",\"" << sp << "\",\"" << tp << "\"," << key << "," << r[k].runs
-            << "," << r[k].ok << "," << len.mean << "," << r[k].best() << "," << time.median << ","
-            << optimum << "," << kSeed002Length[wi][qi][0] << "," << kSeed002Length[wi][qi][1]
-            << "\n";
-      }
-      md << " |\n";
-      rows.push_back(row);
-      if (qi == 0) {  // the figure of this workspace shows its first query
-        ReproductionMap fig =
-            gridMap(std::string(w.name) + ", query " + sp + " -> " + tp, grid, s, t);
-        fig.unit = "cells of 5 cm";
-        fig.paths.push_back({"A* optimum", cellCentres(opt.cells)});
-        for (int k = 0; k < kMethodCount; ++k)
-          fig.paths.push_back(
-              {std::string(kMethods[k].label) + " (best)", cellCentres(r[k].best_path)});
-        map_files.push_back(writeReproductionMap(options.out_dir, "seed002-ant-vs-ga",
-                                                 static_cast<int>(wi) + 1, fig));
-      }
-      for (int v = 0; v < 2; ++v)
-        if (spreadOf(r[2 * v].lengths_cm).mean < spreadOf(r[2 * v + 1].lengths_cm).mean)
-          ++ant_wins[v];
+  return md.str();
+}
+
+// Every method `runs` times on one query of one workspace, run i with seed options.seed + i.
+void runQuery(const Seed002Workspace& w, const OccupancyGrid& grid, Cell s, Cell t,
+              const Options& options, int runs, int effort_divisor, Runs (&r)[kMethodCount]) {
+  for (int run = 0; run < runs; ++run) {
+    GridQuery q;
+    q.grid = &grid;
+    q.start = s;
+    q.goal = t;
+    q.seed = options.seed + run;
+    q.time_limit_s = 60.0;
+    for (int k = 0; k < kMethodCount; ++k) {
+      const GridPlanResult res = solve(kMethods[k], w, q, effort_divisor);
+      ++r[k].runs;
+      r[k].times_ms.push_back(res.time_ms);
+      if (!res.success) continue;
+      ++r[k].ok;
+      if (r[k].lengths_cm.empty() || res.length * kSeed002CellCm < r[k].best())
+        r[k].best_path = res.cells;
+      r[k].lengths_cm.push_back(res.length * kSeed002CellCm);
     }
-    double t_mean[kMethodCount];
-    for (int k = 0; k < kMethodCount; ++k) t_mean[k] = spreadOf(query_times[k]).mean;
-    times << "| " << w.name << " | " << w.ants << " / " << w.ant_iterations << " | " << w.population
-          << " / " << w.generations << " | " << w.seed_time_ant_s << " | " << w.seed_time_ga_s
-          << " | " << fmt("%.1f", w.seed_time_ga_s / w.seed_time_ant_s);
-    for (int k = 0; k < kMethodCount; ++k) times << " | " << fmt("%.1f", t_mean[k]);
-    times << " | " << fmt("%.2f", t_mean[1] / t_mean[0]) << " | "
-          << fmt("%.2f", t_mean[3] / t_mean[2]) << " |\n";
-    ga_slower[0] += t_mean[1] > t_mean[0];
-    ga_slower[1] += t_mean[3] > t_mean[2];
   }
-  md << "\nPath-construction time (seed: MATLAB R2011, seconds, per workspace; ours: the mean "
-        "over the three queries of each query's median ms, this machine):\n"
-     << times.str();
+}
+
+// The figure of a workspace: its first query, the optimum and each method's best path.
+std::string queryMap(const Options& options, const Seed002Workspace& w, int workspace_number,
+                     const OccupancyGrid& grid, Cell s, Cell t, const std::string& title,
+                     const GridPlanResult& opt, const Runs (&r)[kMethodCount]) {
+  ReproductionMap fig = gridMap(std::string(w.name) + ", query " + title, grid, s, t);
+  fig.unit = "cells of 5 cm";
+  fig.paths.push_back({"A* optimum", cellCentres(opt.cells)});
+  for (int k = 0; k < kMethodCount; ++k)
+    fig.paths.push_back({std::string(kMethods[k].label) + " (best)", cellCentres(r[k].best_path)});
+  return writeReproductionMap(options.out_dir, "seed002-ant-vs-ga", workspace_number, fig);
+}
+
+// One workspace's queries: a length-table line, a JSON row and CSV lines per query; returns each
+// method's mean over the queries of their median time.
+std::vector<double> runWorkspace(const Options& options, int runs, int effort_divisor,
+                                 const Seed002Workspace& w, std::size_t wi, std::ostringstream& md,
+                                 std::ostringstream& csv, std::vector<JsonObject>& rows,
+                                 AntVsGaTally& tally) {
+  const OccupancyGrid grid = seed002Grid(w);
+  std::vector<double> query_times[kMethodCount];
+  for (int qi = 0; qi < 3; ++qi) {
+    const Seed002Query& sq = seed002Queries()[qi];
+    const Cell s = sq.start(), t = sq.target();
+    const GridPlanResult opt = planAStar(grid, s, t);
+    const double optimum = opt.success ? opt.length * kSeed002CellCm : NAN;
+    tally.optima[wi].push_back(optimum);
+    Runs r[kMethodCount];
+    runQuery(w, grid, s, t, options, runs, effort_divisor, r);
+    const std::string sp = point(sq.sx, sq.sy), tp = point(sq.tx, sq.ty);
+    md << "| " << w.name << " | " << sp << " | " << tp << " | "
+       << fmt("%.2f", kSeed002Length[wi][qi][0]) << " | " << fmt("%.2f", kSeed002Length[wi][qi][1])
+       << " | " << fmt("%.1f", optimum);
+    JsonObject row;
+    row.add("workspace", static_cast<int>(wi) + 1)
+        .add("start_cm", sp)
+        .add("target_cm", tp)
+        .add("optimal_m", optimum / 100.0)
+        .add("seed_ant_m", kSeed002Length[wi][qi][0] / 100.0)
+        .add("seed_ga_m", kSeed002Length[wi][qi][1] / 100.0)
+        .add("runs", runs);
+    for (int k = 0; k < kMethodCount; ++k) {
+      const Spread len = spreadOf(r[k].lengths_cm), time = spreadOf(r[k].times_ms);
+      md << " | " << fmt("%.1f", len.mean) << " (" << fmt("%.1f", r[k].best()) << ")";
+      const std::string key = kMethods[k].key;
+      row.add(key + "_mean_m", len.mean / 100.0)
+          .add(key + "_best_m", r[k].best() / 100.0)
+          .add(key + "_successes", r[k].ok)
+          .add(key + "_time_ms_median", time.median);
+      query_times[k].push_back(time.median);
+      tally.gap_sum[k] += len.mean / optimum - 1.0;
+      csv << "\"" << w.name << "\",\"" << sp << "\",\"" << tp << "\"," << key << "," << r[k].runs
+          << "," << r[k].ok << "," << len.mean << "," << r[k].best() << "," << time.median << ","
+          << optimum << "," << kSeed002Length[wi][qi][0] << "," << kSeed002Length[wi][qi][1]
+          << "\n";
+    }
+    md << " |\n";
+    rows.push_back(row);
+    if (qi == 0)  // the figure of this workspace shows its first query
+      tally.map_files.push_back(
+          queryMap(options, w, static_cast<int>(wi) + 1, grid, s, t, sp + " -> " + tp, opt, r));
+    for (int v = 0; v < 2; ++v)
+      if (spreadOf(r[2 * v].lengths_cm).mean < spreadOf(r[2 * v + 1].lengths_cm).mean)
+        ++tally.ant_wins[v];
+  }
+  std::vector<double> t_mean(kMethodCount);
+  for (int k = 0; k < kMethodCount; ++k) t_mean[k] = spreadOf(query_times[k]).mean;
+  return t_mean;
+}
+
+// The seed's claims against the tally.
+std::vector<Finding> antVsGaFindings(const AntVsGaTally& tally) {
+  const auto& optima = tally.optima;
+  const auto& ant_wins = tally.ant_wins;
+  const auto& ga_slower = tally.ga_slower;
   auto rise = [&](int q, int w) { return 100.0 * (optima[w][q] / optima[0][q] - 1.0); };
   auto seed_rise = [&](int q, int w) {
     return 100.0 * (kSeed002Length[w][q][0] / kSeed002Length[0][q][0] - 1.0);
@@ -229,13 +235,7 @@ Report seed002AntVsGa(const Options& options) {
   std::string gaps;
   for (int k = 0; k < kMethodCount; ++k)
     gaps += std::string(k ? ", " : "") + kMethods[k].label + " " +
-            fmt("%.1f", 100.0 * gap_sum[k] / 9.0) + " %";
-  md << "\n"
-     << mapFiguresMarkdown(
-            map_files, {"workspace 1: an equivalent rebuilt from the seed's lengths and obstacle "
-                        "count (its Figure 3-2 is missing); the first query's paths",
-                        "workspace 2: the same, with the walled pocket around (400,450)",
-                        "workspace 3: the same, with clutter off the optimal routes"});
+            fmt("%.1f", 100.0 * tally.gap_sum[k] / 9.0) + " %";
   std::vector<Finding> f;
   f.push_back(checkedFinding(
       "The workspaces get harder: the first query 610 -> 919 -> 914 cm (x1.51), the other two "
@@ -267,7 +267,52 @@ Report seed002AntVsGa(const Options& options) {
       "Local evaporation on every move (the slides' step 3)", Finding::Verdict::kDiffers,
       "on in the seed's-heuristic column with a factor of 0.9",
       "the slides give no factor, so ours (the global evaporation's 0.1) is a choice"));
-  md << "\n" << agreementSection(f);
+  return f;
+}
+
+}  // namespace
+
+Report seed002AntVsGa(const Options& options) {
+  const int runs = options.runs > 0 ? options.runs : (options.quick ? 1 : 10);
+  // --quick also cuts the iterations and generations to a fifth (the seed's ants, walking
+  // thousands of cells each, take seconds per query).
+  const int effort_divisor = options.quick ? 5 : 1;
+  std::ostringstream md, csv;
+  std::vector<JsonObject> rows;
+  md << antVsGaIntroduction(options, runs);
+  csv << "workspace,start,target,method,runs,successes,mean_length_cm,best_length_cm,"
+         "median_time_ms,optimal_cm,seed_ant_cm,seed_ga_cm\n";
+  std::ostringstream times;
+  times << "\n| workspace | ants / iterations | GA population / generations | seed ant [s] | "
+           "seed GA [s] | seed GA/ant | ant, seed's heuristic [ms] | GA, plain [ms] | ant, ours "
+           "[ms] | GA, ours [ms] | plain GA/ant | our GA/ant |\n"
+           "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  AntVsGaTally tally;
+  const auto ws = seed002Workspaces();
+  for (std::size_t wi = 0; wi < ws.size(); ++wi) {
+    const Seed002Workspace& w = ws[wi];
+    const std::vector<double> t_mean =
+        runWorkspace(options, runs, effort_divisor, w, wi, md, csv, rows, tally);
+    times << "| " << w.name << " | " << w.ants << " / " << w.ant_iterations << " | " << w.population
+          << " / " << w.generations << " | " << w.seed_time_ant_s << " | " << w.seed_time_ga_s
+          << " | " << fmt("%.1f", w.seed_time_ga_s / w.seed_time_ant_s);
+    for (int k = 0; k < kMethodCount; ++k) times << " | " << fmt("%.1f", t_mean[k]);
+    times << " | " << fmt("%.2f", t_mean[1] / t_mean[0]) << " | "
+          << fmt("%.2f", t_mean[3] / t_mean[2]) << " |\n";
+    tally.ga_slower[0] += t_mean[1] > t_mean[0];
+    tally.ga_slower[1] += t_mean[3] > t_mean[2];
+  }
+  md << "\nPath-construction time (seed: MATLAB R2011, seconds, per workspace; ours: the mean "
+        "over the three queries of each query's median ms, this machine):\n"
+     << times.str();
+  md << "\n"
+     << mapFiguresMarkdown(
+            tally.map_files,
+            {"workspace 1: an equivalent rebuilt from the seed's lengths and obstacle "
+             "count (its Figure 3-2 is missing); the first query's paths",
+             "workspace 2: the same, with the walled pocket around (400,450)",
+             "workspace 3: the same, with clutter off the optimal routes"});
+  md << "\n" << agreementSection(antVsGaFindings(tally));
   if (!options.out_dir.empty())
     writeFileAtomically(std::filesystem::path(options.out_dir) / "seed002-ant-vs-ga.csv",
                         csv.str());

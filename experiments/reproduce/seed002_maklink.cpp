@@ -20,102 +20,13 @@
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/reproduction_map.h"
 #include "experiments/reproduce/seed002_maklink_map.h"
+#include "experiments/reproduce/seed002_real_coded_ga.h"
 #include "planning/swarm/acs_maklink.h"
 #include "planning/swarm/maklink_graph.h"
 
 namespace cosim::reproduce {
 
 namespace {
-
-// "Converged": the best so far is within 0.1% of the run's final best (a continuous GA keeps
-// making tiny improvements; a strict "last improvement" would measure those instead).
-constexpr double kConverged = 1e-3;
-
-int convergedAt(const std::vector<double>& history) {
-  if (history.empty()) return 0;
-  for (std::size_t i = 0; i < history.size(); ++i)
-    if (history[i] <= history.back() * (1 + kConverged)) return static_cast<int>(i) + 1;
-  return static_cast<int>(history.size());
-}
-
-// The seed's comparison GA: real-coded offsets h in [0, 1] per crossed line, binary tournament,
-// arithmetic crossover (probability pc), uniform mutation per gene (pm), elitism.
-struct GaRun {
-  std::vector<double> offsets;  // the best individual's h per crossed line
-  double length = 0.0;
-  int converged_at = 0;  // first generation within kConverged of the final best
-  double time_ms = 0.0;
-  int generations = 0;
-};
-
-GaRun realCodedGa(const Seed002MaklinkMap& map, const std::vector<int>& lines, std::uint64_t seed,
-                  int generations) {
-  const MaklinkGraph& g = map.graph;
-  const StopToken clock(60.0);
-  const int d = static_cast<int>(lines.size());
-  const int population = 50;
-  const double pc = 0.6, pm = 0.05;
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  auto length = [&](const std::vector<double>& h) {
-    Eigen::Vector2d prev = map.start;
-    double total = 0.0;
-    for (int i = 0; i <= d; ++i) {
-      const Eigen::Vector2d p = i < d ? g.lines()[lines[i]].at(h[i]) : map.goal;
-      if (!g.segmentFree(prev, p)) return std::numeric_limits<double>::infinity();
-      total += (p - prev).norm();
-      prev = p;
-    }
-    return total;
-  };
-  std::vector<std::vector<double>> pop(population, std::vector<double>(d));
-  std::vector<double> fit(population);
-  for (auto& x : pop)
-    for (double& h : x) h = unit(rng);
-  for (int k = 0; k < population; ++k) fit[k] = length(pop[k]);
-  GaRun run;
-  double best = std::numeric_limits<double>::infinity();
-  std::vector<double> best_h;
-  std::vector<double> history;
-  std::uniform_int_distribution<int> pick(0, population - 1);
-  for (int gen = 1; gen <= generations; ++gen) {
-    const int elite = static_cast<int>(std::min_element(fit.begin(), fit.end()) - fit.begin());
-    if (fit[elite] < best) best = fit[elite], best_h = pop[elite];
-    if (gen > 1) history.push_back(best);  // best after generation gen - 1
-    std::vector<std::vector<double>> next = {pop[elite]};
-    auto tournament = [&]() -> const std::vector<double>& {
-      const int a = pick(rng), b = pick(rng);
-      return fit[a] <= fit[b] ? pop[a] : pop[b];
-    };
-    while (static_cast<int>(next.size()) < population) {
-      std::vector<double> a = tournament(), b = tournament();
-      if (unit(rng) < pc) {
-        const double l = unit(rng);
-        for (int i = 0; i < d; ++i) {
-          const double ai = a[i], bi = b[i];
-          a[i] = l * ai + (1 - l) * bi;
-          b[i] = l * bi + (1 - l) * ai;
-        }
-      }
-      for (auto* c : {&a, &b}) {
-        for (double& h : *c)
-          if (unit(rng) < pm) h = unit(rng);
-        if (static_cast<int>(next.size()) < population) next.push_back(*c);
-      }
-    }
-    pop.swap(next);
-    for (int k = 0; k < population; ++k) fit[k] = length(pop[k]);
-    run.generations = gen;
-  }
-  const int last = static_cast<int>(std::min_element(fit.begin(), fit.end()) - fit.begin());
-  if (fit[last] < best) best = fit[last], best_h = pop[last];
-  history.push_back(best);
-  run.offsets = best_h;
-  run.converged_at = convergedAt(history);
-  run.length = best;
-  run.time_ms = clock.elapsedMs();
-  return run;
-}
 
 std::string maklinkMap(const Options& options, const Seed002MaklinkMap& map,
                        const MaklinkRoute& route, const std::vector<Eigen::Vector2d>& acs_path,
@@ -145,33 +56,38 @@ std::string offsetsText(const std::vector<double>& h) {
   return s + "}";
 }
 
-}  // namespace
+// One algorithm's runs summed up: successes, sums of length, iterations to converge, iterations
+// run and time, and its best run's offsets and path.
+struct Summary {
+  double sum = 0, best = 1e300, conv = 0, iters = 0, time_ms = 0;
+  int ok = 0;
+  std::vector<double> best_offsets;
+  std::vector<Eigen::Vector2d> best_path;
+};
 
-Report seed002Maklink(const Options& options) {
-  const int runs = options.runs > 0 ? options.runs : (options.quick ? 3 : 100);
-  const int ga_generations = options.quick ? 200 : 1000;
-  const Seed002MaklinkMap map = seed002MaklinkMap();
-  const MaklinkGraph& graph = map.graph;
-  std::ostringstream md, csv;
-  csv << "run,algorithm,levels,length,iterations,converged_at,time_ms\n";
+double mean(double sum, int n) {
+  return n ? sum / n : 0.0;
+}
 
-  struct Summary {
-    double sum = 0, best = 1e300, conv = 0, iters = 0, time_ms = 0;
-    int ok = 0;
-    std::vector<double> best_offsets;
-    std::vector<Eigen::Vector2d> best_path;
-  };
-  Summary acs[2], ga;
-  AcsMaklinkResult first;
-  for (int r = 0; r < runs; ++r) {
+// Everything the report, the findings and the rows are made of.
+struct MaklinkStudy {
+  int runs = 0, ga_generations = 0;
+  MaklinkRoute route;                        // Dijkstra over the midpoints
+  Summary acs[2], ga;                        // ACS with 11 and 21 levels, the real-coded GA
+  double per_iter_acs = 0, per_iter_ga = 0;  // mean CPU seconds per iteration
+};
+
+// ACS at 11 and 21 levels, `runs` times each (run r with seed options.seed + r).
+void runAcs(const Options& options, const Seed002MaklinkMap& map, MaklinkStudy& study,
+            std::ostringstream& csv) {
+  for (int r = 0; r < study.runs; ++r) {
     for (int v = 0; v < 2; ++v) {
       AcsMaklinkParams p;
       p.levels = v == 0 ? 11 : 21;
-      const AcsMaklinkResult res =
-          optimiseMaklinkRoute(graph, map.start, map.goal, p, options.seed + r, StopToken(60.0));
-      if (r == 0 && v == 0) first = res;
+      const AcsMaklinkResult res = optimiseMaklinkRoute(map.graph, map.start, map.goal, p,
+                                                        options.seed + r, StopToken(60.0));
       if (!res.success) continue;
-      Summary& s = acs[v];
+      Summary& s = study.acs[v];
       ++s.ok;
       s.sum += res.length;
       s.conv += convergedAt(res.history);
@@ -183,9 +99,15 @@ Report seed002Maklink(const Options& options) {
           << convergedAt(res.history) << "," << res.time_ms << "\n";
     }
   }
-  const MaklinkRoute route = graph.shortestRoute(map.start, map.goal);
-  for (int r = 0; r < runs && route.found; ++r) {
-    const GaRun g = realCodedGa(map, route.lines, options.seed + r, ga_generations);
+}
+
+// The real-coded GA on Dijkstra's crossed lines, `runs` times.
+void runGa(const Options& options, const Seed002MaklinkMap& map, MaklinkStudy& study,
+           std::ostringstream& csv) {
+  const MaklinkRoute& route = study.route;
+  Summary& ga = study.ga;
+  for (int r = 0; r < study.runs && route.found; ++r) {
+    const GaRun g = realCodedGa(map, route.lines, options.seed + r, study.ga_generations);
     ++ga.ok;
     ga.sum += g.length;
     if (g.length < ga.best) ga.best = g.length, ga.best_offsets = g.offsets;
@@ -195,10 +117,17 @@ Report seed002Maklink(const Options& options) {
     csv << r << ",ga,continuous," << g.length << "," << g.generations << "," << g.converged_at
         << "," << g.time_ms << "\n";
   }
-  auto mean = [](double sum, int n) { return n ? sum / n : 0.0; };
-  const double per_iter_acs = acs[0].time_ms / std::max(1.0, acs[0].iters) / 1000.0;
-  const double per_iter_ga = ga.time_ms / std::max(1.0, ga.iters) / 1000.0;
+}
 
+// The report's opening and its table of the seed's numbers beside ours.
+std::string maklinkTable(const Options& options, const MaklinkGraph& graph,
+                         const MaklinkStudy& study) {
+  const int runs = study.runs, ga_generations = study.ga_generations;
+  const MaklinkRoute& route = study.route;
+  const Summary* acs = study.acs;
+  const Summary& ga = study.ga;
+  const double per_iter_acs = study.per_iter_acs, per_iter_ga = study.per_iter_ga;
+  std::ostringstream md;
   md << "# Seed 002, part B: ACS on a MAKLINK graph\n\n"
      << "**The map is rebuilt to the structure the seed states** (it gives no geometry; the map "
         "is Tan et al.'s, whose coordinates are not in the text): 333.5 m x 333.5 m, seven "
@@ -247,17 +176,16 @@ Report seed002Maklink(const Options& options) {
         "offsets h* cannot match the seed's digit by digit: they belong to its map's lines. "
         "Times: the seed's platform is not named; ours are C++ on this machine, so compare the "
         "ratios (ACS vs GA per iteration and to converge), not the seconds.\n";
+  return md.str();
+}
+
+// The seed's claims against the study.
+std::vector<Finding> maklinkFindings(const MaklinkGraph& graph, const MaklinkStudy& study) {
+  const MaklinkRoute& route = study.route;
+  const Summary* acs = study.acs;
+  const Summary& ga = study.ga;
+  const double per_iter_acs = study.per_iter_acs, per_iter_ga = study.per_iter_ga;
   const double acs_conv = mean(acs[0].conv, acs[0].ok), ga_conv = mean(ga.conv, ga.ok);
-  md << "\n**Two choices of our ACS the seed leaves open.** (1) In the first tour there is no "
-        "previous best offset to be near, so every offset of a line is equally visible (eta = 1); "
-        "the first tour is therefore not just Dijkstra's midpoints. (2) The global update "
-        "reinforces the best path found so far (Dorigo and Gambardella's ACS); the seed's words "
-        "\"the best in this tour\" could also mean the iteration's best.\n\n";
-  std::vector<Eigen::Vector2d> ga_path = {map.start};
-  for (std::size_t i = 0; i < ga.best_offsets.size(); ++i)
-    ga_path.push_back(graph.lines()[route.lines[i]].at(ga.best_offsets[i]));
-  ga_path.push_back(map.goal);
-  md << maklinkMap(options, map, route, acs[0].best_path, ga_path);
   std::vector<Finding> findings;
   findings.push_back(checkedFinding(
       "The MAKLINK graph has l = 26 free lines and Dijkstra's path crosses d = 9",
@@ -300,7 +228,16 @@ Report seed002Maklink(const Options& options) {
       "ours is " + fmt("%+.2f", 100.0 * (ga.best / acs[0].best - 1.0)) +
           " % against ACS's (negative: shorter; its offsets are continuous, ACS's on a 0.1 grid); "
           "nothing to compare"));
-  md << "\n" << agreementSection(findings);
+  return findings;
+}
+
+// NAME.json's rows: the graph, each ACS variant and the GA, each beside the seed's numbers.
+std::vector<JsonObject> maklinkRows(const MaklinkGraph& graph, const MaklinkStudy& study) {
+  const int runs = study.runs;
+  const MaklinkRoute& route = study.route;
+  const Summary* acs = study.acs;
+  const Summary& ga = study.ga;
+  const double per_iter_ga = study.per_iter_ga;
   std::vector<JsonObject> rows;
   {
     JsonObject j;
@@ -340,8 +277,39 @@ Report seed002Maklink(const Options& options) {
         .add("seed_time_per_iteration_s", 0.00067);
     rows.push_back(j);
   }
+  return rows;
+}
+
+}  // namespace
+
+Report seed002Maklink(const Options& options) {
+  MaklinkStudy study;
+  study.runs = options.runs > 0 ? options.runs : (options.quick ? 3 : 100);
+  study.ga_generations = options.quick ? 200 : 1000;
+  const Seed002MaklinkMap map = seed002MaklinkMap();
+  const MaklinkGraph& graph = map.graph;
+  std::ostringstream md, csv;
+  csv << "run,algorithm,levels,length,iterations,converged_at,time_ms\n";
+  runAcs(options, map, study, csv);
+  study.route = graph.shortestRoute(map.start, map.goal);
+  runGa(options, map, study, csv);
+  const Summary* acs = study.acs;
+  study.per_iter_acs = acs[0].time_ms / std::max(1.0, acs[0].iters) / 1000.0;
+  study.per_iter_ga = study.ga.time_ms / std::max(1.0, study.ga.iters) / 1000.0;
+  md << maklinkTable(options, graph, study);
+  md << "\n**Two choices of our ACS the seed leaves open.** (1) In the first tour there is no "
+        "previous best offset to be near, so every offset of a line is equally visible (eta = 1); "
+        "the first tour is therefore not just Dijkstra's midpoints. (2) The global update "
+        "reinforces the best path found so far (Dorigo and Gambardella's ACS); the seed's words "
+        "\"the best in this tour\" could also mean the iteration's best.\n\n";
+  std::vector<Eigen::Vector2d> ga_path = {map.start};
+  for (std::size_t i = 0; i < study.ga.best_offsets.size(); ++i)
+    ga_path.push_back(graph.lines()[study.route.lines[i]].at(study.ga.best_offsets[i]));
+  ga_path.push_back(map.goal);
+  md << maklinkMap(options, map, study.route, acs[0].best_path, ga_path);
+  md << "\n" << agreementSection(maklinkFindings(graph, study));
   writeFileAtomically(std::filesystem::path(options.out_dir) / "seed002-maklink.csv", csv.str());
-  return {md.str(), rows};
+  return {md.str(), maklinkRows(graph, study)};
 }
 
 }  // namespace cosim::reproduce

@@ -101,23 +101,25 @@ std::string endReason(const std::filesystem::path& metrics_json) {
   return metrics.value("end_reason", std::string("?"));
 }
 
-}  // namespace
-
-Report seed003Flight(const Options& options) {
-  const std::string scenario_file = std::string(COSIM_SCENARIOS_DIR) + "/seed003_map3.yaml";
+// The two planners' settings: the thesis's point-mass plan and ours.
+std::vector<PathSetting> flightPaths() {
   // RRT*FN: parameter set 4 with cap 400 (step 4 m, radius 6 m, 2000 nodes, mode 2: its Tab. 17,
   // the settings it recommends and flies) and the sampling tables' goal settings (no goal bias,
   // the goal reached from within one step; cosim reproduce seed003-sampling).
   const std::string fn_settings =
       "step: 4, rewire_radius: 6, max_nodes: 2000, max_tree_nodes: 400, mode: 2, goal_bias: 0, "
       "goal_tolerance: 4";
-  const std::vector<PathSetting> paths = {
+  return {
       {"theta_star", "planner={name: theta_star, resolution: 1.0, cell_blocking: centre}",
        "planner={name: theta_star, resolution: 0.5, margin: 0.3}"},
       {"rrt_star_fn", "planner={name: rrt_star_thesis, " + fn_settings + "}",
        "planner={name: rrt_star_fn, " + fn_settings + ", margin: 0.3}"},
   };
-  const std::vector<Pipeline> pipelines = {
+}
+
+// The four ways of flying each plan.
+std::vector<Pipeline> flightPipelines() {
+  return {
       {"thesis",
        "thesis: point-mass plan, raw waypoints (0.2 m), cascade",
        {"trajectory={mode: waypoints, switch_radius: 0.2}", "controller={name: cascade}"},
@@ -140,9 +142,11 @@ Report seed003Flight(const Options& options) {
         "disturbances={rotor_drag: true, wind: [1.5, 0.5, 0], gust: 0.5}"},
        false},
   };
+}
 
+// The report's opening: the map, the pipelines, where we differ, the table's header.
+std::string flightIntroduction(const Options& options) {
   std::ostringstream md;
-  std::vector<JsonObject> rows;
   md << "# Seed 003 revisited: flying the planned path on 3D map 3\n\n"
      << "Map 3 (50 x 50 x 5 m, start [3,2,2], goal [47,47,4]) as reconstructed in "
      << "`experiments/scenarios/seed003_map3.yaml` (the thesis shows the layout only in a "
@@ -186,72 +190,84 @@ Report seed003Flight(const Options& options) {
      << "| path | pipeline | planned [m] | plan clearance [m] | ended | collisions | RMSE [m] | "
         "max error [m] | body clearance [m] | flight time [s] |\n"
         "|---|---|---|---|---|---|---|---|---|---|\n";
-  int index = 0;
+  return md.str();
+}
+
+// What the findings need from all the flights.
+struct FlightTally {
   bool thesis_intrudes_all = true, cosim_clean_all = true;
   int thesis_rows = 0, thesis_intruding = 0, cosim_rows = 0, cosim_clean = 0;
   double thesis_min_max_error = INFINITY;
   std::vector<MapPath> planned;
-  for (const PathSetting& path : paths) {
-    for (const Pipeline& p : pipelines) {
-      std::vector<std::string> overrides = {p.point_mass ? path.thesis_planner
-                                                         : path.cosim_planner};
-      overrides.insert(overrides.end(), p.overrides.begin(), p.overrides.end());
-      overrides.push_back("sim.seed=" + std::to_string(options.seed));
-      if (options.quick) overrides.push_back("sim.max_time=20");
-      Scenario scenario = loadScenario(scenario_file, overrides);
-      RunRequest request;
-      request.out_dir = std::filesystem::path(options.out_dir) /
-                        ("flight" + std::to_string(index++) + "-" + path.name + "-" + p.name);
-      std::filesystem::create_directories(request.out_dir);
-      request.video = false;
-      request.images = !options.quick;
-      request.plan_as_point_mass = p.point_mass;
-      const RunSummary r = executeRun(scenario, request);
-      const FlightMetrics& f = r.metrics.front();
-      const double plan_clearance = planClearance(request.out_dir / "path.csv", scenario.world);
-      const std::string ended = endReason(request.out_dir / "metrics.json");
-      const bool intrudes = f.collisions > 0 || f.min_clearance_m < 0.0;
-      const std::string pipeline = p.name;
-      if (pipeline == "thesis") {
-        thesis_intrudes_all &= intrudes;
-        ++thesis_rows;
-        thesis_intruding += intrudes;
-        thesis_min_max_error = std::min(thesis_min_max_error, f.max_error_m);
-      }
-      if (pipeline.rfind("cosim", 0) == 0) {
-        const bool clean = f.collisions == 0 && f.reached_goal;
-        cosim_clean_all &= clean;
-        ++cosim_rows;
-        cosim_clean += clean;
-      }
-      if (pipeline == "thesis" || pipeline == "cosim")
-        planned.push_back({std::string(path.name) + ", " + pipeline + " plan (" +
-                               fmt(f.planned_length_m, 1) + " m)",
-                           plannedPoints(request.out_dir / "path.csv")});
-      md << "| " << path.name << " | " << p.label << " | " << fmt(f.planned_length_m, 2) << " | "
-         << fmt(plan_clearance) << " | " << ended << " | " << f.collisions << " | "
-         << fmt(f.rmse_m, 4) << " | " << fmt(f.max_error_m, 4) << " | " << fmt(f.min_clearance_m)
-         << " | " << fmt(f.flight_time_s, 1) << " |\n";
-      JsonObject row;
-      row.add("path", path.name)
-          .add("pipeline", p.name)
-          .add("planned_length_m", f.planned_length_m)
-          .add("plan_clearance_m", plan_clearance)
-          .add("collisions", f.collisions)
-          .add("reached_goal", f.reached_goal)
-          .add("end_reason", ended)
-          .add("min_clearance_m", f.min_clearance_m)
-          .add("rmse_m", f.rmse_m)
-          .add("max_error_m", f.max_error_m)
-          .add("flight_time_s", f.flight_time_s)
-          .add("status", r.exitStatus())
-          .add("message", r.message);
-      rows.push_back(row);
-    }
+};
+
+// One path flown one way, in its folder flight<index>-<path>-<pipeline> under options.out_dir:
+// a line of the table, a JSON row and the tally's share.
+JsonObject flyOne(const Options& options, const PathSetting& path, const Pipeline& p, int index,
+                  std::ostringstream& md, FlightTally& tally) {
+  const std::string scenario_file = std::string(COSIM_SCENARIOS_DIR) + "/seed003_map3.yaml";
+  std::vector<std::string> overrides = {p.point_mass ? path.thesis_planner : path.cosim_planner};
+  overrides.insert(overrides.end(), p.overrides.begin(), p.overrides.end());
+  overrides.push_back("sim.seed=" + std::to_string(options.seed));
+  if (options.quick) overrides.push_back("sim.max_time=20");
+  Scenario scenario = loadScenario(scenario_file, overrides);
+  RunRequest request;
+  request.out_dir = std::filesystem::path(options.out_dir) /
+                    ("flight" + std::to_string(index) + "-" + path.name + "-" + p.name);
+  std::filesystem::create_directories(request.out_dir);
+  request.video = false;
+  request.images = !options.quick;
+  request.plan_as_point_mass = p.point_mass;
+  const RunSummary r = executeRun(scenario, request);
+  const FlightMetrics& f = r.metrics.front();
+  const double plan_clearance = planClearance(request.out_dir / "path.csv", scenario.world);
+  const std::string ended = endReason(request.out_dir / "metrics.json");
+  const bool intrudes = f.collisions > 0 || f.min_clearance_m < 0.0;
+  const std::string pipeline = p.name;
+  if (pipeline == "thesis") {
+    tally.thesis_intrudes_all &= intrudes;
+    ++tally.thesis_rows;
+    tally.thesis_intruding += intrudes;
+    tally.thesis_min_max_error = std::min(tally.thesis_min_max_error, f.max_error_m);
   }
-  md << "\nEach flight's files (metrics.json, timeseries.csv, path.csv, final.png) are in the "
-        "flight* folders beside this report.\n\n"
-     << flightMap(options, planned);
+  if (pipeline.rfind("cosim", 0) == 0) {
+    const bool clean = f.collisions == 0 && f.reached_goal;
+    tally.cosim_clean_all &= clean;
+    ++tally.cosim_rows;
+    tally.cosim_clean += clean;
+  }
+  if (pipeline == "thesis" || pipeline == "cosim")
+    tally.planned.push_back(
+        {std::string(path.name) + ", " + pipeline + " plan (" + fmt(f.planned_length_m, 1) + " m)",
+         plannedPoints(request.out_dir / "path.csv")});
+  md << "| " << path.name << " | " << p.label << " | " << fmt(f.planned_length_m, 2) << " | "
+     << fmt(plan_clearance) << " | " << ended << " | " << f.collisions << " | " << fmt(f.rmse_m, 4)
+     << " | " << fmt(f.max_error_m, 4) << " | " << fmt(f.min_clearance_m) << " | "
+     << fmt(f.flight_time_s, 1) << " |\n";
+  JsonObject row;
+  row.add("path", path.name)
+      .add("pipeline", p.name)
+      .add("planned_length_m", f.planned_length_m)
+      .add("plan_clearance_m", plan_clearance)
+      .add("collisions", f.collisions)
+      .add("reached_goal", f.reached_goal)
+      .add("end_reason", ended)
+      .add("min_clearance_m", f.min_clearance_m)
+      .add("rmse_m", f.rmse_m)
+      .add("max_error_m", f.max_error_m)
+      .add("flight_time_s", f.flight_time_s)
+      .add("status", r.exitStatus())
+      .add("message", r.message);
+  return row;
+}
+
+// The thesis's claims against the flights.
+std::vector<Finding> flightFindings(const Options& options, const FlightTally& tally) {
+  const bool thesis_intrudes_all = tally.thesis_intrudes_all;
+  const bool cosim_clean_all = tally.cosim_clean_all;
+  const int thesis_rows = tally.thesis_rows, thesis_intruding = tally.thesis_intruding;
+  const int cosim_rows = tally.cosim_rows, cosim_clean = tally.cosim_clean;
+  const double thesis_min_max_error = tally.thesis_min_max_error;
   std::vector<Finding> findings;
   findings.push_back(checkedFinding(
       "Flying the raw waypoints of a point-mass plan, the quadrotor intrudes into obstacles "
@@ -283,7 +299,24 @@ Report seed003Flight(const Options& options) {
       "The thesis's vehicle (Peter Corke's Simulink quadrotor) and start [3,3,2]",
       Finding::Verdict::kDiffers, "quad_1500g (PX4's Iris) from [3,2,2]",
       "the thesis gives no parameters for its model, and its planning tables start at [3,2,2]"));
-  md << agreementSection(findings);
+  return findings;
+}
+
+}  // namespace
+
+Report seed003Flight(const Options& options) {
+  std::ostringstream md;
+  std::vector<JsonObject> rows;
+  md << flightIntroduction(options);
+  int index = 0;
+  FlightTally tally;
+  for (const PathSetting& path : flightPaths())
+    for (const Pipeline& p : flightPipelines())
+      rows.push_back(flyOne(options, path, p, index++, md, tally));
+  md << "\nEach flight's files (metrics.json, timeseries.csv, path.csv, final.png) are in the "
+        "flight* folders beside this report.\n\n"
+     << flightMap(options, tally.planned);
+  md << agreementSection(flightFindings(options, tally));
   return {md.str(), rows};
 }
 

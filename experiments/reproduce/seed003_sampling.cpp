@@ -18,6 +18,7 @@
 #include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "experiments/reproduce/agreement_section.h"
+#include "experiments/reproduce/report_rows.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/run_spread.h"
 #include "experiments/reproduce/seed003_sampling_findings.h"
@@ -124,13 +125,10 @@ std::string jsonMapName(const std::string& name) {
   return name == "2d" ? "2d" : "3d_map" + name.substr(3);  // "3d-1" -> "3d_map1"
 }
 
-}  // namespace
-
-Report seed003Sampling(const Options& options) {
-  const int runs = options.runs > 0 ? options.runs : (options.quick ? 3 : 100);
-  const std::vector<Seed003Map> maps = seed003Maps();
-  std::ostringstream md, csv;
-  std::vector<JsonObject> rows;
+// The report's opening: what each column is, the settings, the runs and the maps.
+std::string samplingIntroduction(const Options& options, int runs,
+                                 const std::vector<Seed003Map>& maps) {
+  std::ostringstream md;
   md << "# Seed 003, continuous planners: RRT, RRT*, RRT*FN (Tables 4-17)\n\n"
      << "**What each column is.** `RRT* (thesis, Fig. 16)` is the thesis's RRT*: a new node "
         "joins the parent of its nearest node when that edge is free (else the nearest node), "
@@ -159,90 +157,98 @@ Report seed003Sampling(const Options& options) {
         "obstacle layouts only as figures), so compare the `% of RRT*` columns, not absolute "
         "lengths.\n\n";
   for (const Seed003Map& m : maps) md << "- map `" << m.name << "`: " << m.description << "\n";
-  csv << "table,map,set,planner,cap,runs,successes,mean_length_m,median_time_ms,q1_time_ms,"
-         "q3_time_ms,median_nodes,median_first_path_nodes,seed_length_m,seed_time_s\n";
+  return md.str();
+}
 
-  // Per table, what the summary at the end compares.
-  std::vector<TableFinding> findings;
-  std::map<std::string, BestPaths> best_paths;  // per map
-  for (const Seed003SamplingTable& t : kSeed003SamplingTables) {
-    const std::string label = t.label;
-    if (options.quick && label != "Tab. 4" && label != "Tab. 5" && label != "Tab. 10") continue;
-    const Seed003Map* map = mapNamed(maps, t.map);
-    if (!map) continue;
-    md << "\n## " << t.label << ": map " << t.map << ", " << t.set << " (mode " << t.mode
-       << ", N = " << t.max_nodes << ", step " << t.step << " m, radius " << t.radius << " m)\n\n"
-       << "| planner | success | length [m] | % of RRT* | time [ms] median [IQR] | time % of "
-          "RRT* | first path after (nodes) | seed length [m] | seed % of RRT* | seed time [s] "
-          "| seed time % of RRT* |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
-    const std::vector<Column> columns = columnsOf(t);
-    std::vector<Samples> samples;
-    for (const Column& c : columns) samples.push_back(runColumn(t, *map, c, options, runs));
-    const double ref_length = spreadOf(samples[1].lengths).mean;
-    const double ref_time = spreadOf(samples[1].times_ms).median;
-    for (std::size_t c = 0; c < columns.size(); ++c) {
-      const Column& col = columns[c];
-      const Samples& s = samples[c];
-      const Spread length = spreadOf(s.lengths), time = spreadOf(s.times_ms);
-      const Spread first = spreadOf(s.first_path_nodes), nodes = spreadOf(s.nodes);
-      const bool in_seed = col.seed_index >= 0;
-      const double seed_len = in_seed ? t.length[col.seed_index] : NAN;
-      const double seed_time = in_seed ? t.time_s[col.seed_index] : NAN;
-      md << "| " << col.label << " | " << s.successes << "/" << s.runs << " | "
-         << fmt("%.2f", length.mean) << " | " << fmt("%.1f %%", 100.0 * length.mean / ref_length)
-         << " | " << medianAndIqr(time, 2) << " | "
-         << fmt("%.1f %%", 100.0 * time.median / ref_time) << " | "
-         << (first.n ? fmt("%.0f", first.median) : "-") << " | "
-         << (in_seed ? fmt("%.2f", seed_len) : "-") << " | "
-         << (in_seed ? fmt("%.1f %%", 100.0 * seed_len / t.length[1]) : "-") << " | "
-         << (in_seed ? fmt("%.3f", seed_time) : "-") << " | "
-         << (in_seed ? fmt("%.1f %%", 100.0 * seed_time / t.time_s[1]) : "-") << " |\n";
-      csv << t.label << "," << t.map << "," << csvField(t.set) << "," << col.json_name << ","
-          << col.cap << "," << s.runs << "," << s.successes << "," << fmt("%.4f", length.mean)
-          << "," << fmt("%.4f", time.median) << "," << fmt("%.4f", time.q1) << ","
-          << fmt("%.4f", time.q3) << "," << fmt("%.0f", nodes.median) << ","
-          << fmt("%.0f", first.median) << "," << seed_len << "," << seed_time << "\n";
-      JsonObject row;
-      row.add("table", t.label)
-          .add("map", jsonMapName(t.map))
-          .add("set", t.set)
-          .add("planner", col.json_name)
-          .add("variant", col.thesis_parent ? "thesis" : (col.planner == "rrt" ? "both" : "cosim"))
-          .add("runs", s.runs)
-          .add("successes", s.successes)
-          .add("length_m", length.mean)
-          .add("length_vs_rrt_star_thesis", length.mean / ref_length)
-          .add("time_s", time.median / 1000.0)
-          .add("time_q1_s", time.q1 / 1000.0)
-          .add("time_q3_s", time.q3 / 1000.0)
-          .add("time_vs_rrt_star_thesis", time.median / ref_time)
-          .add("median_nodes", nodes.median)
-          .add("median_first_path_nodes", first.median)
-          .add("median_removed_nodes", spreadOf(s.removed).median)
-          .add("seed_length_m", seed_len)
-          .add("seed_time_s", seed_time);
-      rows.push_back(row);
-    }
-    TableFinding f;
-    f.table = &t;
-    f.rrt_ratio = spreadOf(samples[0].lengths).mean / ref_length;
-    f.kf_ratio = spreadOf(samples[2].lengths).mean / ref_length;
-    f.star_length = ref_length;
-    f.star_time_ms = ref_time;
-    f.star_first = spreadOf(samples[1].first_path_nodes).median;
-    for (std::size_t c = 3; c < columns.size(); ++c) {
-      f.fn_time_ratio.push_back(spreadOf(samples[c].times_ms).median / ref_time);
-      f.fn_length_ratio.push_back(spreadOf(samples[c].lengths).mean / ref_length);
-      f.fn_first.push_back(spreadOf(samples[c].first_path_nodes).median);
-    }
-    findings.push_back(f);
-    BestPaths& best = best_paths[t.map];
-    for (std::size_t c = 0; c < columns.size(); ++c)
-      best.offer(std::min<std::size_t>(c, 3), samples[c].best);
+// The cells a row of NAME.json begins with: which table, map, set and planner, and its runs.
+JsonObject columnRow(const Seed003SamplingTable& t, const std::string& planner,
+                     const std::string& variant, const Samples& s) {
+  JsonObject row;
+  row.add("table", t.label)
+      .add("map", jsonMapName(t.map))
+      .add("set", t.set)
+      .add("planner", planner)
+      .add("variant", variant)
+      .add("runs", s.runs)
+      .add("successes", s.successes)
+      .add("length_m", spreadOf(s.lengths).mean);
+  return row;
+}
+
+// One column of a table: its line in the report and the CSV, and its row of NAME.json.
+// ref_length and ref_time: the thesis's RRT* (the percentages' base).
+JsonObject writeColumn(const Seed003SamplingTable& t, const Column& col, const Samples& s,
+                       double ref_length, double ref_time, std::ostringstream& md,
+                       std::ostringstream& csv) {
+  const Spread length = spreadOf(s.lengths), time = spreadOf(s.times_ms);
+  const Spread first = spreadOf(s.first_path_nodes), nodes = spreadOf(s.nodes);
+  const bool in_seed = col.seed_index >= 0;
+  const double seed_len = in_seed ? t.length[col.seed_index] : NAN;
+  const double seed_time = in_seed ? t.time_s[col.seed_index] : NAN;
+  md << "| " << col.label << " | " << s.successes << "/" << s.runs << " | "
+     << fmt("%.2f", length.mean) << " | " << fmt("%.1f %%", 100.0 * length.mean / ref_length)
+     << " | " << medianAndIqr(time, 2) << " | " << fmt("%.1f %%", 100.0 * time.median / ref_time)
+     << " | " << (first.n ? fmt("%.0f", first.median) : "-") << " | "
+     << (in_seed ? fmt("%.2f", seed_len) : "-") << " | "
+     << (in_seed ? fmt("%.1f %%", 100.0 * seed_len / t.length[1]) : "-") << " | "
+     << (in_seed ? fmt("%.3f", seed_time) : "-") << " | "
+     << (in_seed ? fmt("%.1f %%", 100.0 * seed_time / t.time_s[1]) : "-") << " |\n";
+  csv << t.label << "," << t.map << "," << csvField(t.set) << "," << col.json_name << "," << col.cap
+      << "," << s.runs << "," << s.successes << "," << fmt("%.4f", length.mean) << ","
+      << fmt("%.4f", time.median) << "," << fmt("%.4f", time.q1) << "," << fmt("%.4f", time.q3)
+      << "," << fmt("%.0f", nodes.median) << "," << fmt("%.0f", first.median) << "," << seed_len
+      << "," << seed_time << "\n";
+  const char* variant = col.thesis_parent ? "thesis" : (col.planner == "rrt" ? "both" : "cosim");
+  JsonObject row = columnRow(t, col.json_name, variant, s);
+  row.add("length_vs_rrt_star_thesis", length.mean / ref_length);
+  addSecondsSpread(row, "time", time)
+      .add("time_vs_rrt_star_thesis", time.median / ref_time)
+      .add("median_nodes", nodes.median)
+      .add("median_first_path_nodes", first.median)
+      .add("median_removed_nodes", spreadOf(s.removed).median)
+      .add("seed_length_m", seed_len)
+      .add("seed_time_s", seed_time);
+  return row;
+}
+
+// One table: every column run `runs` times, written to the report, the CSV and the rows; returns
+// what the summary at the end compares and offers each column's best path to the map figures.
+TableFinding runTable(const Seed003SamplingTable& t, const Seed003Map& map, const Options& options,
+                      int runs, std::ostringstream& md, std::ostringstream& csv,
+                      std::vector<JsonObject>& rows, BestPaths& best) {
+  md << "\n## " << t.label << ": map " << t.map << ", " << t.set << " (mode " << t.mode
+     << ", N = " << t.max_nodes << ", step " << t.step << " m, radius " << t.radius << " m)\n\n"
+     << "| planner | success | length [m] | % of RRT* | time [ms] median [IQR] | time % of "
+        "RRT* | first path after (nodes) | seed length [m] | seed % of RRT* | seed time [s] "
+        "| seed time % of RRT* |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
+  const std::vector<Column> columns = columnsOf(t);
+  std::vector<Samples> samples;
+  for (const Column& c : columns) samples.push_back(runColumn(t, map, c, options, runs));
+  const double ref_length = spreadOf(samples[1].lengths).mean;
+  const double ref_time = spreadOf(samples[1].times_ms).median;
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    rows.push_back(writeColumn(t, columns[c], samples[c], ref_length, ref_time, md, csv));
+  TableFinding f;
+  f.table = &t;
+  f.rrt_ratio = spreadOf(samples[0].lengths).mean / ref_length;
+  f.kf_ratio = spreadOf(samples[2].lengths).mean / ref_length;
+  f.star_length = ref_length;
+  f.star_time_ms = ref_time;
+  f.star_first = spreadOf(samples[1].first_path_nodes).median;
+  for (std::size_t c = 3; c < columns.size(); ++c) {
+    f.fn_time_ratio.push_back(spreadOf(samples[c].times_ms).median / ref_time);
+    f.fn_length_ratio.push_back(spreadOf(samples[c].lengths).mean / ref_length);
+    f.fn_first.push_back(spreadOf(samples[c].first_path_nodes).median);
   }
-  md << ratioTable(findings);
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    best.offer(std::min<std::size_t>(c, 3), samples[c].best);
+  return f;
+}
 
-  // Goal rule: how often RRT finds a path in mode 1 if "reached" means within 0.5 m.
+// Goal rule: how often RRT finds a path in mode 1 if "reached" means within 0.5 m.
+std::string goalRuleSection(const Options& options, int runs, const std::vector<Seed003Map>& maps,
+                            const std::vector<TableFinding>& findings) {
+  std::ostringstream md;
   md << "\n## Goal rule\n\nMode-1 RRT with the goal reached from within one step (used above) "
         "and from within 0.5 m (half a cell of the thesis's 1 m maps, the strictest reading of "
         "its \"the precision of generating the nodes\"):\n\n| table | success, one step | "
@@ -260,8 +266,15 @@ Report seed003Sampling(const Options& options) {
   md << "\nThe thesis reports failures only for RRT*FN caps below N/5 (\"more than 90 % of "
         "cases\"), so its tabulated runs mostly succeeded: a rule that fails often is not its "
         "rule.\n";
+  return md.str();
+}
 
-  // The cost structure: the thesis's largest RRT*FN effect with every node scanned.
+// The cost structure: the thesis's largest RRT*FN effect (Tab. 10) with every node scanned; its
+// two rows go into NAME.json in the tables' format, named apart from the tables' own planners.
+std::string linearScanSection(const Options& options, int runs, const std::vector<Seed003Map>& maps,
+                              const std::vector<TableFinding>& findings,
+                              std::vector<JsonObject>& rows) {
+  std::ostringstream md;
   for (const TableFinding& f : findings) {
     const Seed003SamplingTable& t = *f.table;
     if (std::string(t.label) != "Tab. 10") continue;
@@ -280,25 +293,40 @@ Report seed003Sampling(const Options& options) {
        << " (the thesis: " << fmt("%.0f %%", 100.0 * t.time_s[2] / t.time_s[1])
        << "). In C++ a scan over a few hundred nodes costs microseconds, against the collision "
           "checks of every iteration, so capping the tree saves little time even then.\n";
-    // Two rows in the tables' format, named apart from the tables' own planners.
     for (const auto& [name, samples] :
          {std::pair<std::string, const Samples*>{"rrt_star_thesis_linear_scan", &star},
           {"rrt_star_fn_" + std::to_string(t.caps[0]) + "_linear_scan", &fn}}) {
-      JsonObject row;
-      row.add("table", t.label)
-          .add("map", jsonMapName(t.map))
-          .add("set", t.set)
-          .add("planner", name)
-          .add("variant", "thesis")
-          .add("runs", samples->runs)
-          .add("successes", samples->successes)
-          .add("length_m", spreadOf(samples->lengths).mean)
-          .add("time_s", spreadOf(samples->times_ms).median / 1000.0)
-          .add("time_q1_s", spreadOf(samples->times_ms).q1 / 1000.0)
-          .add("time_q3_s", spreadOf(samples->times_ms).q3 / 1000.0);
-      rows.push_back(row);
+      JsonObject row = columnRow(t, name, "thesis", *samples);
+      rows.push_back(addSecondsSpread(row, "time", spreadOf(samples->times_ms)));
     }
   }
+  return md.str();
+}
+
+}  // namespace
+
+Report seed003Sampling(const Options& options) {
+  const int runs = options.runs > 0 ? options.runs : (options.quick ? 3 : 100);
+  const std::vector<Seed003Map> maps = seed003Maps();
+  std::ostringstream md, csv;
+  std::vector<JsonObject> rows;
+  md << samplingIntroduction(options, runs, maps);
+  csv << "table,map,set,planner,cap,runs,successes,mean_length_m,median_time_ms,q1_time_ms,"
+         "q3_time_ms,median_nodes,median_first_path_nodes,seed_length_m,seed_time_s\n";
+
+  // Per table, what the summary at the end compares.
+  std::vector<TableFinding> findings;
+  std::map<std::string, BestPaths> best_paths;  // per map
+  for (const Seed003SamplingTable& t : kSeed003SamplingTables) {
+    const std::string label = t.label;
+    if (options.quick && label != "Tab. 4" && label != "Tab. 5" && label != "Tab. 10") continue;
+    const Seed003Map* map = mapNamed(maps, t.map);
+    if (!map) continue;
+    findings.push_back(runTable(t, *map, options, runs, md, csv, rows, best_paths[t.map]));
+  }
+  md << ratioTable(findings);
+  md << goalRuleSection(options, runs, maps, findings);
+  md << linearScanSection(options, runs, maps, findings, rows);
   if (!options.out_dir.empty())
     writeFileAtomically(std::filesystem::path(options.out_dir) / "seed003-sampling.csv", csv.str());
   md << samplingMaps(options, maps, best_paths) << agreementSection(samplingFindings(findings));

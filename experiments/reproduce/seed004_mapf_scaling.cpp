@@ -10,6 +10,7 @@
 
 #include "experiments/reproduce/agreement_section.h"
 #include "experiments/reproduce/mapf_trial.h"
+#include "experiments/reproduce/report_rows.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/reproduction_map.h"
 #include "experiments/reproduce/seed004_figures.h"
@@ -71,6 +72,93 @@ std::vector<Finding> scalingFindings(const SuccessByMap& success) {
   return f;
 }
 
+// The report's opening: what is run on which data, and the table's header.
+std::string scalingIntroduction(const std::filesystem::path& dir, std::size_t scenario_files,
+                                double whca_limit_s, double cbs_limit_s) {
+  return "# WHCA* and CBS against the number of agents on the MAPF benchmarks\n\n"
+         "**Not a reproduction of a thesis experiment**: seed 004 publishes no numeric results and "
+         "runs nothing at this scale. This report tests three of its claims on the MovingAI "
+         "benchmarks instead (the closing section): that WHCA* is the most promising of its "
+         "methods (§3.6), that its own WHCA* solved bottlenecks only for few agents (§4.4), and "
+         "that a window about the number of agents suffices (§3.5; here w = 8 against 10-100 "
+         "agents). CBS is the optimal reference. Data: " +
+         dir.string() +
+         " (MovingAI MAPF benchmarks, Stern et al. 2019), 4-connected, instance = the first N "
+         "lines of each scenario file (" +
+         std::to_string(scenario_files) +
+         " files per map where present: -random-k and -even-k). WHCA*: window 8, dynamic "
+         "priorities, replanning every 4 steps, time limit " +
+         formatFixed(whca_limit_s, 0) +
+         " s; CBS: bypassing, conflict-avoidance tie-breaking, time limit " +
+         formatFixed(cbs_limit_s, 0) +
+         " s. Solved = accepted by the independent validator. SOC = sum of arrival times; "
+         "\"SOC both\" compares the two on the instances both solved (WHCA* / CBS).\n\n"
+         "| map | agents | instances | WHCA* success % | WHCA* mean SOC | WHCA* mean ms | CBS "
+         "success % | CBS mean SOC | CBS mean ms | SOC both (WHCA*/CBS) |\n"
+         "|---|---|---|---|---|---|---|---|---|---|\n";
+}
+
+// WHCA* and CBS on every instance of one map with n agents, and the sums of costs on the
+// instances both solved.
+struct ScalingCell {
+  MapfTrialSummary whca, cbs;
+  double both_whca = 0, both_cbs = 0;
+};
+
+// The figure: the first instance run, with both planners' paths.
+struct ScalingFigure {
+  std::string file, how;
+};
+
+// Runs one cell; the first instance run anywhere becomes the figure.
+ScalingCell runScalingCell(const Options& options, const std::filesystem::path& dir,
+                           const std::string& map, int n, const std::vector<std::string>& scens,
+                           double whca_limit_s, double cbs_limit_s, ScalingFigure& figure) {
+  const auto map_path = dir / (map + ".map");
+  ScalingCell cell;
+  MapfTrialSummary &whca = cell.whca, &cbs = cell.cbs;
+  double &both_whca = cell.both_whca, &both_cbs = cell.both_cbs;
+  std::string &map_file = figure.file, &map_how = figure.how;
+  for (const auto& suffix : scens) {
+    const auto scen_path = dir / (map + suffix);
+    if (!std::filesystem::exists(scen_path)) continue;
+    // "Where the map allows": a scenario has as many agents as it has lines.
+    if (static_cast<int>(readMovingAIScenario(scen_path.string()).size()) < n) continue;
+    const MapfInstance inst = readMovingAIMapfInstance(map_path.string(), scen_path.string(), n);
+    const MapfTrial w = runMapfTrial("whca_star", {}, inst, whca_limit_s, options.seed);
+    const MapfTrial c = runMapfTrial("cbs", {}, inst, cbs_limit_s, options.seed);
+    whca.add(w);
+    cbs.add(c);
+    if (map_file.empty()) {
+      map_file = drawMapfInstance(options.out_dir, "seed004-mapf-scaling", 1,
+                                  map + ", " + std::to_string(n) + " agents (" + suffix + ")", inst,
+                                  {{"WHCA*", &w}, {"CBS", &c}});
+      map_how = map + ": the MovingAI benchmark map, read from its file (exact)";
+    }
+    if (w.solved && c.solved) both_whca += w.sum_of_costs, both_cbs += c.sum_of_costs;
+  }
+  return cell;
+}
+
+// The cell's line in the table and its two rows.
+void writeScalingCell(const std::string& map, int n, const ScalingCell& cell, std::string& md,
+                      std::vector<JsonObject>& rows) {
+  const MapfTrialSummary &whca = cell.whca, &cbs = cell.cbs;
+  md += "| " + map + " | " + std::to_string(n) + " | " + std::to_string(whca.runs) + " | " +
+        formatFixed(whca.successPercent(), 0) + " | " +
+        formatFixed(whca.solved ? whca.meanSumOfCosts() : NAN, 1) + " | " +
+        formatFixed(whca.meanTimeMs(), 1) + " | " + formatFixed(cbs.successPercent(), 0) + " | " +
+        formatFixed(cbs.solved ? cbs.meanSumOfCosts() : NAN, 1) + " | " +
+        formatFixed(cbs.meanTimeMs(), 1) + " | " +
+        formatFixed(cell.both_cbs > 0 ? cell.both_whca / cell.both_cbs : NAN, 3) + " |\n";
+  for (const auto& [planner, t] :
+       {std::pair<const char*, const MapfTrialSummary*>{"whca_star", &whca}, {"cbs", &cbs}}) {
+    JsonObject row;
+    row.add("map", map).add("agents", n).add("planner", planner);
+    rows.push_back(addMapfOutcome(row, *t).add("mean_time_ms", t->meanTimeMs()));
+  }
+}
+
 }  // namespace
 
 Report seed004MapfScaling(const Options& options) {
@@ -86,83 +174,21 @@ Report seed004MapfScaling(const Options& options) {
     for (int k = 1; k <= std::min(per_kind, 5); ++k)
       scens.push_back(std::string("-") + kind + "-" + std::to_string(k) + ".scen");
   const double whca_limit_s = options.quick ? 1.0 : 10.0, cbs_limit_s = options.quick ? 1.0 : 5.0;
-
-  std::string md =
-      "# WHCA* and CBS against the number of agents on the MAPF benchmarks\n\n"
-      "**Not a reproduction of a thesis experiment**: seed 004 publishes no numeric results and "
-      "runs nothing at this scale. This report tests three of its claims on the MovingAI "
-      "benchmarks instead (the closing section): that WHCA* is the most promising of its "
-      "methods (§3.6), that its own WHCA* solved bottlenecks only for few agents (§4.4), and "
-      "that a window about the number of agents suffices (§3.5; here w = 8 against 10-100 "
-      "agents). CBS is the optimal reference. Data: " +
-      dir.string() +
-      " (MovingAI MAPF benchmarks, Stern et al. 2019), 4-connected, instance = the first N lines "
-      "of each scenario file (" +
-      std::to_string(scens.size()) +
-      " files per map where present: -random-k and -even-k). WHCA*: window 8, dynamic "
-      "priorities, replanning every 4 steps, time limit " +
-      formatFixed(whca_limit_s, 0) +
-      " s; CBS: bypassing, conflict-avoidance tie-breaking, time "
-      "limit " +
-      formatFixed(cbs_limit_s, 0) +
-      " s. Solved = accepted by the independent validator. SOC = sum of arrival times; "
-      "\"SOC both\" compares the two on the instances both solved (WHCA* / CBS).\n\n"
-      "| map | agents | instances | WHCA* success % | WHCA* mean SOC | WHCA* mean ms | CBS "
-      "success % | CBS mean SOC | CBS mean ms | SOC both (WHCA*/CBS) |\n"
-      "|---|---|---|---|---|---|---|---|---|---|\n";
+  std::string md = scalingIntroduction(dir, scens.size(), whca_limit_s, cbs_limit_s);
   std::vector<JsonObject> rows;
-  std::map<std::string, std::vector<std::pair<int, std::pair<double, double>>>>
-      success;  // map -> (n, whca, cbs)
-  std::string map_file, map_how;
+  SuccessByMap success;  // map -> (n, whca, cbs)
+  ScalingFigure figure;
   for (const auto& map : maps) {
-    const auto map_path = dir / (map + ".map");
-    if (!std::filesystem::exists(map_path)) continue;
+    if (!std::filesystem::exists(dir / (map + ".map"))) continue;
     for (const int n : agent_counts) {
-      MapfTrialSummary whca, cbs;
-      double both_whca = 0, both_cbs = 0;
-      for (const auto& suffix : scens) {
-        const auto scen_path = dir / (map + suffix);
-        if (!std::filesystem::exists(scen_path)) continue;
-        // "Where the map allows": a scenario has as many agents as it has lines.
-        if (static_cast<int>(readMovingAIScenario(scen_path.string()).size()) < n) continue;
-        const MapfInstance inst =
-            readMovingAIMapfInstance(map_path.string(), scen_path.string(), n);
-        const MapfTrial w = runMapfTrial("whca_star", {}, inst, whca_limit_s, options.seed);
-        const MapfTrial c = runMapfTrial("cbs", {}, inst, cbs_limit_s, options.seed);
-        whca.add(w);
-        cbs.add(c);
-        if (map_file.empty()) {
-          map_file = drawMapfInstance(options.out_dir, "seed004-mapf-scaling", 1,
-                                      map + ", " + std::to_string(n) + " agents (" + suffix + ")",
-                                      inst, {{"WHCA*", &w}, {"CBS", &c}});
-          map_how = map + ": the MovingAI benchmark map, read from its file (exact)";
-        }
-        if (w.solved && c.solved) both_whca += w.sum_of_costs, both_cbs += c.sum_of_costs;
-      }
-      if (whca.runs == 0) continue;
-      success[map].push_back({n, {whca.successPercent(), cbs.successPercent()}});
-      md += "| " + map + " | " + std::to_string(n) + " | " + std::to_string(whca.runs) + " | " +
-            formatFixed(whca.successPercent(), 0) + " | " +
-            formatFixed(whca.solved ? whca.meanSumOfCosts() : NAN, 1) + " | " +
-            formatFixed(whca.meanTimeMs(), 1) + " | " + formatFixed(cbs.successPercent(), 0) +
-            " | " + formatFixed(cbs.solved ? cbs.meanSumOfCosts() : NAN, 1) + " | " +
-            formatFixed(cbs.meanTimeMs(), 1) + " | " +
-            formatFixed(both_cbs > 0 ? both_whca / both_cbs : NAN, 3) + " |\n";
-      for (const auto& [planner, t] :
-           {std::pair<const char*, const MapfTrialSummary*>{"whca_star", &whca}, {"cbs", &cbs}}) {
-        JsonObject row;
-        row.add("map", map)
-            .add("agents", n)
-            .add("planner", planner)
-            .add("instances", t->runs)
-            .add("success_percent", t->successPercent())
-            .add("mean_sum_of_costs", t->solved ? t->meanSumOfCosts() : NAN)
-            .add("mean_time_ms", t->meanTimeMs());
-        rows.push_back(row);
-      }
+      const ScalingCell cell =
+          runScalingCell(options, dir, map, n, scens, whca_limit_s, cbs_limit_s, figure);
+      if (cell.whca.runs == 0) continue;
+      success[map].push_back({n, {cell.whca.successPercent(), cell.cbs.successPercent()}});
+      writeScalingCell(map, n, cell, md, rows);
     }
   }
-  if (!map_file.empty()) md.append("\n").append(mapFiguresMarkdown({map_file}, {map_how}));
+  if (!figure.file.empty()) md.append("\n").append(mapFiguresMarkdown({figure.file}, {figure.how}));
   md += agreementSection(scalingFindings(success));
   return {md, rows};
 }

@@ -11,6 +11,7 @@
 
 #include "experiments/reproduce/agreement_section.h"
 #include "experiments/reproduce/mapf_trial.h"
+#include "experiments/reproduce/report_rows.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/reproduction_map.h"
 #include "experiments/reproduce/seed004_environments.h"
@@ -104,6 +105,131 @@ std::vector<Finding> plannerFindings(const PlannerOutcomes& o, const std::vector
   return f;
 }
 
+// The planners compared, in the table's order (CBS last: the others' SOC is set against it).
+std::vector<PlannerSetting> comparedPlanners() {
+  return {
+      {"independent A*", "independent_astar", {}},
+      {"LRA*", "lra_star", {}},
+      {"CA*", "ca_star", {}},
+      {"HCA*", "hca_star", {}},
+      {"WHCA* (w=8, dynamic)", "whca_star", {}},
+      {"potential field", "potential_field", {}},
+      {"CBS (optimal)", "cbs", {}},
+  };
+}
+
+// The report's opening: the set-up and the table's header.
+std::string plannersIntroduction(const Options& options, int runs, int size, double time_limit_s) {
+  return "# Seed 004: LRA* vs CA* vs WHCA* from the same starts\n\n"
+         "Seed 004 (Szulc 2018) publishes **no numeric results**: its chapter 6 is TODO notes and "
+         "its list of tables is empty. Its planned comparison is run here; the last column quotes "
+         "the seed's qualitative claim where it makes one.\n\n"
+         "Set-up: " +
+         std::to_string(size) + " x " + std::to_string(size) +
+         " maps (the size of the seed software's effectiveness tests); 8-connected with the "
+         "thesis's rule (§4.2): a diagonal move only when all four cells it touches are free, "
+         "every move one time step (none is possible in the generated mazes, whose free cells "
+         "never form a 2 x 2 block); maze = the seed's generator (§4.1), open = no obstacles, "
+         "bottleneck = two rooms joined by one door. The thesis's third environment, \"puzzle "
+         "15\" (§6.2), is not explained in its text, so the bottleneck of its §4.4 stands in for "
+         "it. Its planned \"WHCA2 vs kilavuz WHCA\" comparison is not run: the thesis names its "
+         "own WHCA2 but gives no flowchart or pseudo-code for it (§4.4), and does not describe the "
+         "third-party \"kilavuz\" variant, so neither can be rebuilt from the text; WHCA* here is "
+         "Silver's (2005) with the thesis's dynamic priorities (§4.5). random distinct starts and "
+         "goals; " +
+         std::to_string(runs) + " instances per row (seed " + std::to_string(options.seed) +
+         " + i), the same instances for every planner; time limit " + formatFixed(time_limit_s, 0) +
+         " s per run. A run counts as solved only if the independent validator accepts its paths. "
+         "SOC = sum of arrival times; SOC/CBS is over the instances solved by both.\n\n"
+         "| environment | robots | planner | success % | mean SOC | SOC / CBS | mean time ms | "
+         "seed 004 says |\n|---|---|---|---|---|---|---|---|\n";
+}
+
+// What every row of the table runs with.
+struct PlannersSetting {
+  const Options& options;
+  int runs, size;
+  double time_limit_s;
+  int connectivity;
+  std::vector<PlannerSetting> planners;
+  int first_robot_count;  // the figures show the first instance at this count
+};
+
+// Every planner on the same `runs` instances of one environment with `robots` robots; their
+// summaries, and per planner the sum and count of its SOC over CBS's on the instances both
+// solved.
+struct PlannersRow {
+  std::vector<MapfTrialSummary> summary;
+  std::vector<double> ratio_sum;
+  std::vector<int> ratio_n;
+};
+
+PlannersRow runPlannersRow(const PlannersSetting& at, Seed004Environment env, int robots,
+                           PlannerOutcomes& outcomes, std::vector<std::string>& map_files) {
+  const Options& options = at.options;
+  const int runs = at.runs, size = at.size, connectivity = at.connectivity;
+  const double time_limit_s = at.time_limit_s;
+  const std::vector<PlannerSetting>& planners = at.planners;
+  PlannersRow row{std::vector<MapfTrialSummary>(planners.size()),
+                  std::vector<double>(planners.size(), 0.0), std::vector<int>(planners.size(), 0)};
+  std::vector<MapfTrialSummary>& summary = row.summary;
+  std::vector<double>& ratio_sum = row.ratio_sum;
+  std::vector<int>& ratio_n = row.ratio_n;
+  for (int i = 0; i < runs; ++i) {
+    const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(i);
+    const MapfInstance inst = randomlyPlacedRobots(seed004Map(env, size, size, seed), robots,
+                                                   seed * 7919 + robots, connectivity);
+    std::vector<MapfTrial> trials;
+    for (const auto& p : planners)
+      trials.push_back(runMapfTrial(p.planner, p.params, inst, time_limit_s, seed));
+    const MapfTrial& cbs = trials.back();
+    if (i == 0 && robots == at.first_robot_count)
+      map_files.push_back(drawMapfInstance(
+          options.out_dir, "seed004-planners", static_cast<int>(map_files.size()) + 1,
+          std::string(seed004EnvironmentName(env)) + ", " + std::to_string(robots) + " robots",
+          inst,
+          {{"CBS", &trials[6]},
+           {"WHCA*", &trials[4]},
+           {"LRA*", &trials[1]},
+           {"potential field", &trials[5]}}));
+    if (env == Seed004Environment::kBottleneck)
+      outcomes.door_share[robots] += doorCrossingShare(inst) / runs;
+    for (std::size_t k = 0; k < planners.size(); ++k) {
+      summary[k].add(trials[k]);
+      if (trials[k].solved && cbs.solved && cbs.sum_of_costs > 0) {
+        ratio_sum[k] += static_cast<double>(trials[k].sum_of_costs) / cbs.sum_of_costs;
+        ++ratio_n[k];
+      }
+    }
+  }
+  return row;
+}
+
+// The row's lines of the table and its rows of NAME.json.
+void writePlannersRow(const std::vector<PlannerSetting>& planners, Seed004Environment env,
+                      int robots, const PlannersRow& r, std::string& md,
+                      std::vector<JsonObject>& rows, PlannerOutcomes& outcomes) {
+  for (std::size_t k = 0; k < planners.size(); ++k) {
+    const auto& s = r.summary[k];
+    const double soc_over_cbs = r.ratio_n[k] ? r.ratio_sum[k] / r.ratio_n[k] : NAN;
+    md += std::string("| ") + seed004EnvironmentName(env) + " | " + std::to_string(robots) + " | " +
+          planners[k].label + " | " + formatFixed(s.successPercent(), 0) + " | " +
+          formatFixed(s.solved ? s.meanSumOfCosts() : NAN, 1) + " | " +
+          formatFixed(soc_over_cbs, 3) + " | " + formatFixed(s.meanTimeMs(), 2) + " | " +
+          seedClaim(env, planners[k].planner) + " |\n";
+    outcomes.success[{env, robots, planners[k].planner}] = s.successPercent();
+    JsonObject row;
+    row.add("environment", seed004EnvironmentName(env))
+        .add("robots", robots)
+        .add("planner", planners[k].planner);
+    addMapfOutcome(row, s)
+        .add("soc_over_cbs", soc_over_cbs)
+        .add("mean_time_ms", s.meanTimeMs())
+        .add("seed_claim", seedClaim(env, planners[k].planner));
+    rows.push_back(row);
+  }
+}
+
 }  // namespace
 
 Report seed004Planners(const Options& options) {
@@ -114,100 +240,20 @@ Report seed004Planners(const Options& options) {
   // The same limit in --quick runs: a shorter one made their CBS results depend on the machine's
   // speed (one 5-robot maze instance needs about a second under AddressSanitizer).
   const double time_limit_s = 5.0;
-  const std::vector<PlannerSetting> planners = {
-      {"independent A*", "independent_astar", {}},
-      {"LRA*", "lra_star", {}},
-      {"CA*", "ca_star", {}},
-      {"HCA*", "hca_star", {}},
-      {"WHCA* (w=8, dynamic)", "whca_star", {}},
-      {"potential field", "potential_field", {}},
-      {"CBS (optimal)", "cbs", {}},
-  };
-
   // Seed 004 §4.2: a diagonal move is allowed when all four cells it touches are free
   // (MapfInstance's 8-connectivity).
   const int connectivity = 8;
-  std::string md =
-      "# Seed 004: LRA* vs CA* vs WHCA* from the same starts\n\n"
-      "Seed 004 (Szulc 2018) publishes **no numeric results**: its chapter 6 is TODO notes and its "
-      "list of tables is empty. Its planned comparison is run here; the last column quotes the "
-      "seed's qualitative claim where it makes one.\n\n"
-      "Set-up: " +
-      std::to_string(size) + " x " + std::to_string(size) +
-      " maps (the size of the seed software's effectiveness tests); 8-connected with the thesis's "
-      "rule (§4.2): a diagonal move only when all four cells it touches are free, every move one "
-      "time step (none is possible in the generated mazes, whose free cells never form a 2 x 2 "
-      "block); maze = the seed's generator (§4.1), open = no obstacles, bottleneck = two rooms "
-      "joined by one door. The thesis's third environment, \"puzzle 15\" (§6.2), is not "
-      "explained in its text, so the bottleneck of its §4.4 stands in for it. Its planned "
-      "\"WHCA2 vs kilavuz WHCA\" comparison is not run: the thesis names its own WHCA2 but gives "
-      "no flowchart or pseudo-code for it (§4.4), and does not describe the third-party "
-      "\"kilavuz\" variant, so neither can be rebuilt from the text; WHCA* here is Silver's "
-      "(2005) with the thesis's dynamic priorities (§4.5). "
-      "random distinct starts and goals; " +
-      std::to_string(runs) + " instances per row (seed " + std::to_string(options.seed) +
-      " + i), the same instances for every planner; time limit " + formatFixed(time_limit_s, 0) +
-      " s per run. A run counts as solved only if the independent validator accepts its paths. "
-      "SOC = sum of arrival times; SOC/CBS is over the instances solved by both.\n\n"
-      "| environment | robots | planner | success % | mean SOC | SOC / CBS | mean time ms | seed "
-      "004 says |\n|---|---|---|---|---|---|---|---|\n";
+  const PlannersSetting at{
+      options, runs, size, time_limit_s, connectivity, comparedPlanners(), robot_counts.front()};
+  std::string md = plannersIntroduction(options, runs, size, time_limit_s);
   std::vector<JsonObject> rows;
   PlannerOutcomes outcomes;
   std::vector<std::string> map_files;
   for (const auto env :
        {Seed004Environment::kMaze, Seed004Environment::kOpen, Seed004Environment::kBottleneck})
-    for (const int robots : robot_counts) {
-      std::vector<MapfTrialSummary> summary(planners.size());
-      std::vector<double> ratio_sum(planners.size(), 0.0);
-      std::vector<int> ratio_n(planners.size(), 0);
-      for (int i = 0; i < runs; ++i) {
-        const std::uint64_t seed = options.seed + static_cast<std::uint64_t>(i);
-        const MapfInstance inst = randomlyPlacedRobots(seed004Map(env, size, size, seed), robots,
-                                                       seed * 7919 + robots, connectivity);
-        std::vector<MapfTrial> trials;
-        for (const auto& p : planners)
-          trials.push_back(runMapfTrial(p.planner, p.params, inst, time_limit_s, seed));
-        const MapfTrial& cbs = trials.back();
-        if (i == 0 && robots == robot_counts.front())
-          map_files.push_back(drawMapfInstance(
-              options.out_dir, "seed004-planners", static_cast<int>(map_files.size()) + 1,
-              std::string(seed004EnvironmentName(env)) + ", " + std::to_string(robots) + " robots",
-              inst,
-              {{"CBS", &trials[6]},
-               {"WHCA*", &trials[4]},
-               {"LRA*", &trials[1]},
-               {"potential field", &trials[5]}}));
-        if (env == Seed004Environment::kBottleneck)
-          outcomes.door_share[robots] += doorCrossingShare(inst) / runs;
-        for (std::size_t k = 0; k < planners.size(); ++k) {
-          summary[k].add(trials[k]);
-          if (trials[k].solved && cbs.solved && cbs.sum_of_costs > 0) {
-            ratio_sum[k] += static_cast<double>(trials[k].sum_of_costs) / cbs.sum_of_costs;
-            ++ratio_n[k];
-          }
-        }
-      }
-      for (std::size_t k = 0; k < planners.size(); ++k) {
-        const auto& s = summary[k];
-        md += std::string("| ") + seed004EnvironmentName(env) + " | " + std::to_string(robots) +
-              " | " + planners[k].label + " | " + formatFixed(s.successPercent(), 0) + " | " +
-              formatFixed(s.solved ? s.meanSumOfCosts() : NAN, 1) + " | " +
-              formatFixed(ratio_n[k] ? ratio_sum[k] / ratio_n[k] : NAN, 3) + " | " +
-              formatFixed(s.meanTimeMs(), 2) + " | " + seedClaim(env, planners[k].planner) + " |\n";
-        outcomes.success[{env, robots, planners[k].planner}] = s.successPercent();
-        JsonObject row;
-        row.add("environment", seed004EnvironmentName(env))
-            .add("robots", robots)
-            .add("planner", planners[k].planner)
-            .add("instances", s.runs)
-            .add("success_percent", s.successPercent())
-            .add("mean_sum_of_costs", s.solved ? s.meanSumOfCosts() : NAN)
-            .add("soc_over_cbs", ratio_n[k] ? ratio_sum[k] / ratio_n[k] : NAN)
-            .add("mean_time_ms", s.meanTimeMs())
-            .add("seed_claim", seedClaim(env, planners[k].planner));
-        rows.push_back(row);
-      }
-    }
+    for (const int robots : robot_counts)
+      writePlannersRow(at.planners, env, robots,
+                       runPlannersRow(at, env, robots, outcomes, map_files), md, rows, outcomes);
   md.append("\n").append(
       mapFiguresMarkdown(map_files, {"maze: the thesis's own generator (§4.1), exact",
                                      "open: an empty room (the thesis's \"open\")",

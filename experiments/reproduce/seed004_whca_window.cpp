@@ -11,6 +11,7 @@
 
 #include "experiments/reproduce/agreement_section.h"
 #include "experiments/reproduce/mapf_trial.h"
+#include "experiments/reproduce/report_rows.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/reproduction_map.h"
 #include "experiments/reproduce/seed004_environments.h"
@@ -43,10 +44,9 @@ std::string windowMap(const Options& options, const std::vector<MapfInstance>& d
                                      "description (the thesis has no map)"});
 }
 
-std::vector<Finding> windowFindings(const WindowCells& cells, const std::vector<int>& robots,
-                                    const std::vector<int>& windows, int runs) {
-  std::vector<Finding> f;
-  // §3.5: success improves as w grows (fixed priorities, where w is the window).
+// §3.5: success improves as w grows (fixed priorities, where w is the window).
+Finding windowGrowthFinding(const WindowCells& cells, const std::vector<int>& robots,
+                            const std::vector<int>& windows, int runs) {
   int falling = 0, rows = 0;
   std::vector<MapfTrial> failed_wide;
   std::string worst;
@@ -65,7 +65,7 @@ std::vector<Finding> windowFindings(const WindowCells& cells, const std::vector<
           worst = std::string(seed004EnvironmentName(env)) + " " + std::to_string(r);
       }
     }
-  f.push_back(checkedFinding(
+  return checkedFinding(
       "Success improves as the window w grows, at a higher cost (§3.5)", falling == 0,
       "fixed priorities: success at w = " + std::to_string(windows.back()) +
           " below w = " + std::to_string(windows.front()) + " (by more than one instance) in " +
@@ -76,8 +76,11 @@ std::vector<Finding> windowFindings(const WindowCells& cells, const std::vector<
                ? ". A wider window reserves each higher-priority agent's cells further ahead, so a "
                  "lower-priority agent more often finds no reservation-free route inside its "
                  "window, which ends a fixed-priority run"
-               : "")));
-  // §4.5: dynamic priorities help.
+               : ""));
+}
+
+// §4.5: dynamic priorities help.
+Finding dynamicPriorityFinding(const WindowCells& cells) {
   int better = 0, worse = 0;
   std::vector<MapfTrial> dyn_fail;
   for (const auto& [key, trials] : cells) {
@@ -89,7 +92,7 @@ std::vector<Finding> windowFindings(const WindowCells& cells, const std::vector<
     worse += d < -1e-9;
     if (d < -1e-9) dyn_fail.insert(dyn_fail.end(), trials.begin(), trials.end());
   }
-  f.push_back(checkedFinding(
+  return checkedFinding(
       "Raising the priority of an agent that found no route and retrying raises the success "
       "rate over fixed priorities (§4.5, the comparison planned in §6.3)",
       better > worse,
@@ -100,8 +103,13 @@ std::vector<Finding> windowFindings(const WindowCells& cells, const std::vector<
       "where dynamic priorities do worse the failures are: " + failureCauses(dyn_fail) +
           " (a bumped agent replans first and takes cells the others had reserved; the window "
           "widened up to the number of robots makes every replanning dearer)",
-      false));
-  // The same question in the dynamic rows, where w is the starting window only.
+      false);
+}
+
+// The same question as windowGrowthFinding in the dynamic rows, where w is the starting window
+// only.
+Finding dynamicWindowFinding(const WindowCells& cells, const std::vector<int>& robots,
+                             const std::vector<int>& windows, int runs) {
   int dyn_falling = 0;
   std::vector<MapfTrial> dyn_wide_fail;
   for (const Environment env : {Environment::kMaze, Environment::kOpen, Environment::kBottleneck})
@@ -113,41 +121,44 @@ std::vector<Finding> windowFindings(const WindowCells& cells, const std::vector<
         dyn_wide_fail.insert(dyn_wide_fail.end(), wide.begin(), wide.end());
       }
     }
-  f.push_back(checkedFinding(
+  return checkedFinding(
       "A larger window helps also when priorities change (§3.5 with §4.5)", dyn_falling == 0,
       "dynamic priorities: success at w = " + std::to_string(windows.back()) +
           " below w = " + std::to_string(windows.front()) + " (by more than one instance) in " +
-          std::to_string(dyn_falling) + " of " + std::to_string(rows) + " rows",
+          std::to_string(dyn_falling) + " of " + std::to_string(3 * robots.size()) + " rows",
       "the failures at the widest starting window there are: " + failureCauses(dyn_wide_fail) +
           "; a wide window is also replanned less often (every w/2 steps), which may let jams "
           "build before a priority bump; that effect was not isolated",
-      false));
+      false);
+}
+
+// §4.4: the thesis's WHCA* solved the bottleneck only for about 2 agents.
+Finding bottleneckFinding(const WindowCells& cells, const std::vector<int>& robots,
+                          const std::vector<int>& windows) {
   double best_big = 0;
   for (int w : windows)
     best_big =
         std::max({best_big, success(cells.at({Environment::kBottleneck, robots.back(), false, w})),
                   success(cells.at({Environment::kBottleneck, robots.back(), true, w}))});
-  f.push_back(checkedFinding(
+  return checkedFinding(
       "The thesis's WHCA* solves the bottleneck only for about 2 agents (§4.4)", best_big < 50,
       "ours, " + std::to_string(robots.back()) +
           " robots, best window: " + formatFixed(best_big, 0) + " %",
       "ours is a complete WHCA* with swap-conflict reservations and a reverse-resumable A* "
       "heuristic, the thesis's an unfinished draft; and with random starts and goals only some "
-      "robots must pass the door (seed004-planners gives the share)"));
-  return f;
+      "robots must pass the door (seed004-planners gives the share)");
 }
 
-}  // namespace
+std::vector<Finding> windowFindings(const WindowCells& cells, const std::vector<int>& robots,
+                                    const std::vector<int>& windows, int runs) {
+  return {windowGrowthFinding(cells, robots, windows, runs), dynamicPriorityFinding(cells),
+          dynamicWindowFinding(cells, robots, windows, runs),
+          bottleneckFinding(cells, robots, windows)};
+}
 
-Report seed004WhcaWindow(const Options& options) {
-  const int runs = options.runs > 0 ? options.runs : (options.quick ? 2 : 20);
-  const int size = 15;
-  const std::vector<int> robot_counts =
-      options.quick ? std::vector<int>{5} : std::vector<int>{2, 5, 10, 20};
-  const std::vector<int> windows =
-      options.quick ? std::vector<int>{4, 8} : std::vector<int>{2, 4, 8, 16, 32};
-  const double time_limit_s = options.quick ? 1.0 : 5.0;
-
+// The report's opening: the claims, the set-up, what the w columns mean, the table's header.
+std::string windowIntroduction(int runs, int size, const std::vector<int>& windows,
+                               double time_limit_s) {
   std::string md =
       "# Seed 004: WHCA* over window sizes, fixed vs dynamic priorities\n\n"
       "Seed 004 publishes **no numeric results** (chapter 6 is TODO notes). Its claims: the window "
@@ -174,9 +185,71 @@ Report seed004WhcaWindow(const Options& options) {
   md += "\n|---|---|---|";
   for (std::size_t i = 0; i < windows.size(); ++i) md += "---|";
   md += "\n";
+  return md;
+}
+
+// What every row of the table runs with.
+struct WindowSetting {
+  const Options& options;
+  int runs;
+  std::vector<int> windows;
+  double time_limit_s;
+};
+
+// One environment and robot count: the fixed and the dynamic row over every window, on the same
+// instances; their trials go into `cells`.
+void runWindowRows(const WindowSetting& at, Seed004Environment env, int robots,
+                   const std::vector<MapfInstance>& instances, WindowCells& cells, std::string& md,
+                   std::vector<JsonObject>& rows) {
+  const Options& options = at.options;
+  const int runs = at.runs;
+  for (const char* priorities : {"fixed", "dynamic"}) {
+    const bool dynamic = std::string(priorities) == "dynamic";
+    md += std::string("| ") + seed004EnvironmentName(env) + " | " + std::to_string(robots) + " | " +
+          (dynamic ? "dynamic (window widened up to max(w, " + std::to_string(robots) + "))"
+                   : std::string("fixed (window w)")) +
+          " |";
+    for (const int w : at.windows) {
+      MapfTrialSummary s;
+      std::vector<MapfTrial>& cell = cells[{env, robots, dynamic, w}];
+      for (int i = 0; i < runs; ++i) {
+        cell.push_back(runMapfTrial("whca_star",
+                                    {{"window", std::to_string(w)}, {"priorities", priorities}},
+                                    instances[i], at.time_limit_s, options.seed + i));
+        s.add(cell.back());
+      }
+      // append(): GCC 12 warns falsely (-Wrestrict) on " " + std::string.
+      md.append(" ")
+          .append(formatFixed(s.successPercent(), 0))
+          .append(" (")
+          .append(formatFixed(s.solved ? s.meanSumOfCosts() : NAN, 1))
+          .append(") |");
+      JsonObject row;
+      row.add("environment", seed004EnvironmentName(env))
+          .add("robots", robots)
+          .add("priorities", priorities)
+          .add("window", w);
+      rows.push_back(addMapfOutcome(row, s));
+    }
+    md += "\n";
+  }
+}
+
+}  // namespace
+
+Report seed004WhcaWindow(const Options& options) {
+  const int runs = options.runs > 0 ? options.runs : (options.quick ? 2 : 20);
+  const int size = 15;
+  const std::vector<int> robot_counts =
+      options.quick ? std::vector<int>{5} : std::vector<int>{2, 5, 10, 20};
+  const std::vector<int> windows =
+      options.quick ? std::vector<int>{4, 8} : std::vector<int>{2, 4, 8, 16, 32};
+  const double time_limit_s = options.quick ? 1.0 : 5.0;
+  std::string md = windowIntroduction(runs, size, windows, time_limit_s);
   std::vector<JsonObject> rows;
   WindowCells cells;
   std::vector<MapfInstance> drawn;  // the bottleneck instance of the map figure
+  const WindowSetting at{options, runs, windows, time_limit_s};
   for (const auto env :
        {Seed004Environment::kMaze, Seed004Environment::kOpen, Seed004Environment::kBottleneck})
     for (const int robots : robot_counts) {
@@ -187,40 +260,7 @@ Report seed004WhcaWindow(const Options& options) {
                                                  seed * 7919 + robots, 8));
       }
       if (env == Seed004Environment::kBottleneck && robots == 5) drawn = {instances[0]};
-      for (const char* priorities : {"fixed", "dynamic"}) {
-        const bool dynamic = std::string(priorities) == "dynamic";
-        md += std::string("| ") + seed004EnvironmentName(env) + " | " + std::to_string(robots) +
-              " | " +
-              (dynamic ? "dynamic (window widened up to max(w, " + std::to_string(robots) + "))"
-                       : std::string("fixed (window w)")) +
-              " |";
-        for (const int w : windows) {
-          MapfTrialSummary s;
-          std::vector<MapfTrial>& cell = cells[{env, robots, dynamic, w}];
-          for (int i = 0; i < runs; ++i) {
-            cell.push_back(runMapfTrial("whca_star",
-                                        {{"window", std::to_string(w)}, {"priorities", priorities}},
-                                        instances[i], time_limit_s, options.seed + i));
-            s.add(cell.back());
-          }
-          // append(): GCC 12 warns falsely (-Wrestrict) on " " + std::string.
-          md.append(" ")
-              .append(formatFixed(s.successPercent(), 0))
-              .append(" (")
-              .append(formatFixed(s.solved ? s.meanSumOfCosts() : NAN, 1))
-              .append(") |");
-          JsonObject row;
-          row.add("environment", seed004EnvironmentName(env))
-              .add("robots", robots)
-              .add("priorities", priorities)
-              .add("window", w)
-              .add("instances", s.runs)
-              .add("success_percent", s.successPercent())
-              .add("mean_sum_of_costs", s.solved ? s.meanSumOfCosts() : NAN);
-          rows.push_back(row);
-        }
-        md += "\n";
-      }
+      runWindowRows(at, env, robots, instances, cells, md, rows);
     }
   md.append("\n").append(windowMap(options, drawn, cells, windows));
   md += agreementSection(windowFindings(cells, robot_counts, windows, runs));

@@ -1,10 +1,10 @@
 #include "experiments/sweep/sweep_outputs.h"
 
 #include "core/atomic_file.h"
+#include "core/input_error.h"
 #include "experiments/sweep/sweep_results_table.h"
 #include "experiments/sweep/sweep_summary.h"
-#include "core/input_error.h"
-#include "render/figures.h"
+#include "render/comparison_chart.h"
 
 namespace cosim {
 

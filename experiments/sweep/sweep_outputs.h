@@ -1,8 +1,8 @@
 #pragma once
 // The merge step: results.csv (one row per finished job, by job id), summary.csv (statistics per
-// group) and figure.png/.svg (render/figures.h: the `output.figure` metric per scenario, one bar
-// per value of output.figure_by or the first non-seed varied key, mean with one standard
-// deviation), each written atomically into the sweep's folder.
+// group) and figure.png/.svg (render/comparison_chart.h: the `output.figure` metric per
+// scenario, one bar per value of output.figure_by or the first non-seed varied key, mean with one
+// standard deviation), each written atomically into the sweep's folder.
 #include <filesystem>
 #include <string>
 #include <vector>

@@ -65,6 +65,97 @@ RunningJob startJob(const SweepJob& job, const SweepRunOptions& o, std::size_t j
   return r;
 }
 
+// What the progress lines need: the tag, the start and every finished job's status, an earlier
+// invocation's included (the line counts "done" over both, and so must its "(40 ok)").
+struct SweepProgress {
+  const SweepRunOptions& o;
+  std::string tag;
+  Clock::time_point t0;
+  std::size_t job_count;
+  std::map<std::string, std::size_t> finished_statuses;
+};
+
+// The line after each finished job: done over the shard, by status, the rate and the ETA; a job
+// that neither succeeded nor failed is named with its log.
+void reportFinished(const SweepProgress& p, const SweepRunReport& report, const RunningJob& r,
+                    const std::string& status) {
+  const std::string& tag = p.tag;
+  if (status != "ok" && status != "failed")
+    std::cerr << tag << ": job " << sweepJobDirName(r.job->id, p.job_count) << " ("
+              << describe(*r.job) << ") " << status << "; log: " << (r.dir / "log.txt").string()
+              << "\n";
+  const std::size_t done = report.already_finished + report.ran;
+  const double elapsed = secondsSince(p.t0);
+  const double per_job = elapsed / static_cast<double>(report.ran);
+  const std::size_t left = report.in_shard - done;
+  std::string counts;
+  for (const auto& [name, n] : p.finished_statuses)
+    counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + name;
+  char rate[64];
+  std::snprintf(rate, sizeof rate, "%.1f jobs/min", 60.0 / per_job);
+  std::cerr << tag << ": " << done << "/" << report.in_shard << " done (" << counts << "), " << rate
+            << ", ETA " << duration(per_job * static_cast<double>(left)) << "\n";
+}
+
+// A job whose process has ended: its result.json, unless the runner stopped it before it could
+// finish (then a later invocation runs it again).
+void finishJob(const RunningJob& r, int wait_status, const std::string& build,
+               SweepProgress& progress, SweepRunReport& report) {
+  const bool exited_by_itself =
+      !r.stopped || (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0);
+  if (r.stopped && !exited_by_itself) {
+    ++report.unfinished;  // no result.json: a later invocation runs it again
+    return;
+  }
+  JobResult res;
+  res.job = r.job->id;
+  res.fingerprint = r.job->fingerprint;
+  res.scenario = r.job->scenario;
+  res.status = jobStatusName(classifyJobExit(wait_status, r.timed_out));
+  res.exit_code = wait_status != -1 && WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
+  res.signal = wait_status != -1 && WIFSIGNALED(wait_status) ? WTERMSIG(wait_status) : 0;
+  res.wall_time_s = secondsSince(r.started);
+  res.program_build = build;
+  writeJobResult(r.dir, res);
+  ++report.ran;
+  ++report.statuses[res.status];
+  ++progress.finished_statuses[res.status];
+  if (progress.o.progress) reportFinished(progress, report, r, res.status);
+}
+
+// A job still running: SIGTERM past the time limit, SIGKILL past the grace period after that
+// (a job that ignores SIGTERM).
+void watchJob(RunningJob& r, const SweepRunOptions& o) {
+  const double age = secondsSince(r.started);
+  if (!r.timed_out && !r.stopped && age > o.job_timeout_s) {
+    r.timed_out = true;
+    r.signalled = Clock::now();
+    r.child.signal(SIGTERM);
+  }
+  if ((r.timed_out || r.stopped) && !r.killed && secondsSince(r.signalled) > o.kill_grace_s) {
+    r.killed = true;
+    r.child.signal(SIGKILL);
+  }
+}
+
+// The jobs of the shard not finished by an earlier invocation; counts the shard and the finished
+// ones into `report` and `finished_statuses`.
+std::vector<const SweepJob*> pendingJobs(const std::vector<SweepJob>& jobs,
+                                         const SweepRunOptions& o, SweepRunReport& report,
+                                         std::map<std::string, std::size_t>& finished_statuses) {
+  std::vector<const SweepJob*> pending;
+  for (const auto& job : jobs) {
+    if (!o.shard.owns(job.id)) continue;
+    ++report.in_shard;
+    if (sweepJobFinished(sweepJobDir(o.out_dir, job, jobs.size()), job)) {
+      ++report.already_finished;
+      ++finished_statuses[readJobResult(sweepJobDir(o.out_dir, job, jobs.size()))->status];
+    } else
+      pending.push_back(&job);
+  }
+  return pending;
+}
+
 }  // namespace
 
 std::vector<std::string> sweepJobArguments(const SweepJob& job, const std::filesystem::path& dir,
@@ -96,23 +187,13 @@ bool sweepJobFinished(const std::filesystem::path& job_dir, const SweepJob& job)
 
 SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOptions& o) {
   SweepRunReport report;
-  const auto t0 = Clock::now();
-  std::vector<const SweepJob*> pending;
-  // Every finished job's status, an earlier invocation's included: the progress line counts
-  // "done" over both, and so must its "(40 ok)".
-  std::map<std::string, std::size_t> finished_statuses;
-  for (const auto& job : jobs) {
-    if (!o.shard.owns(job.id)) continue;
-    ++report.in_shard;
-    if (sweepJobFinished(sweepJobDir(o.out_dir, job, jobs.size()), job)) {
-      ++report.already_finished;
-      ++finished_statuses[readJobResult(sweepJobDir(o.out_dir, job, jobs.size()))->status];
-    } else
-      pending.push_back(&job);
-  }
-  const std::string tag = o.shard.whole() ? std::string("sweep")
-                                          : "sweep [shard " + std::to_string(o.shard.index) + "/" +
-                                                std::to_string(o.shard.count) + "]";
+  SweepProgress progress{o, "", Clock::now(), jobs.size(), {}};
+  const std::vector<const SweepJob*> pending =
+      pendingJobs(jobs, o, report, progress.finished_statuses);
+  progress.tag = o.shard.whole() ? std::string("sweep")
+                                 : "sweep [shard " + std::to_string(o.shard.index) + "/" +
+                                       std::to_string(o.shard.count) + "]";
+  const std::string& tag = progress.tag;
   const int parallel = std::max(1, o.jobs);
   if (o.progress)
     std::cerr << tag << ": " << report.in_shard << " jobs, " << report.already_finished
@@ -149,58 +230,11 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
       int wait_status = 0;
       if (r.child.finished(wait_status)) {
         reaped = true;
-        const bool exited_by_itself =
-            !r.stopped || (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0);
-        if (r.stopped && !exited_by_itself) {
-          ++report.unfinished;  // no result.json: a later invocation runs it again
-        } else {
-          JobResult res;
-          res.job = r.job->id;
-          res.fingerprint = r.job->fingerprint;
-          res.scenario = r.job->scenario;
-          res.status = jobStatusName(classifyJobExit(wait_status, r.timed_out));
-          res.exit_code =
-              wait_status != -1 && WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
-          res.signal = wait_status != -1 && WIFSIGNALED(wait_status) ? WTERMSIG(wait_status) : 0;
-          res.wall_time_s = secondsSince(r.started);
-          res.program_build = build;
-          writeJobResult(r.dir, res);
-          ++report.ran;
-          ++report.statuses[res.status];
-          ++finished_statuses[res.status];
-          if (o.progress) {
-            if (res.status != "ok" && res.status != "failed")
-              std::cerr << tag << ": job " << sweepJobDirName(r.job->id, jobs.size()) << " ("
-                        << describe(*r.job) << ") " << res.status
-                        << "; log: " << (r.dir / "log.txt").string() << "\n";
-            const std::size_t done = report.already_finished + report.ran;
-            const double elapsed = secondsSince(t0);
-            const double per_job = elapsed / static_cast<double>(report.ran);
-            const std::size_t left = report.in_shard - done;
-            std::string counts;
-            for (const auto& [name, n] : finished_statuses)
-              counts += (counts.empty() ? "" : ", ") + std::to_string(n) + " " + name;
-            char rate[64];
-            std::snprintf(rate, sizeof rate, "%.1f jobs/min", 60.0 / per_job);
-            std::cerr << tag << ": " << done << "/" << report.in_shard << " done (" << counts
-                      << "), " << rate << ", ETA " << duration(per_job * static_cast<double>(left))
-                      << "\n";
-          }
-        }
+        finishJob(r, wait_status, build, progress, report);
         running.erase(running.begin() + static_cast<long>(i));
         continue;
       }
-      const double age = secondsSince(r.started);
-      if (!r.timed_out && !r.stopped && age > o.job_timeout_s) {
-        r.timed_out = true;
-        r.signalled = Clock::now();
-        r.child.signal(SIGTERM);
-      }
-      // Past the grace period a job that ignores SIGTERM is killed.
-      if ((r.timed_out || r.stopped) && !r.killed && secondsSince(r.signalled) > o.kill_grace_s) {
-        r.killed = true;
-        r.child.signal(SIGKILL);
-      }
+      watchJob(r, o);
       ++i;
     }
     // A freed slot is filled at once; otherwise poll. Every millisecond a slot stands idle costs
@@ -208,7 +242,7 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
     if (!reaped && (!running.empty() || next < pending.size()))
       std::this_thread::sleep_for(std::chrono::milliseconds(2));
   }
-  report.wall_time_s = secondsSince(t0);
+  report.wall_time_s = secondsSince(progress.t0);
   if (o.progress && !report.interrupted)
     std::cerr << tag << ": finished " << report.ran << " job(s) in " << duration(report.wall_time_s)
               << "\n";

@@ -114,6 +114,76 @@ GeneratorSpec readGenerator(const YamlReader& r, const YAML::Node& n, const std:
   return g;
 }
 
+// scenarios: one file or a list, each found beside the sweep file or in the current directory.
+void readScenarioFiles(const YamlReader& r, const YAML::Node& list,
+                       const std::filesystem::path& file, SweepSpec& s) {
+  if (!list.IsSequence() && !list.IsScalar())
+    r.fail(list, "scenarios", "must be a list of scenario files");
+  const auto written = oneOrMany<std::pair<std::string, std::string>>(
+      list, "scenarios", [&](const YAML::Node& v, const std::string& k) {
+        return std::make_pair(r.text(v, k), r.place(v, k));
+      });
+  for (const auto& [w, place] : written) {
+    SweepScenarioFile f{w, resolveSweepScenarioPath(w, file), place};
+    if (f.path.empty())
+      throw InputError(
+          file.string(), place,
+          "scenario file not found: '" + w + "' (looked in " +
+              (file.parent_path().empty() ? std::string(".") : file.parent_path().string()) +
+              " and in the current directory)");
+    s.scenarios.push_back(f);
+  }
+}
+
+// vary: key -> list of values; `jobs` (the count so far) is multiplied by each list's length.
+void readVariables(const YamlReader& r, const YAML::Node& vary, std::size_t jobs, SweepSpec& s) {
+  r.requireMap(vary, "vary");
+  std::set<std::string> seen;
+  for (const auto& kv : vary) {
+    SweepVariable v;
+    v.key = kv.first.Scalar();
+    const std::string key = "vary." + v.key;
+    v.place = r.place(kv.first, key);
+    if (!isScenarioKey(v.key)) r.fail(kv.first, key, "not a scenario key (e.g. planner.name)");
+    if (!seen.insert(v.key).second) r.fail(kv.first, key, "listed twice");
+    const YAML::Node values = kv.second;
+    if (values.IsSequence()) {
+      if (values.size() == 0) r.fail(values, key, "needs at least one value");
+      for (const auto& x : values) v.values.push_back(overrideValue(x));
+    } else if (values.IsScalar() && !values.Scalar().empty()) {
+      v.values.push_back(values.Scalar());
+    } else {
+      r.fail(values, key, "must be a list of values, e.g. [astar, theta_star]");
+    }
+    jobs *= v.values.size();
+    if (jobs > kMaxJobs) r.fail(values, key, "the sweep would have more than 1000000 jobs");
+    s.vary.push_back(v);
+  }
+}
+
+// output: video, the figure's metric and the varied key it is drawn against.
+void readOutput(const YamlReader& r, const YAML::Node& o, SweepSpec& s) {
+  r.checkKeys(o, "output", {"video", "figure", "figure_by"});
+  if (o["video"]) s.video = r.boolean(o["video"], "output.video");
+  if (o["figure"]) s.figure_metric = r.text(o["figure"], "output.figure");
+  if (o["figure_by"]) {
+    s.figure_by = r.text(o["figure_by"], "output.figure_by");
+    bool varied = false;
+    for (const auto& v : s.vary) varied = varied || v.key == s.figure_by;
+    if (!varied)
+      r.fail(o["figure_by"], "output.figure_by", "'" + s.figure_by + "' is not a key under vary:");
+  }
+}
+
+// limits: a job's time limit and the grace before SIGKILL.
+void readLimits(const YamlReader& r, const YAML::Node& l, SweepSpec& s) {
+  r.checkKeys(l, "limits", {"job_timeout_s", "kill_grace_s"});
+  if (l["job_timeout_s"])
+    s.job_timeout_s = r.number(l["job_timeout_s"], "limits.job_timeout_s", 0.1, 1e7);
+  if (l["kill_grace_s"])
+    s.kill_grace_s = r.number(l["kill_grace_s"], "limits.kill_grace_s", 0.0, 600.0);
+}
+
 }  // namespace
 
 std::filesystem::path resolveSweepScenarioPath(const std::string& written,
@@ -145,25 +215,7 @@ SweepSpec parseSweepSpec(const std::string& text, const std::filesystem::path& f
   if (const std::string why = unsafeNameReason(s.name); !why.empty())
     r.fail(root["name"] ? root["name"] : root, "name",
            "'" + s.name + "' cannot name the sweep's folder: " + why);
-  if (root["scenarios"]) {
-    const YAML::Node list = root["scenarios"];
-    if (!list.IsSequence() && !list.IsScalar())
-      r.fail(list, "scenarios", "must be a list of scenario files");
-    const auto written = oneOrMany<std::pair<std::string, std::string>>(
-        list, "scenarios", [&](const YAML::Node& v, const std::string& k) {
-          return std::make_pair(r.text(v, k), r.place(v, k));
-        });
-    for (const auto& [w, place] : written) {
-      SweepScenarioFile f{w, resolveSweepScenarioPath(w, file), place};
-      if (f.path.empty())
-        throw InputError(
-            file.string(), place,
-            "scenario file not found: '" + w + "' (looked in " +
-                (file.parent_path().empty() ? std::string(".") : file.parent_path().string()) +
-                " and in the current directory)");
-      s.scenarios.push_back(f);
-    }
-  }
+  if (root["scenarios"]) readScenarioFiles(r, root["scenarios"], file, s);
   if (root["generators"]) {
     const YAML::Node list = root["generators"];
     if (!list.IsSequence())
@@ -176,59 +228,15 @@ SweepSpec parseSweepSpec(const std::string& text, const std::filesystem::path& f
 
   std::size_t jobs = s.scenarios.size();
   for (const auto& g : s.generators) jobs += g.densities.size() * g.seeds.size();
-  if (root["vary"]) {
-    const YAML::Node vary = root["vary"];
-    r.requireMap(vary, "vary");
-    std::set<std::string> seen;
-    for (const auto& kv : vary) {
-      SweepVariable v;
-      v.key = kv.first.Scalar();
-      const std::string key = "vary." + v.key;
-      v.place = r.place(kv.first, key);
-      if (!isScenarioKey(v.key)) r.fail(kv.first, key, "not a scenario key (e.g. planner.name)");
-      if (!seen.insert(v.key).second) r.fail(kv.first, key, "listed twice");
-      const YAML::Node values = kv.second;
-      if (values.IsSequence()) {
-        if (values.size() == 0) r.fail(values, key, "needs at least one value");
-        for (const auto& x : values) v.values.push_back(overrideValue(x));
-      } else if (values.IsScalar() && !values.Scalar().empty()) {
-        v.values.push_back(values.Scalar());
-      } else {
-        r.fail(values, key, "must be a list of values, e.g. [astar, theta_star]");
-      }
-      jobs *= v.values.size();
-      if (jobs > kMaxJobs) r.fail(values, key, "the sweep would have more than 1000000 jobs");
-      s.vary.push_back(v);
-    }
-  }
+  if (root["vary"]) readVariables(r, root["vary"], jobs, s);
   if (root["set"]) {
     flattenOverrides(r, root["set"], "", s.fixed);
     for (const auto& [k, value] : s.fixed)
       for (const auto& v : s.vary)
         if (v.key == k) r.fail(root["set"], "set." + k, "is also under vary:");
   }
-  if (root["output"]) {
-    const YAML::Node o = root["output"];
-    r.checkKeys(o, "output", {"video", "figure", "figure_by"});
-    if (o["video"]) s.video = r.boolean(o["video"], "output.video");
-    if (o["figure"]) s.figure_metric = r.text(o["figure"], "output.figure");
-    if (o["figure_by"]) {
-      s.figure_by = r.text(o["figure_by"], "output.figure_by");
-      bool varied = false;
-      for (const auto& v : s.vary) varied = varied || v.key == s.figure_by;
-      if (!varied)
-        r.fail(o["figure_by"], "output.figure_by",
-               "'" + s.figure_by + "' is not a key under vary:");
-    }
-  }
-  if (root["limits"]) {
-    const YAML::Node l = root["limits"];
-    r.checkKeys(l, "limits", {"job_timeout_s", "kill_grace_s"});
-    if (l["job_timeout_s"])
-      s.job_timeout_s = r.number(l["job_timeout_s"], "limits.job_timeout_s", 0.1, 1e7);
-    if (l["kill_grace_s"])
-      s.kill_grace_s = r.number(l["kill_grace_s"], "limits.kill_grace_s", 0.0, 600.0);
-  }
+  if (root["output"]) readOutput(r, root["output"], s);
+  if (root["limits"]) readLimits(r, root["limits"], s);
   return s;
 }
 

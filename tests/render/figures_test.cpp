@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "render/comparison_chart.h"
 #include "render_test_scene.h"
 
 using namespace cosim;

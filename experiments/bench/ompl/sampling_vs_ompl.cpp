@@ -216,79 +216,59 @@ struct Row {
   bool lower_is_target;  // ours <= OMPL is the target
 };
 
-}  // namespace
+// One planner setting: the registered planner, the table's label, its parameters, and whether
+// it is timed to its first solution (else: its path length after a fixed time).
+struct Job {
+  std::string planner, label;
+  std::vector<std::pair<std::string, std::string>> params;
+  bool first_solution;
+};
 
-int main(int argc, char** argv) {
-  bool quick = false;
-  int seeds = 0;
-  double fixed_time = 0;
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--quick")) {
-      quick = true;
-    } else if (!std::strcmp(argv[i], "--seeds") && i + 1 < argc) {
-      seeds = std::atoi(argv[++i]);
-    } else if (!std::strcmp(argv[i], "--time") && i + 1 < argc) {
-      fixed_time = std::atof(argv[++i]);
-    } else {
-      std::fprintf(stderr, "usage: %s [--quick] [--seeds N] [--time SECONDS]\n", argv[0]);
-      return 2;
-    }
-  }
-  if (seeds <= 0) seeds = quick ? 10 : 50;
-  if (fixed_time <= 0) fixed_time = quick ? 0.05 : 0.3;
-  const double first_limit = quick ? 2.0 : 10.0;
-  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
-  ompl::RNG::setSeed(1);  // OMPL seeds once per process; each run continues the stream
+std::vector<Job> benchJobs() {
+  const std::string bias = std::to_string(kGoalBias);
+  return {{"rrt", "rrt", {{"goal_bias", bias}, {"max_nodes", "10000000"}}, true},
+          {"rrt",
+           "rrt (goal_tolerance 0)",
+           {{"goal_bias", bias}, {"goal_tolerance", "0"}, {"max_nodes", "10000000"}},
+           true},
+          {"rrt_connect", "rrt_connect", {{"max_nodes", "10000000"}}, true},
+          {"rrt_star",
+           "rrt_star",
+           {{"goal_bias", bias}, {"mode", "2"}, {"rewire_radius", "0"}, {"max_nodes", "10000000"}},
+           false},
+          {"informed_rrt_star",
+           "informed_rrt_star",
+           {{"goal_bias", bias}, {"max_nodes", "10000000"}},
+           false}};
+}
 
-  std::vector<Row> rows;
-  for (const BenchWorld& b : benchWorlds()) {
-    const CollisionWorld cw(b.world, kInflation);
-    const std::string bias = std::to_string(kGoalBias);
-    struct Job {
-      std::string planner, label;
-      std::vector<std::pair<std::string, std::string>> params;
-      bool first_solution;
-    };
-    const std::vector<Job> jobs = {
-        {"rrt", "rrt", {{"goal_bias", bias}, {"max_nodes", "10000000"}}, true},
-        {"rrt",
-         "rrt (goal_tolerance 0)",
-         {{"goal_bias", bias}, {"goal_tolerance", "0"}, {"max_nodes", "10000000"}},
-         true},
-        {"rrt_connect", "rrt_connect", {{"max_nodes", "10000000"}}, true},
-        {"rrt_star",
-         "rrt_star",
-         {{"goal_bias", bias}, {"mode", "2"}, {"rewire_radius", "0"}, {"max_nodes", "10000000"}},
-         false},
-        {"informed_rrt_star",
-         "informed_rrt_star",
-         {{"goal_bias", bias}, {"max_nodes", "10000000"}},
-         false}};
-    for (const Job& job : jobs) {
-      Row row{
-          b.name,
+// One job on one world over `seeds` seeds, ours and (for jobs without a variant in brackets)
+// OMPL's.
+Row runJob(const BenchWorld& b, const CollisionWorld& cw, const Job& job, int seeds,
+           double first_limit, double fixed_time) {
+  Row row{b.name,
           job.label,
           job.first_solution ? "time to first solution [ms]" : "path length after fixed time [m]",
           {},
           {},
           true};
-      const double limit = job.first_solution ? first_limit : fixed_time;
-      for (int s = 0; s < seeds; ++s) {
-        const Outcome o = runOurs(b, job.planner, job.params, 1 + s, limit);
-        const Outcome q = job.label.find('(') == std::string::npos
-                              ? runOmpl(b, cw, job.planner, limit)
-                              : Outcome{};
-        for (auto [summary, out] : {std::pair{&row.ours, o}, std::pair{&row.ompl, q}}) {
-          ++summary->runs;
-          if (!out.success) continue;
-          ++summary->successes;
-          summary->values.push_back(job.first_solution ? out.time_ms : out.cost);
-        }
-      }
-      rows.push_back(row);
+  const double limit = job.first_solution ? first_limit : fixed_time;
+  for (int s = 0; s < seeds; ++s) {
+    const Outcome o = runOurs(b, job.planner, job.params, 1 + s, limit);
+    const Outcome q =
+        job.label.find('(') == std::string::npos ? runOmpl(b, cw, job.planner, limit) : Outcome{};
+    for (auto [summary, out] : {std::pair{&row.ours, o}, std::pair{&row.ompl, q}}) {
+      ++summary->runs;
+      if (!out.success) continue;
+      ++summary->successes;
+      summary->values.push_back(job.first_solution ? out.time_ms : out.cost);
     }
   }
+  return row;
+}
 
+// The markdown table and the verdict line.
+void printTable(const std::vector<Row>& rows, int seeds, double fixed_time, bool quick) {
   std::printf(
       "Sampling planners vs OMPL 1.5.2, same exact collision world (inflation %.1f m), "
       "%d seeds, fixed time %.2f s%s\n\n",
@@ -320,5 +300,38 @@ int main(int argc, char** argv) {
   }
   std::printf("\nTarget (ours <= OMPL and success >= OMPL's): %s on %d row(s)\n",
               missed ? "missed" : "met", missed ? missed : compared_rows);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool quick = false;
+  int seeds = 0;
+  double fixed_time = 0;
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--quick")) {
+      quick = true;
+    } else if (!std::strcmp(argv[i], "--seeds") && i + 1 < argc) {
+      seeds = std::atoi(argv[++i]);
+    } else if (!std::strcmp(argv[i], "--time") && i + 1 < argc) {
+      fixed_time = std::atof(argv[++i]);
+    } else {
+      std::fprintf(stderr, "usage: %s [--quick] [--seeds N] [--time SECONDS]\n", argv[0]);
+      return 2;
+    }
+  }
+  if (seeds <= 0) seeds = quick ? 10 : 50;
+  if (fixed_time <= 0) fixed_time = quick ? 0.05 : 0.3;
+  const double first_limit = quick ? 2.0 : 10.0;
+  ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
+  ompl::RNG::setSeed(1);  // OMPL seeds once per process; each run continues the stream
+
+  std::vector<Row> rows;
+  for (const BenchWorld& b : benchWorlds()) {
+    const CollisionWorld cw(b.world, kInflation);
+    for (const Job& job : benchJobs())
+      rows.push_back(runJob(b, cw, job, seeds, first_limit, fixed_time));
+  }
+  printTable(rows, seeds, fixed_time, quick);
   return 0;
 }
