@@ -56,9 +56,21 @@ fi
 # `run` builds only the program it runs and the Python module (not the test suite); `test` and
 # `build` build everything.
 case "${1:-build}" in
-  run)  cmake --build build -j"$JOBS" --target cosim _cosim
-        build/cosim run --out out/default ;;
-  test) cmake --build build -j"$JOBS"
-        ctest --test-dir build --output-on-failure -j"$JOBS" ;;
-  build) cmake --build build -j"$JOBS" ;;
+  run)  cmake --build build -j"$JOBS" --target cosim _cosim ;;
+  *)    cmake --build build -j"$JOBS" ;;
+esac
+# `import cosim` without PYTHONPATH: cosim.pth in the user's site-packages names build/python
+# (docs/python.md). Skipped where the interpreter the module is built for has user
+# site-packages off; PYTHONPATH=build/python works everywhere.
+PYTHON=/usr/bin/python3
+if [ -d build/python/cosim ] && [ -x "$PYTHON" ] &&
+   "$PYTHON" -c 'import site, sys; sys.exit(0 if site.ENABLE_USER_SITE else 1)'; then
+  user_site=$("$PYTHON" -m site --user-site)
+  mkdir -p "$user_site"
+  echo "$PWD/build/python" >"$user_site/cosim.pth.tmp"
+  mv "$user_site/cosim.pth.tmp" "$user_site/cosim.pth"
+fi
+case "${1:-build}" in
+  run)  build/cosim run --out out/default ;;
+  test) ctest --test-dir build --output-on-failure -j"$JOBS" ;;
 esac
