@@ -144,7 +144,7 @@ Report controllerStudy(const Options& options) {
     for (const StudyController& c : kControllers) rows.push_back(fly(c, v, options));
 
   const std::filesystem::path dir(options.out_dir);
-  // controller-study.json's rows (README, Reproductions) and the CSV behind the figure.
+  // controller-study.json's rows (docs/reproductions.md) and the CSV behind the figure.
   std::vector<JsonObject> json_rows;
   std::string csv = "controller,speed_mps,rmse_m,max_error_m,reached_goal,estimation_rmse_m\n";
   for (const Row& r : rows) {
