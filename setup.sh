@@ -60,15 +60,9 @@ case "${1:-build}" in
   *)    cmake --build build -j"$JOBS" ;;
 esac
 # `import cosim` without PYTHONPATH: cosim.pth in the user's site-packages names build/python
-# (docs/python.md). Skipped where the interpreter the module is built for has user
-# site-packages off; PYTHONPATH=build/python works everywhere.
-PYTHON=/usr/bin/python3
-if [ -d build/python/cosim ] && [ -x "$PYTHON" ] &&
-   "$PYTHON" -c 'import site, sys; sys.exit(0 if site.ENABLE_USER_SITE else 1)'; then
-  user_site=$("$PYTHON" -m site --user-site)
-  mkdir -p "$user_site"
-  echo "$PWD/build/python" >"$user_site/cosim.pth.tmp"
-  mv "$user_site/cosim.pth.tmp" "$user_site/cosim.pth"
+# (docs/python.md).
+if [ -d build/python/cosim ] && [ -x /usr/bin/python3 ]; then
+  python/install_user_path.sh build/python
 fi
 case "${1:-build}" in
   run)  build/cosim run --out out/default ;;
