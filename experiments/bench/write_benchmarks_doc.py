@@ -189,7 +189,8 @@ def main():
     if not os.access(args.cosim, os.X_OK):
         sys.exit(f"write_benchmarks_doc: {args.cosim}: not an executable; build cosim first")
     # SIGTERM as an exception: the running command is killed and the scratch folder removed.
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit("write_benchmarks_doc: stopped; nothing written"))
+    signal.signal(signal.SIGTERM,
+                  lambda *_: sys.exit("write_benchmarks_doc: stopped; nothing written"))
     started = datetime.datetime.now(datetime.timezone.utc)
     load_before = os.getloadavg()
     m = machine()
