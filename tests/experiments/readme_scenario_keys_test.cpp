@@ -150,7 +150,8 @@ TEST(ReadmeScenarioKeys, EverySectionListsExactlyTheKeysTheLoaderAccepts) {
     ASSERT_NE(row, table.end()) << kKeyReference << "'s key table has no row " << label;
     const std::set<std::string> accepted = loaderKeys(path);
     EXPECT_FALSE(accepted.empty()) << label;
-    EXPECT_EQ(row->second, accepted) << kKeyReference << " row " << label << " differs from the loader";
+    EXPECT_EQ(row->second, accepted)
+        << kKeyReference << " row " << label << " differs from the loader";
   }
 }
 
@@ -169,7 +170,8 @@ TEST(ReadmeScenarioKeys, TrajectoryRowsListTheParametersTheFlightReads) {
   const auto table = keyReferenceTable();
   for (const std::string mode : {"minimum_snap", "waypoints"}) {
     const auto row = table.find("`trajectory` (" + mode + ")");
-    ASSERT_NE(row, table.end()) << kKeyReference << "'s key table has no row for trajectory " << mode;
+    ASSERT_NE(row, table.end()) << kKeyReference << "'s key table has no row for trajectory "
+                                << mode;
     EXPECT_EQ(row->second, trajectoryKeys(mode)) << mode;
   }
 }
