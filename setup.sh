@@ -56,9 +56,15 @@ fi
 # `run` builds only the program it runs and the Python module (not the test suite); `test` and
 # `build` build everything.
 case "${1:-build}" in
-  run)  cmake --build build -j"$JOBS" --target cosim _cosim
-        build/cosim run --out out/default ;;
-  test) cmake --build build -j"$JOBS"
-        ctest --test-dir build --output-on-failure -j"$JOBS" ;;
-  build) cmake --build build -j"$JOBS" ;;
+  run)  cmake --build build -j"$JOBS" --target cosim _cosim ;;
+  *)    cmake --build build -j"$JOBS" ;;
+esac
+# `import cosim` without PYTHONPATH: cosim.pth in the user's site-packages names build/python
+# (docs/python.md).
+if [ -d build/python/cosim ] && [ -x /usr/bin/python3 ]; then
+  python/install_user_path.sh build/python
+fi
+case "${1:-build}" in
+  run)  build/cosim run --out out/default ;;
+  test) ctest --test-dir build --output-on-failure -j"$JOBS" ;;
 esac

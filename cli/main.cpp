@@ -1,4 +1,4 @@
-// cosim: plan, fly, evaluate and render. See README.md for the commands.
+// cosim: plan, fly, evaluate and render. See README.md and docs/commands.md.
 #include <csignal>
 #include <cstdio>
 #include <exception>

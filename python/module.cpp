@@ -1,5 +1,5 @@
 // The extension behind `import cosim` (python/cosim/__init__.py re-exports it). The API is
-// The Python API (README, "Python"): cosim.run, cosim.plan, cosim.Simulation, cosim.InputError.
+// The Python API (docs/python.md): cosim.run, cosim.plan, cosim.Simulation, cosim.InputError.
 #include "python/bindings.h"
 #include "python/overrides.h"
 #include "python/unknown_vehicle_error.h"
@@ -8,7 +8,7 @@
 PYBIND11_MODULE(_cosim, m) {
   m.doc() =
       "cosim: plan, fly and evaluate scenarios of the cosim co-simulator from Python "
-      "(see README.md, section Python).";
+      "(see docs/python.md).";
   // MuJoCo's warnings to stderr as the program prints them, not to MUJOCO_LOG.TXT in the
   // caller's folder.
   cosim::installMujocoMessageHandlers();

@@ -1,5 +1,5 @@
-"""Start-up hook for interpreters run with PYTHONPATH=build/python (the README's way to use
-cosim from Python).
+"""Start-up hook for interpreters that find build/python through PYTHONPATH or the cosim.pth file
+setup.sh writes (docs/python.md).
 
 Python's `site` module imports the first `sitecustomize` on sys.path at start-up, before the
 script runs. The extension is built against Debian's Python 3.11, whose NumPy lives in

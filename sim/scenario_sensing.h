@@ -1,6 +1,6 @@
 #pragma once
-// Reading a scenario's `sensors:`, `estimator:` and `model_error:` sections (README,
-// "Sensing, estimation, vehicle realism"); part of sim/scenario_loader.cpp, kept apart because
+// Reading a scenario's `sensors:`, `estimator:` and `model_error:` sections (docs/flight_model.md,
+// "Sensors", "Estimator", "Model error"); part of sim/scenario_loader.cpp, kept apart because
 // it is one concept: what the flight software knows and believes.
 //
 //   sensors: {preset: mocap}                  # ideal | mocap | onboard

@@ -1,5 +1,5 @@
 #pragma once
-// The two files every reproduction writes (README, "Reproductions"): DIR/NAME.md, the report,
+// The two files every reproduction writes (docs/reproductions.md): DIR/NAME.md, the report,
 // and DIR/NAME.json, {"experiment": NAME, "quick": ..., "seed": ..., "rows": [...]}.
 // A --quick run is a smoke test, not the reproduction's result, and both files say so.
 #include <string>

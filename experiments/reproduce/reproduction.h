@@ -1,7 +1,7 @@
 #pragma once
 // `cosim reproduce NAME` runs one of the seed documents' experiments and writes a markdown table
 // that sets the seed's published numbers beside ours (NAME.md), and the same cells as data
-// (NAME.json, README "Reproductions"). Each reproduction lives in its own file here and is
+// (NAME.json, docs/reproductions.md). Each reproduction lives in its own file here and is
 // listed once in cli/cmd_reproduce.cpp; report_files.h writes both files.
 #include <cstdint>
 #include <string>

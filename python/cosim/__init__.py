@@ -6,7 +6,7 @@
     p = cosim.plan("scenario.yaml", planner="rrt_connect")
     sim = cosim.Simulation("scenario.yaml")
 
-See README.md, section "Python", and help() of each function and class.
+See docs/python.md and help() of each function and class.
 """
 
 try:

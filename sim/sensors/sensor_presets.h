@@ -1,6 +1,6 @@
 #pragma once
-// The named sensor suites of a scenario's `sensors: {preset: NAME}` (README, "Sensing,
-// estimation, vehicle realism"): "ideal" (no sensor; the controller reads the exact state),
+// The named sensor suites of a scenario's `sensors: {preset: NAME}` (docs/flight_model.md,
+// "Sensors"): "ideal" (no sensor; the controller reads the exact state),
 // "mocap" (an IMU plus a motion-capture pose) and "onboard" (an IMU plus a GPS-class position).
 // Every number and its source are in sensor_presets.cpp.
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
-// What a scenario's `sensors:` and `estimator:` sections ask for (README, "Sensing,
-// estimation, vehicle realism"). Presets and the source of each default are in
+// What a scenario's `sensors:` and `estimator:` sections ask for (docs/flight_model.md,
+// "Sensors" and "Estimator"). Presets and the source of each default are in
 // sim/sensors/sensor_presets.cpp; the sensor models in sim/sensors/imu_sensor.h and
 // sim/sensors/pose_sensor.h.
 #include <string>

@@ -1,7 +1,7 @@
 // End to end: bad inputs of every kind (malformed, truncated, wrong types, huge numbers, NaN,
 // unreachable, overlapping, empty) make the built program exit 2 (bad input) or 1 (task failed)
 // with one stderr line naming the problem, and never leave a result file that looks finished.
-// The README's "Bad inputs and faults" table lists these cases.
+// docs/robustness.md's bad-input table lists these cases.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <sys/stat.h>

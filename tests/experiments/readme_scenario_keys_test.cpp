@@ -1,8 +1,8 @@
-// The README's scenario reference ("Every key") cannot drift from the loader: each of its rows
-// lists exactly the keys the loader accepts in that section (asked of the loader itself, through
-// the "allowed: ..." list of an unknown key), and the trajectory rows exactly the parameters the
-// flight reads. A key added to the loader but not to the README fails here, and so does a key the
-// README still lists after the loader dropped it.
+// The scenario key reference (docs/scenario_keys.md, "Every key") cannot drift from the loader:
+// each of its rows lists exactly the keys the loader accepts in that section (asked of the loader
+// itself, through the "allowed: ..." list of an unknown key), and the trajectory rows exactly the
+// parameters the flight reads. A key added to the loader but not to the reference fails here, and
+// so does a key the reference still lists after the loader dropped it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,6 +22,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The user documentation's scenario key reference, relative to the project.
+const char* const kKeyReference = "docs/scenario_keys.md";
+
 // A scenario with one obstacle of each kind and two moving obstacles, so every section can be
 // reached (moving obstacles with a quadrotor only are refused later, by the run, not the loader).
 const std::string kScenario =
@@ -36,7 +39,7 @@ const std::string kScenario =
     "    - {type: box, size: [0.5, 0.5, 1], path: [[17, 10]]}\n"
     "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [18, 18, 1]}]\n";
 
-// The README row label of each section, and the path under which an unknown key is set there.
+// The reference's row label of each section, and the path under which an unknown key is set there.
 const std::vector<std::pair<std::string, std::string>> kLoaderSections = {
     {"(top level)", ""},
     {"`world`", "world"},
@@ -116,12 +119,14 @@ std::set<std::string> trajectoryKeys(const std::string& mode) {
   return keys;
 }
 
-// The README's "Every key" table: row label -> the backquoted names of its second column.
-std::map<std::string, std::set<std::string>> readmeKeyTable() {
-  const std::string readme = slurp(fs::path(COSIM_SOURCE_DIR) / "README.md");
-  const auto start = readme.find("#### Every key");
-  EXPECT_NE(start, std::string::npos) << "README.md has no '#### Every key' table";
-  const std::string section = readme.substr(start, readme.find("\n###", start + 4) - start);
+// The reference's "Every key" table (from its heading to the next heading): row label -> the
+// backquoted names of its second column.
+std::map<std::string, std::set<std::string>> keyReferenceTable() {
+  const std::string doc = slurp(fs::path(COSIM_SOURCE_DIR) / kKeyReference);
+  const auto start = doc.find("\n## Every key\n");
+  EXPECT_NE(start, std::string::npos) << kKeyReference << " has no '## Every key' table";
+  if (start == std::string::npos) return {};
+  const std::string section = doc.substr(start, doc.find("\n#", start + 4) - start);
   std::map<std::string, std::set<std::string>> table;
   std::stringstream lines(section);
   const std::regex quoted("`([^`]+)`");
@@ -139,32 +144,34 @@ std::map<std::string, std::set<std::string>> readmeKeyTable() {
 }
 
 TEST(ReadmeScenarioKeys, EverySectionListsExactlyTheKeysTheLoaderAccepts) {
-  const auto table = readmeKeyTable();
+  const auto table = keyReferenceTable();
   for (const auto& [label, path] : kLoaderSections) {
     const auto row = table.find(label);
-    ASSERT_NE(row, table.end()) << "README.md's key table has no row " << label;
+    ASSERT_NE(row, table.end()) << kKeyReference << "'s key table has no row " << label;
     const std::set<std::string> accepted = loaderKeys(path);
     EXPECT_FALSE(accepted.empty()) << label;
-    EXPECT_EQ(row->second, accepted) << "README.md row " << label << " differs from the loader";
+    EXPECT_EQ(row->second, accepted)
+        << kKeyReference << " row " << label << " differs from the loader";
   }
 }
 
 TEST(ReadmeScenarioKeys, EveryTopLevelSectionHasARow) {
-  const auto table = readmeKeyTable();
+  const auto table = keyReferenceTable();
   for (const std::string& key : loaderKeys("")) {
     const bool has_row = std::any_of(table.begin(), table.end(), [&key](const auto& row) {
       return row.first.rfind("`" + key + "`", 0) == 0 || row.first.rfind("`" + key + ".", 0) == 0 ||
              row.first.rfind("`" + key + "[", 0) == 0;
     });
-    EXPECT_TRUE(has_row) << "README.md's key table has no row for section " << key;
+    EXPECT_TRUE(has_row) << kKeyReference << "'s key table has no row for section " << key;
   }
 }
 
 TEST(ReadmeScenarioKeys, TrajectoryRowsListTheParametersTheFlightReads) {
-  const auto table = readmeKeyTable();
+  const auto table = keyReferenceTable();
   for (const std::string mode : {"minimum_snap", "waypoints"}) {
     const auto row = table.find("`trajectory` (" + mode + ")");
-    ASSERT_NE(row, table.end()) << "README.md's key table has no row for trajectory " << mode;
+    ASSERT_NE(row, table.end()) << kKeyReference << "'s key table has no row for trajectory "
+                                << mode;
     EXPECT_EQ(row->second, trajectoryKeys(mode)) << mode;
   }
 }

@@ -1,4 +1,4 @@
-// What every `cosim reproduce` writes (README "Reproductions": NAME.md and NAME.json, a
+// What every `cosim reproduce` writes (docs/reproductions.md: NAME.md and NAME.json, a
 // --quick run marked in both), and the rebuilt maps the seed-002 reproductions stand on: their
 // structure is what makes the reproductions comparable with the seed, so it is pinned here.
 #include <gtest/gtest.h>

@@ -215,7 +215,7 @@ TEST_F(SweepCommandTest, AnInterruptedSweepResumesWithoutDuplicatedOrTruncatedRo
 namespace cosim {
 namespace {
 
-// The README's sweep example names the bundled forest and canyon scenarios (paths relative to
+// A sweep naming the bundled forest and canyon scenarios (paths relative to
 // the project); with one planner and one seed it is two jobs, both flown to the goal.
 TEST(SweepContractExample, TheContractsForestAndCanyonExampleRunsFromTheProjectFolder) {
   const fs::path dir = test::freshDir("sweep-contract-example");
