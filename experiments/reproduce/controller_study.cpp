@@ -134,7 +134,7 @@ void writeStudyChart(const std::vector<Row>& rows, const std::filesystem::path& 
   scratch.publish("chart");
 }
 
-// controller-study.json's rows (README, Reproductions); writes the CSV behind the figure.
+// controller-study.json's rows (docs/reproductions.md); writes the CSV behind the figure.
 std::vector<JsonObject> studyRows(const std::vector<Row>& rows, const std::filesystem::path& dir) {
   std::vector<JsonObject> json_rows;
   std::string csv = "controller,speed_mps,rmse_m,max_error_m,reached_goal,estimation_rmse_m\n";
