@@ -219,7 +219,7 @@ Report seed000Sacodm(const Options& options) {
       q.start = scene->start;
       q.goal = scene->goal;
       q.seed = seed + i;
-      const GridPlanResult r = saco.solveGrid(q);
+      const GridPlanResult r = saco.solveGrid(q, StopToken::untimed());
       if (!r.success) continue;
       ++n;
       raw_sum += r.counters.at("first_walk_raw_length");
