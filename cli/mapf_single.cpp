@@ -177,8 +177,7 @@ int runSingleMapf(const MapfArgs& a, int agents) {
   query.instance = &inst;
   query.time_limit_s = a.time_limit;
   query.seed = a.seed;
-  query.stop = &interrupt;
-  const MapfResult result = planner->solve(query);
+  const MapfResult result = planner->solve(query, StopToken::untimed(&interrupt));
   // A planner ended by the stop request says so; a request that came after it returned is an
   // interrupt all the same: either way its outcome is no result.
   if (result.status == PlannerStatus::Stopped || interrupt.load()) {

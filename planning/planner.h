@@ -41,7 +41,10 @@ class Planner {
  public:
   virtual ~Planner() = default;
   virtual std::string name() const = 0;
-  virtual PlanResult solve(const PlanningProblem& problem) = 0;
+  // `stop` is the caller's StopToken (its own deadline and stop request; StopToken::untimed()
+  // when it has none): the search ends when it expires or at problem.time_limit_s, whichever
+  // comes first.
+  virtual PlanResult solve(const PlanningProblem& problem, const StopToken& stop) = 0;
 };
 
 }  // namespace cosim

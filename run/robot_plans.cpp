@@ -128,7 +128,7 @@ void planTeam(const Scenario& s, const RunSetup& setup, const WorldModel& world,
   query.instance = &instance;
   query.time_limit_s = g.time_limit;
   query.seed = s.sim.seed;
-  const MapfResult r = given ? *given : planner->solve(query);
+  const MapfResult r = given ? *given : planner->solve(query, StopToken::untimed());
   plans.summary.time_ms = r.time_ms;
   plans.summary.counters = r.counters;
   const MapfValidation check = validateMapfSolution(instance, r.paths);

@@ -42,7 +42,7 @@ VehiclePlan planVehicle(const Scenario& scenario, const PlannerSection& section,
     problem.time_limit_s = std::max(1e-3, time_limit - deadline.elapsedMs() / 1000.0);
     PlanResult r;
     try {
-      r = planner->solve(problem);
+      r = planner->solve(problem, StopToken::untimed());
     } catch (const InputError& e) {
       throw e.inFile(scenario.file);  // e.g. the planner's grid is too large for the world
     }

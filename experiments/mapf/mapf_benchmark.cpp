@@ -104,8 +104,7 @@ void runOne(MapfPlanner& planner, const MapfInstance& inst, const MapfBenchmarkS
   query.instance = &inst;
   query.time_limit_s = s.time_limit_s;
   query.seed = s.seed;
-  query.stop = s.stop;
-  const MapfResult result = planner.solve(query);
+  const MapfResult result = planner.solve(query, StopToken::untimed(s.stop));
   const MapfValidation check =
       result.paths.empty() ? MapfValidation{} : validateMapfSolution(inst, result.paths);
   r.success = result.success && check.valid();

@@ -22,7 +22,7 @@ MapfTrial runMapfTrial(const std::string& planner,
   query.instance = &instance;
   query.time_limit_s = time_limit_s;
   query.seed = seed;
-  const MapfResult result = algorithm->solve(query);
+  const MapfResult result = algorithm->solve(query, StopToken::untimed());
   const MapfValidation check = validateMapfSolution(instance, result.paths);
   MapfTrial trial;
   trial.solved = result.success && check.valid();

@@ -207,7 +207,7 @@ Fig65 firstWalks(const Seed000Scene* scene, int runs, std::uint64_t seed) {
     q.start = scene->start;
     q.goal = scene->goal;
     q.seed = seed + i;
-    const GridPlanResult r = saco.solveGrid(q);
+    const GridPlanResult r = saco.solveGrid(q, StopToken::untimed());
     if (!r.success) continue;
     ++n;
     raw_sum += r.counters.at("first_walk_raw_length");

@@ -66,14 +66,14 @@ GridPlanResult solve(const Method& m, const Seed002Workspace& w, const GridQuery
     p.heading = m.thesis ? AntHeading::Turn : AntHeading::TurnAndGoal;
     // The slides' per-move local evaporation (step 3) gives no factor: the global one, 0.1.
     p.local_evaporation = m.thesis ? p.evaporation : 0.0;
-    return AntGrid(p).solveGrid(q);
+    return AntGrid(p).solveGrid(q, StopToken::untimed());
   }
   GeneticAlgorithmParams p;
   p.population = w.population;
   p.generations = std::max(1, w.generations / effort_divisor);
   p.guided_initial = !m.thesis;
   p.shortening_mutation = !m.thesis;
-  return GeneticAlgorithm(p).solveGrid(q);
+  return GeneticAlgorithm(p).solveGrid(q, StopToken::untimed());
 }
 
 // What the whole study adds up to, for the findings: per workspace the optimum of each query,

@@ -94,7 +94,7 @@ MapResult runMap(const GridQuery& q, int runs) {
   for (int p = 0; p < kPlanners; ++p) {
     Measured& m = out.ours[p];
     for (int r = 0; r < runs; ++r) {
-      const GridPlanResult res = planners[p]->solveGrid(q);
+      const GridPlanResult res = planners[p]->solveGrid(q, StopToken::untimed());
       m.success = res.success;
       m.length = res.length;
       m.cells = res.cells;

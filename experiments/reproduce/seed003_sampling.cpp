@@ -88,7 +88,7 @@ Samples runColumn(const Seed003SamplingTable& t, const Seed003Map& map, const Co
     prob.planar = map.planar;
     prob.time_limit_s = 60.0;
     prob.seed = options.seed + static_cast<std::uint64_t>(i);
-    const PlanResult r = solver->solve(prob);
+    const PlanResult r = solver->solve(prob, StopToken::untimed());
     ++s.runs;
     s.times_ms.push_back(r.time_ms);
     auto counter = [&](const char* k) { return r.counters.count(k) ? r.counters.at(k) : 0.0; };

@@ -4,8 +4,8 @@
 
 namespace cosim {
 
-GridPlanResult AStar::solveGrid(const GridQuery& query) {
-  const StopToken clock(query.time_limit_s);
+GridPlanResult AStar::solveGrid(const GridQuery& query, const StopToken& stop) {
+  const StopToken clock(query.time_limit_s, stop);
   if (GridPlanResult rejected; gridQueryRejected(query, rejected)) return rejected;
   const GridMoves moves = resolveGridMoves(options_.moves, query.grid->is3D(), params_file_);
   const GridSearchSpace space(*query.grid, moves, query.segments);
@@ -41,7 +41,7 @@ GridPlanResult planAStar(const OccupancyGrid& grid, const Cell& start, const Cel
   q.start = start;
   q.goal = goal;
   q.time_limit_s = time_limit_s;
-  return astar.solveGrid(q);
+  return astar.solveGrid(q, StopToken::untimed());
 }
 
 }  // namespace cosim

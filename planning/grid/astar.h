@@ -22,7 +22,7 @@ class AStar : public GridPlanner {
       : options_(options), params_file_(std::move(params_file)) {}
 
   std::string name() const override { return "astar"; }
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
   bool checksSegments() const override { return true; }
 
  private:

@@ -17,7 +17,7 @@ class BasicThetaStar : public GridPlanner {
       : moves_(moves), params_file_(std::move(params_file)) {}
 
   std::string name() const override { return "theta_star"; }
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
   bool checksSegments() const override { return true; }
 
  private:

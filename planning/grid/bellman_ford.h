@@ -21,7 +21,7 @@ class BellmanFord : public GridPlanner {
       : moves_(moves), params_file_(std::move(params_file)) {}
 
   std::string name() const override { return "bellman_ford"; }
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
   bool checksSegments() const override { return true; }
 
  private:

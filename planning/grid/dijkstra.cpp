@@ -4,8 +4,8 @@
 
 namespace cosim {
 
-GridPlanResult Dijkstra::solveGrid(const GridQuery& query) {
-  const StopToken clock(query.time_limit_s);
+GridPlanResult Dijkstra::solveGrid(const GridQuery& query, const StopToken& stop) {
+  const StopToken clock(query.time_limit_s, stop);
   if (GridPlanResult rejected; gridQueryRejected(query, rejected)) return rejected;
   const GridSearchSpace space(
       *query.grid, resolveGridMoves(moves_, query.grid->is3D(), params_file_), query.segments);

@@ -15,7 +15,7 @@ class Dijkstra : public GridPlanner {
       : moves_(moves), params_file_(std::move(params_file)) {}
 
   std::string name() const override { return "dijkstra"; }
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
   bool checksSegments() const override { return true; }
 
  private:

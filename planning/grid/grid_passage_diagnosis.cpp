@@ -99,13 +99,14 @@ WidestPassage widestPassage(const World& world, const OccupancyGrid& layout, con
 
 std::string explainNoGridPath(const World& world, const OccupancyGrid& grid, const Cell& start,
                               const Cell& goal, double inflation, bool planar,
-                              const std::string& search_message, const char* blocking_name) {
+                              bool search_exhausted, const std::string& search_message,
+                              const char* blocking_name) {
   const double r = grid.cellSize();
   const std::string where =
       format("at resolution %g m, obstacles inflated by %g m (vehicle radius + margin)", r,
              inflation) +
       ", cell_blocking " + blocking_name;
-  if (search_message != "no path") return search_message + " " + where;
+  if (!search_exhausted) return search_message + " " + where;
   // Look a little beyond the inflation: enough to tell "too narrow" from "too coarse".
   const WidestPassage p = widestPassage(world, grid, start, goal, planar, inflation + 2.0 * r);
   if (!p.joined)

@@ -23,10 +23,12 @@ WidestPassage widestPassage(const World& world, const OccupancyGrid& layout, con
                             const Cell& goal, bool planar, double cap);
 
 // What a grid planner on `grid` reports when it found no path. `search_message` is the search's
-// own ("no path", "time limit"); `blocking_name` is the cell_blocking mode in force.
+// own ("no path", "time limit"); when the search was exhausted (GridPlanResult::exhausted) the
+// message says why no path exists; `blocking_name` is the cell_blocking mode in force.
 std::string explainNoGridPath(const World& world, const OccupancyGrid& grid, const Cell& start,
                               const Cell& goal, double inflation, bool planar,
-                              const std::string& search_message, const char* blocking_name);
+                              bool search_exhausted, const std::string& search_message,
+                              const char* blocking_name);
 
 // Why the start or goal cell is blocked: its centre's distance to the nearest obstacle against
 // the inflation. `which` is "start" or "goal"; p is the exact point.

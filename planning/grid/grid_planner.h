@@ -54,13 +54,18 @@ struct GridPlanResult {
   double time_ms = 0.0;
   std::map<std::string, double> counters;  // expansions, los_checks, iterations, ...
   std::string message;                     // why it failed, empty on success
+  // The search covered every cell it could reach without finding the goal: a complete "no path"
+  // (not a time limit, and not a navigator that gave up), which GridWorldPlanner explains.
+  bool exhausted = false;
 };
 
 class GridPlanner {
  public:
   virtual ~GridPlanner() = default;
   virtual std::string name() const = 0;
-  virtual GridPlanResult solveGrid(const GridQuery& query) = 0;
+  // `stop`: the caller's StopToken, as for Planner::solve (the search also ends at
+  // query.time_limit_s).
+  virtual GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) = 0;
   // True if solveGrid honours GridQuery::segments (then worlds may be voxelised with
   // OccupancyGrid::Blocking::Exact); the others get the conservative AnyPoint grid.
   virtual bool checksSegments() const { return false; }

@@ -54,6 +54,7 @@ GridPlanResult gridSearchResult(const GridSearchSpace& space,
   } else {
     r.status = PlannerStatus::NoSolution;
     r.message = "no path";
+    r.exhausted = true;
   }
   r.time_ms = clock.elapsedMs();
   return r;

@@ -24,8 +24,8 @@ const char* blockingName(OccupancyGrid::Blocking b) {
 }
 }  // namespace
 
-PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
-  const StopToken clock(problem.time_limit_s);
+PlanResult GridWorldPlanner::solve(const PlanningProblem& problem, const StopToken& stop) {
+  const StopToken clock(problem.time_limit_s, stop);
   const double plane_z = problem.start.z();
   const OccupancyGrid grid = OccupancyGrid::fromWorld(
       *problem.world, resolution_, problem.inflation, problem.planar, plane_z, blocking_);
@@ -79,14 +79,14 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem) {
       return finish();
     }
 
-  GridPlanResult g = planner_->solveGrid(query);
+  GridPlanResult g = planner_->solveGrid(query, stop);
   for (const auto& [k, v] : g.counters) result.counters[k] = v;
   result.success = g.success;
   result.status = g.status;
   if (!g.success)
     result.message =
         explainNoGridPath(*problem.world, grid, query.start, query.goal, problem.inflation,
-                          problem.planar, g.message, blockingName(blocking_));
+                          problem.planar, g.exhausted, g.message, blockingName(blocking_));
   if (g.success) {
     // Every segment between centres was checked by the planner (an any-angle segment from the
     // exact point itself could clip a blocked cell).

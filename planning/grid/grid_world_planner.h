@@ -20,7 +20,7 @@ class GridWorldPlanner : public Planner {
                    OccupancyGrid::Blocking blocking = OccupancyGrid::Blocking::AnyPoint)
       : planner_(std::move(planner)), resolution_(resolution), blocking_(blocking) {}
   std::string name() const override { return planner_->name(); }
-  PlanResult solve(const PlanningProblem& problem) override;
+  PlanResult solve(const PlanningProblem& problem, const StopToken& stop) override;
 
  private:
   std::unique_ptr<GridPlanner> planner_;

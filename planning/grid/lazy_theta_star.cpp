@@ -6,9 +6,9 @@
 
 namespace cosim {
 
-GridPlanResult LazyThetaStar::solveGrid(const GridQuery& query) {
+GridPlanResult LazyThetaStar::solveGrid(const GridQuery& query, const StopToken& stop) {
   using State = GridNodeTable<double>::State;
-  const StopToken clock(query.time_limit_s);
+  const StopToken clock(query.time_limit_s, stop);
   if (GridPlanResult rejected; gridQueryRejected(query, rejected)) return rejected;
   const GridSearchSpace space(
       *query.grid, resolveGridMoves(moves_, query.grid->is3D(), params_file_), query.segments);

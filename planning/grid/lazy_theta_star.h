@@ -28,7 +28,7 @@ class LazyThetaStar : public GridPlanner {
       : moves_(moves), params_file_(std::move(params_file)), variant_(variant) {}
 
   std::string name() const override { return "lazy_theta_star"; }
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
   bool checksSegments() const override { return true; }
 
  private:

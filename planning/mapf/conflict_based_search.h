@@ -9,21 +9,18 @@
 // "Don't split, try to work it out: bypassing conflicts in multi-agent pathfinding", ICAPS 2015):
 // a child with the parent's cost and fewer conflicts replaces the parent's path instead of
 // branching. Both keep the sum of costs optimal.
+// The search itself is CbsSearch (cbs_search.h); this planner gives it the instance's grid and
+// heuristics and turns its typed outcome into the MapfResult.
+#include "planning/mapf/cbs_search.h"
 #include "planning/mapf/mapf_planner.h"
 
 namespace cosim {
-
-struct ConflictBasedSearchOptions {
-  long max_nodes = 50'000;          // constraint-tree nodes; bounds memory
-  long max_expansions = 1'000'000;  // per low-level search
-  bool bypass = true;
-};
 
 class ConflictBasedSearch final : public MapfPlanner {
  public:
   explicit ConflictBasedSearch(ConflictBasedSearchOptions options) : options_(options) {}
   std::string name() const override { return "cbs"; }
-  MapfResult solve(const MapfQuery& query) override;
+  MapfResult solve(const MapfQuery& query, const StopToken& stop) override;
 
  private:
   ConflictBasedSearchOptions options_;

@@ -3,35 +3,22 @@
 #include <algorithm>
 #include <memory>
 
-#include "planning/mapf/mapf_grid.h"
+#include "planning/mapf/mapf_search_context.h"
 #include "planning/mapf/reservation_table.h"
-#include "planning/mapf/reverse_resumable_astar.h"
 #include "planning/mapf/space_time_astar.h"
 
 namespace cosim {
 
-MapfResult CooperativeAStar::solve(const MapfQuery& query) {
-  const StopToken deadline(query.time_limit_s, query.stop);
-  const MapfInstance& inst = *query.instance;
-  const MapfGrid grid(inst.grid, inst.connectivity);
-  const int n = inst.agentCount();
+MapfResult CooperativeAStar::solve(const MapfQuery& query, const StopToken& stop) {
+  MapfSearchContext context(query, stop);
+  const StopToken& deadline = context.deadline();
+  const MapfGrid& grid = context.grid();
+  const int n = context.agentCount();
   MapfResult result;
-
-  std::vector<std::unique_ptr<GoalDistance>> heuristic;
-  for (int a = 0; a < n; ++a) {
-    if (deadline.expired()) {
-      result.message = "time limit reached";
-      result.status = expiredStatus(deadline);
-      result.time_ms = deadline.elapsedMs();
-      return result;
-    }
-    const int goal = grid.id(inst.goals[a]), start = grid.id(inst.starts[a]);
-    if (options_.abstract_heuristic)
-      heuristic.push_back(std::make_unique<ReverseResumableAStar>(grid, goal, start, &deadline));
-    else
-      heuristic.push_back(std::make_unique<GridLowerBoundDistance>(grid, goal));
-  }
-
+  const std::vector<std::unique_ptr<GoalDistance>> heuristic = context.goalDistances(
+      options_.abstract_heuristic ? MapfSearchContext::Heuristic::kTrueDistance
+                                  : MapfSearchContext::Heuristic::kGridLowerBound);
+  if (static_cast<int>(heuristic.size()) < n) return context.timeUp();
   SpaceTimeAStar search(grid);
   ReservationTable table(grid);
   std::vector<int> priority(n, 0);
@@ -46,8 +33,8 @@ MapfResult CooperativeAStar::solve(const MapfQuery& query) {
     bool out_of_budget = false;
     for (const int a : planningOrder(priority)) {
       SpaceTimeRequest request;
-      request.start = grid.id(inst.starts[a]);
-      request.goal = grid.id(inst.goals[a]);
+      request.start = context.start(a);
+      request.goal = context.goal(a);
       request.constraints = &table;
       request.heuristic = heuristic[a].get();
       request.max_expansions = options_.max_expansions;
@@ -83,8 +70,7 @@ MapfResult CooperativeAStar::solve(const MapfQuery& query) {
   }
   result.counters["expansions"] = static_cast<double>(expansions);
   result.counters["restarts"] = restarts;
-  result.time_ms = deadline.elapsedMs();
-  return result;
+  return context.finish(std::move(result));
 }
 
 }  // namespace cosim

@@ -19,7 +19,7 @@ class CooperativeAStar final : public MapfPlanner {
  public:
   explicit CooperativeAStar(CooperativeAStarOptions options) : options_(options) {}
   std::string name() const override { return options_.abstract_heuristic ? "hca_star" : "ca_star"; }
-  MapfResult solve(const MapfQuery& query) override;
+  MapfResult solve(const MapfQuery& query, const StopToken& stop) override;
 
  private:
   CooperativeAStarOptions options_;

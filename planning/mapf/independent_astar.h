@@ -10,7 +10,7 @@ namespace cosim {
 class IndependentAStar final : public MapfPlanner {
  public:
   std::string name() const override { return "independent_astar"; }
-  MapfResult solve(const MapfQuery& query) override;
+  MapfResult solve(const MapfQuery& query, const StopToken& stop) override;
 };
 
 }  // namespace cosim

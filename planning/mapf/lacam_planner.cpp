@@ -1,14 +1,17 @@
 #include "planning/mapf/lacam_planner.h"
 
 #include "planning/mapf/graph_instance.h"
+#include "planning/mapf/mapf_search_context.h"
 
 namespace cosim {
 
-MapfResult LacamPlanner::solve(const MapfQuery& query) {
-  const StopToken deadline(query.time_limit_s, query.stop);
-  const GraphInstance g = graphInstance(*query.instance);
-  const int n = query.instance->agentCount();
-  const LacamOutcome out = searchLacam(g.graph, g.starts, g.goals, options_, deadline, query.seed);
+MapfResult LacamPlanner::solve(const MapfQuery& query, const StopToken& stop) {
+  const MapfSearchContext context(query, stop);
+  const StopToken& deadline = context.deadline();
+  const GraphInstance g = graphInstance(context.instance());
+  const int n = context.agentCount();
+  const LacamOutcome out =
+      searchLacam(g.graph, g.starts, g.goals, options_, deadline, context.seed());
   MapfResult result;
   result.success = out.status == LacamOutcome::Status::kSolved;
   result.message = out.message;
@@ -51,8 +54,7 @@ MapfResult LacamPlanner::solve(const MapfQuery& query) {
   c["rediscoveries"] = static_cast<double>(out.rediscoveries);
   c["search_memory_mb"] = static_cast<double>(out.memory_bytes) / (1 << 20);
   c["distance_table_mb"] = static_cast<double>(out.distance_table_bytes) / (1 << 20);
-  result.time_ms = deadline.elapsedMs();
-  return result;
+  return context.finish(std::move(result));
 }
 
 }  // namespace cosim

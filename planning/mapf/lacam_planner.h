@@ -13,7 +13,7 @@ class LacamPlanner final : public MapfPlanner {
  public:
   explicit LacamPlanner(LacamOptions options) : options_(options) {}
   std::string name() const override { return "lacam"; }
-  MapfResult solve(const MapfQuery& query) override;
+  MapfResult solve(const MapfQuery& query, const StopToken& stop) override;
 
  private:
   LacamOptions options_;

@@ -48,6 +48,9 @@ class LacamSearch {
   LacamOutcome run();
 
  private:
+  // The outcome once the loop has ended: solved, or why not (the open list ran empty, the memory
+  // cap, else the deadline); for a solution, what ended its anytime phase.
+  LacamOutcome conclude(bool out_of_memory, bool budget_spent);
   std::uint32_t createNode(std::span<const int> c, std::uint64_t hash, std::uint32_t parent,
                            std::int64_t g);
   void expandConstraint(std::uint32_t node, std::uint32_t constraint);
@@ -280,7 +283,10 @@ LacamOutcome LacamSearch::run() {
     addEdge(top, child, cost);
     if (worthSearching(child)) open_.push_back(child);
   }
+  return conclude(out_of_memory, budget_spent);
+}
 
+LacamOutcome LacamSearch::conclude(bool out_of_memory, bool budget_spent) {
   out_.nodes = static_cast<long>(nodes_.size());
   out_.memory_bytes = memoryBytes();
   if (goal_ != kNone) {

@@ -4,19 +4,19 @@
 #include <cstdlib>
 #include <random>
 
-#include "planning/mapf/mapf_grid.h"
+#include "planning/mapf/mapf_search_context.h"
 #include "planning/mapf/spatial_astar.h"
 #include "planning/mapf/step_arbiter.h"
 
 namespace cosim {
 
-MapfResult LocalRepairAStar::solve(const MapfQuery& query) {
-  const StopToken deadline(query.time_limit_s, query.stop);
-  const MapfInstance& inst = *query.instance;
-  const MapfGrid grid(inst.grid, inst.connectivity);
-  const int n = inst.agentCount();
+MapfResult LocalRepairAStar::solve(const MapfQuery& query, const StopToken& stop) {
+  MapfSearchContext context(query, stop);
+  const StopToken& deadline = context.deadline();
+  const MapfGrid& grid = context.grid();
+  const int n = context.agentCount();
   const int max_steps = options_.max_steps > 0 ? options_.max_steps : grid.cellCount();
-  std::mt19937_64 rng(query.seed);
+  std::mt19937_64 rng(context.seed());
   MapfResult result;
 
   std::vector<int> start(n), goal(n), replans(n, 0);
@@ -24,18 +24,12 @@ MapfResult LocalRepairAStar::solve(const MapfQuery& query) {
   std::vector<std::size_t> next(n, 1);  // route[a][next[a]] is the next cell to enter
   long expansions = 0, total_replans = 0;
   for (int a = 0; a < n; ++a) {
-    start[a] = grid.id(inst.starts[a]);
-    goal[a] = grid.id(inst.goals[a]);
+    start[a] = context.start(a);
+    goal[a] = context.goal(a);
     SpatialAStarRequest request{start[a], goal[a], nullptr, 0.0, nullptr, &deadline};
     const SpatialAStarResult path = spatialAStar(grid, request);
     expansions += path.expansions;
-    if (path.cells.empty()) {
-      result.status = searchStatus(false, deadline, PlannerStatus::NoSolution);
-      result.message = deadline.expired() ? "time limit reached"
-                                          : "goal of agent " + std::to_string(a) + " is unreachable";
-      result.time_ms = deadline.elapsedMs();
-      return result;
-    }
+    if (path.cells.empty()) return context.unreachable(a);
     route[a] = path.cells;
   }
 
@@ -77,8 +71,7 @@ MapfResult LocalRepairAStar::solve(const MapfQuery& query) {
   arbiter.storePaths(result);
   result.counters["expansions"] = static_cast<double>(expansions);
   result.counters["replans"] = static_cast<double>(total_replans);
-  result.time_ms = deadline.elapsedMs();
-  return result;
+  return context.finish(std::move(result));
 }
 
 }  // namespace cosim

@@ -20,7 +20,7 @@ class LocalRepairAStar final : public MapfPlanner {
  public:
   explicit LocalRepairAStar(LocalRepairAStarOptions options) : options_(options) {}
   std::string name() const override { return "lra_star"; }
-  MapfResult solve(const MapfQuery& query) override;
+  MapfResult solve(const MapfQuery& query, const StopToken& stop) override;
 
  private:
   LocalRepairAStarOptions options_;

@@ -9,7 +9,6 @@
 // - paths[i][t] is agent i's cell at time t, from its start at t = 0 to its arrival; after the
 //   last entry the agent stays at its goal for ever (it keeps occupying that cell);
 // - an agent's cost is its arrival time (path length - 1); sum of costs and makespan follow.
-#include <atomic>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -33,8 +32,6 @@ struct MapfQuery {
   const MapfInstance* instance = nullptr;
   double time_limit_s = 10.0;
   std::uint64_t seed = 1;
-  // An external stop request (e.g. set by a SIGINT handler), polled like the time limit.
-  const std::atomic<bool>* stop = nullptr;
 };
 
 using MapfPath = std::vector<Cell>;

@@ -6,21 +6,22 @@
 
 #include "planning/mapf/goal_distance_table.h"
 #include "planning/mapf/graph_instance.h"
+#include "planning/mapf/mapf_search_context.h"
 #include "planning/mapf/pibt_step.h"
 
 namespace cosim {
 
-MapfResult PibtPlanner::solve(const MapfQuery& query) {
-  const StopToken deadline(query.time_limit_s, query.stop);
-  const GraphInstance g = graphInstance(*query.instance);
-  const int n = query.instance->agentCount();
+MapfResult PibtPlanner::solve(const MapfQuery& query, const StopToken& stop) {
+  const MapfSearchContext context(query, stop);
+  const StopToken& deadline = context.deadline();
+  const GraphInstance g = graphInstance(context.instance());
+  const int n = context.agentCount();
   const int max_steps =
       options_.max_steps > 0 ? options_.max_steps : std::max(1000, g.graph.vertexCount());
   MapfResult result;
   const auto finish = [&](std::string message) {
     result.message = std::move(message);
-    result.time_ms = deadline.elapsedMs();
-    return result;
+    return context.finish(std::move(result));
   };
   const GoalDistanceTable distance(g.graph, g.goals);
   const std::string unreachable = checkGoalsReachable(distance, g.starts, deadline);
@@ -37,7 +38,7 @@ MapfResult PibtPlanner::solve(const MapfQuery& query) {
   std::vector<int> order(n);
   std::vector<std::vector<int>> configurations = {g.starts};
   PibtStep step(g.graph, distance, g.goals, options_.swap);
-  SplitMix64 rng(query.seed);
+  SplitMix64 rng(context.seed());
   std::vector<int> next(n);
   PlannerStatus gave_up = PlannerStatus::ApproximateSolution;  // the paths so far, off the goals
   while (configurations.back() != g.goals) {
@@ -71,8 +72,7 @@ MapfResult PibtPlanner::solve(const MapfQuery& query) {
   result.paths = pathsOfConfigurations(g.graph, configurations, n);
   result.counters["steps"] = static_cast<double>(configurations.size() - 1);
   result.counters["distance_table_mb"] = static_cast<double>(distance.bytesReached()) / (1 << 20);
-  result.time_ms = deadline.elapsedMs();
-  return result;
+  return context.finish(std::move(result));
 }
 
 }  // namespace cosim

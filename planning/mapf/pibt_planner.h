@@ -16,7 +16,7 @@ class PibtPlanner final : public MapfPlanner {
  public:
   explicit PibtPlanner(PibtPlannerOptions options) : options_(options) {}
   std::string name() const override { return "pibt"; }
-  MapfResult solve(const MapfQuery& query) override;
+  MapfResult solve(const MapfQuery& query, const StopToken& stop) override;
 
  private:
   PibtPlannerOptions options_;

@@ -4,8 +4,7 @@
 #include <cmath>
 #include <utility>
 
-#include "core/stop_token.h"
-#include "planning/mapf/mapf_grid.h"
+#include "planning/mapf/mapf_search_context.h"
 #include "planning/mapf/step_arbiter.h"
 
 namespace cosim {
@@ -39,19 +38,20 @@ std::vector<double> obstaclePotential(const OccupancyGrid& grid, double radius) 
 
 }  // namespace
 
-MapfResult PotentialField::solve(const MapfQuery& query) {
-  const StopToken deadline(query.time_limit_s, query.stop);
-  const MapfInstance& inst = *query.instance;
-  const MapfGrid grid(inst.grid, inst.connectivity);
-  const int n = inst.agentCount();
+MapfResult PotentialField::solve(const MapfQuery& query, const StopToken& stop) {
+  MapfSearchContext context(query, stop);
+  const StopToken& deadline = context.deadline();
+  const MapfGrid& grid = context.grid();
+  const int n = context.agentCount();
   const int max_steps = options_.max_steps > 0 ? options_.max_steps : grid.cellCount();
-  const std::vector<double> walls = obstaclePotential(inst.grid, options_.influence_radius);
+  const std::vector<double> walls =
+      obstaclePotential(context.instance().grid, options_.influence_radius);
   MapfResult result;
 
   std::vector<int> start(n), goal(n);
   for (int a = 0; a < n; ++a) {
-    start[a] = grid.id(inst.starts[a]);
-    goal[a] = grid.id(inst.goals[a]);
+    start[a] = context.start(a);
+    goal[a] = context.goal(a);
   }
   const auto potential = [&](int agent, int cell, const std::vector<int>& positions) {
     const Cell c = grid.cell(cell);
@@ -90,8 +90,7 @@ MapfResult PotentialField::solve(const MapfQuery& query) {
     }
   }
   arbiter.storePaths(result);
-  result.time_ms = deadline.elapsedMs();
-  return result;
+  return context.finish(std::move(result));
 }
 
 }  // namespace cosim

@@ -25,7 +25,7 @@ class PotentialField final : public MapfPlanner {
  public:
   explicit PotentialField(PotentialFieldOptions options) : options_(options) {}
   std::string name() const override { return "potential_field"; }
-  MapfResult solve(const MapfQuery& query) override;
+  MapfResult solve(const MapfQuery& query, const StopToken& stop) override;
 
  private:
   PotentialFieldOptions options_;

@@ -28,7 +28,7 @@ class WindowedHcaStar final : public MapfPlanner {
  public:
   explicit WindowedHcaStar(WindowedHcaStarOptions options) : options_(options) {}
   std::string name() const override { return "whca_star"; }
-  MapfResult solve(const MapfQuery& query) override;
+  MapfResult solve(const MapfQuery& query, const StopToken& stop) override;
 
  private:
   WindowedHcaStarOptions options_;

@@ -10,7 +10,8 @@ namespace cosim {
 
 NavigationRun runNavigation(Navigator& navigator, const NavigationWorld& world, const Cell& start,
                             const Cell& goal, const NavigationLimits& limits, std::uint64_t seed) {
-  const StopToken deadline(limits.time_limit_s);
+  const StopToken deadline =
+      limits.stop ? StopToken(limits.time_limit_s, *limits.stop) : StopToken(limits.time_limit_s);
   const OccupancyGrid& grid = world.grid();
   NavigationRun run;
   if (grid.blocked(start.x, start.y) || grid.blocked(goal.x, goal.y)) {

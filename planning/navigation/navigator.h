@@ -36,6 +36,7 @@ class Navigator {
 struct NavigationLimits {
   int max_decisions = 0;       // 0: 20 x the number of grid cells
   double time_limit_s = 30.0;  // wall clock for the whole run
+  const StopToken* stop = nullptr;  // the caller's token: the run also ends when it expires
   bool record_decisions = false;
 };
 

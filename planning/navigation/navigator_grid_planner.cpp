@@ -4,8 +4,8 @@
 
 namespace cosim {
 
-GridPlanResult NavigatorGridPlanner::solveGrid(const GridQuery& query) {
-  const StopToken clock(query.time_limit_s);
+GridPlanResult NavigatorGridPlanner::solveGrid(const GridQuery& query, const StopToken& stop) {
+  const StopToken clock(query.time_limit_s, stop);
   GridPlanResult result;
   const OccupancyGrid& g = *query.grid;
   if (query.start.z != query.goal.z) {
@@ -19,6 +19,7 @@ GridPlanResult NavigatorGridPlanner::solveGrid(const GridQuery& query) {
   const NavigationWorld world(std::move(layer));
   NavigationLimits limits;
   limits.time_limit_s = query.time_limit_s;
+  limits.stop = &stop;
   std::unique_ptr<Navigator> navigator = make_();
   const NavigationRun run = runNavigation(*navigator, world, {query.start.x, query.start.y, 0},
                                           {query.goal.x, query.goal.y, 0}, limits, query.seed);

@@ -19,7 +19,7 @@ class NavigatorGridPlanner : public GridPlanner {
       : name_(std::move(name)), make_(std::move(make)) {}
   std::string name() const override { return name_; }
   // Counters: steps, waits, replans, mean_plan_ms, max_plan_ms.
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
 
  private:
   std::string name_;

@@ -112,13 +112,13 @@ bool RobotNavigationAnt::plan(const Window& w, const Cell& at, const Cell& goal,
   GridPlanResult r;
   if (p_.wave_front) {
     Dijkstra wave(GridMoves{8, !p_.conditional_diagonal});
-    r = wave.solveGrid(q);
+    r = wave.solveGrid(q, StopToken::untimed());
   } else {
     MsacParams mp = p_.msac;
     mp.conditional_diagonal = p_.conditional_diagonal;
     const int n = std::max(w.grid.nx(), w.grid.ny());
     mp.s_max = std::max(1, static_cast<int>(s_max_scale * (n * n / 2)));
-    r = Msac(mp).solveGrid(q);
+    r = Msac(mp).solveGrid(q, StopToken::untimed());
   }
   if (!r.success || r.cells.size() < 2) return false;
   path.clear();

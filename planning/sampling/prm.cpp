@@ -65,8 +65,8 @@ std::vector<std::uint32_t> shortestRoute(const Roadmap& map, const NearestNeighb
 
 }  // namespace
 
-PlanResult Prm::solve(const PlanningProblem& problem) {
-  SamplingContext ctx(problem);
+PlanResult Prm::solve(const PlanningProblem& problem, const StopToken& stop) {
+  SamplingContext ctx(problem, stop);
   if (!ctx.invalid().empty()) return ctx.reject();
   const SamplingOptions& o = options_.common;
   NearestNeighborIndex nodes(initialCapacity(o));

@@ -23,7 +23,7 @@ class Prm : public Planner {
  public:
   explicit Prm(const PrmOptions& options) : options_(options) {}
   std::string name() const override { return "prm"; }
-  PlanResult solve(const PlanningProblem& problem) override;
+  PlanResult solve(const PlanningProblem& problem, const StopToken& stop) override;
 
  private:
   PrmOptions options_;

@@ -6,8 +6,8 @@
 
 namespace cosim {
 
-PlanResult Rrt::solve(const PlanningProblem& problem) {
-  SamplingContext ctx(problem);
+PlanResult Rrt::solve(const PlanningProblem& problem, const StopToken& stop) {
+  SamplingContext ctx(problem, stop);
   if (!ctx.invalid().empty()) return ctx.reject();
   const SamplingOptions& o = options_;
   SamplingTree tree(initialCapacity(o), o.linear_scan);

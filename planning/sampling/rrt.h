@@ -13,7 +13,7 @@ class Rrt : public Planner {
  public:
   explicit Rrt(const SamplingOptions& options) : options_(options) {}
   std::string name() const override { return "rrt"; }
-  PlanResult solve(const PlanningProblem& problem) override;
+  PlanResult solve(const PlanningProblem& problem, const StopToken& stop) override;
 
  private:
   SamplingOptions options_;

@@ -6,8 +6,8 @@
 
 namespace cosim {
 
-PlanResult RrtConnect::solve(const PlanningProblem& problem) {
-  SamplingContext ctx(problem);
+PlanResult RrtConnect::solve(const PlanningProblem& problem, const StopToken& stop) {
+  SamplingContext ctx(problem, stop);
   if (!ctx.invalid().empty()) return ctx.reject();
   const SamplingOptions& o = options_;
   const std::size_t capacity = initialCapacity(o) / 2 + 2;

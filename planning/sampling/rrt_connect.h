@@ -13,7 +13,7 @@ class RrtConnect : public Planner {
  public:
   explicit RrtConnect(const SamplingOptions& options) : options_(options) {}
   std::string name() const override { return "rrt_connect"; }
-  PlanResult solve(const PlanningProblem& problem) override;
+  PlanResult solve(const PlanningProblem& problem, const StopToken& stop) override;
 
  private:
   SamplingOptions options_;

@@ -39,7 +39,7 @@ class RrtStar : public Planner {
  public:
   explicit RrtStar(const RrtStarOptions& options) : options_(options) {}
   std::string name() const override;
-  PlanResult solve(const PlanningProblem& problem) override;
+  PlanResult solve(const PlanningProblem& problem, const StopToken& stop) override;
 
  private:
   RrtStarOptions options_;

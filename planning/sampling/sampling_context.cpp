@@ -21,10 +21,10 @@ const World& worldOf(const PlanningProblem& problem) {
 
 }  // namespace
 
-SamplingContext::SamplingContext(const PlanningProblem& problem)
+SamplingContext::SamplingContext(const PlanningProblem& problem, const StopToken& stop)
     : world_(worldOf(problem), problem.inflation, problem.inflation, problem.planar),
       sampler_(world_.validMin(), world_.validMax(), problem.planar, problem.start.z()),
-      deadline_(problem.time_limit_s),
+      deadline_(problem.time_limit_s, stop),
       rng_(problem.seed),
       start_(problem.start),
       goal_(problem.goal),

@@ -45,7 +45,8 @@ inline std::size_t initialCapacity(const SamplingOptions& o) {
 
 class SamplingContext {
  public:
-  explicit SamplingContext(const PlanningProblem& problem);
+  // The deadline is the problem's time limit inside the caller's `stop`.
+  SamplingContext(const PlanningProblem& problem, const StopToken& stop);
 
   // Why the problem cannot be planned (start/goal outside bounds or in collision), or empty.
   const std::string& invalid() const { return invalid_; }

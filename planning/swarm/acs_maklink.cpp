@@ -159,8 +159,8 @@ AcsMaklinkResult optimiseMaklinkRoute(const MaklinkGraph& graph, const Eigen::Ve
   return out;
 }
 
-PlanResult AcsMaklink::solve(const PlanningProblem& problem) {
-  const StopToken deadline(problem.time_limit_s);
+PlanResult AcsMaklink::solve(const PlanningProblem& problem, const StopToken& stop) {
+  const StopToken deadline(problem.time_limit_s, stop);
   PlanResult result;
   const World& world = *problem.world;
   const double z = problem.start.z();

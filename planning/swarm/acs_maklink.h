@@ -64,7 +64,7 @@ class AcsMaklink : public Planner {
  public:
   explicit AcsMaklink(AcsMaklinkParams params = {}) : p_(params) {}
   std::string name() const override { return "acs_maklink"; }
-  PlanResult solve(const PlanningProblem& problem) override;
+  PlanResult solve(const PlanningProblem& problem, const StopToken& stop) override;
 
  private:
   AcsMaklinkParams p_;

@@ -40,8 +40,8 @@ double AntGrid::turnCost(double previous_angle, bool has_previous, double move_a
   return 1.0 + angleBetween(move_angle, previous_angle) / (M_PI / 4.0);
 }
 
-GridPlanResult AntGrid::solveGrid(const GridQuery& query) {
-  LayerWalkSearch search(query, p_.directions);
+GridPlanResult AntGrid::solveGrid(const GridQuery& query, const StopToken& stop) {
+  LayerWalkSearch search(query, stop, p_.directions);
   if (!search.layer().error.empty()) return search.rejected();
   const OccupancyGrid& grid = search.grid();
   const ExtendedNeighbourhood& moves = search.moves();

@@ -47,7 +47,7 @@ class AntGrid : public GridPlanner {
  public:
   explicit AntGrid(AntGridParams params = {}) : p_(params) {}
   std::string name() const override { return "ant_grid"; }
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
 
   // h_i = 1 + (deviation from the straight line to the goal)^2 + (turn from the previous move),
   // angles in degrees. Exposed for tests.

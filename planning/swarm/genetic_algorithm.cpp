@@ -56,8 +56,8 @@ double dist(const Cell& a, const Cell& b) {
 
 }  // namespace
 
-GridPlanResult GeneticAlgorithm::solveGrid(const GridQuery& query) {
-  LayerWalkSearch search(query, p_.directions);
+GridPlanResult GeneticAlgorithm::solveGrid(const GridQuery& query, const StopToken& stop) {
+  LayerWalkSearch search(query, stop, p_.directions);
   if (!search.layer().error.empty()) return search.rejected();
   const OccupancyGrid& grid = search.grid();
   const ExtendedNeighbourhood& moves = search.moves();

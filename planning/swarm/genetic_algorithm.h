@@ -32,7 +32,7 @@ class GeneticAlgorithm : public GridPlanner {
  public:
   explicit GeneticAlgorithm(GeneticAlgorithmParams params = {}) : p_(params) {}
   std::string name() const override { return "ga"; }
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
 
  private:
   GeneticAlgorithmParams p_;

@@ -2,8 +2,8 @@
 
 namespace cosim {
 
-LayerWalkSearch::LayerWalkSearch(const GridQuery& query, int directions)
-    : deadline_(query.time_limit_s),
+LayerWalkSearch::LayerWalkSearch(const GridQuery& query, const StopToken& stop, int directions)
+    : deadline_(query.time_limit_s, stop),
       layer_(planarLayerFor(query)),
       moves_(directions),
       walker_(layer_.grid, moves_) {}

@@ -22,7 +22,7 @@ class LayerWalkSearch {
  public:
   // The query's time limit starts now. A non-empty layer().error means the query cannot be
   // planned: return rejected().
-  LayerWalkSearch(const GridQuery& query, int directions);
+  LayerWalkSearch(const GridQuery& query, const StopToken& stop, int directions);
   // The walker refers to this object's layer and moves.
   LayerWalkSearch(const LayerWalkSearch&) = delete;
   LayerWalkSearch& operator=(const LayerWalkSearch&) = delete;

@@ -41,8 +41,8 @@ class LazyTrails {
 };
 }  // namespace
 
-GridPlanResult Mmas::solveGrid(const GridQuery& query) {
-  LayerWalkSearch search(query, p_.directions);
+GridPlanResult Mmas::solveGrid(const GridQuery& query, const StopToken& stop) {
+  LayerWalkSearch search(query, stop, p_.directions);
   if (!search.layer().error.empty()) return search.rejected();
   const OccupancyGrid& grid = search.grid();
   const ExtendedNeighbourhood& moves = search.moves();

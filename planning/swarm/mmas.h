@@ -37,7 +37,7 @@ class Mmas : public GridPlanner {
  public:
   explicit Mmas(MmasParams params = {}) : p_(params) {}
   std::string name() const override { return "mmas"; }
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
 
  private:
   MmasParams p_;

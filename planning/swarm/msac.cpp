@@ -258,8 +258,8 @@ class MsacSearch {
 
 }  // namespace
 
-GridPlanResult Msac::solveGrid(const GridQuery& query) {
-  const StopToken deadline(query.time_limit_s);
+GridPlanResult Msac::solveGrid(const GridQuery& query, const StopToken& stop) {
+  const StopToken deadline(query.time_limit_s, stop);
   GridPlanResult result;
   if (p_.ants < 1 || p_.ants > 127 || p_.iterations < 1 || p_.tabu_version < 1 ||
       p_.tabu_version > 3) {

@@ -30,7 +30,7 @@ class Msac : public GridPlanner {
  public:
   explicit Msac(MsacParams params = {}) : p_(params) {}
   std::string name() const override { return "msac"; }
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
   const MsacParams& params() const { return p_; }
 
  private:

@@ -15,8 +15,8 @@ namespace {
 constexpr std::size_t kMaxStateFloats = std::size_t(1) << 27;  // 512 MiB
 }  // namespace
 
-GridPlanResult Pso::solveGrid(const GridQuery& query) {
-  LayerWalkSearch search(query, p_.directions);
+GridPlanResult Pso::solveGrid(const GridQuery& query, const StopToken& stop) {
+  LayerWalkSearch search(query, stop, p_.directions);
   if (!search.layer().error.empty()) return search.rejected();
   const OccupancyGrid& grid = search.grid();
   const std::size_t cells = grid.cellCount();

@@ -31,7 +31,7 @@ class Pso : public GridPlanner {
  public:
   explicit Pso(PsoParams params = {}) : p_(params) {}
   std::string name() const override { return "pso"; }
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
 
  private:
   PsoParams p_;

@@ -154,8 +154,8 @@ class SacoColony {
 
 }  // namespace
 
-GridPlanResult Saco::solveGrid(const GridQuery& query) {
-  const StopToken deadline(query.time_limit_s);
+GridPlanResult Saco::solveGrid(const GridQuery& query, const StopToken& stop) {
+  const StopToken deadline(query.time_limit_s, stop);
   GridPlanResult result;
   const std::optional<AntGridView> ant_grid =
       antGridForQuery(query, p_.conditional_diagonal, result);

@@ -45,7 +45,7 @@ class Saco : public GridPlanner {
   explicit Saco(SacoParams params = {}) : p_(std::move(params)) {}
   std::string name() const override { return p_.name; }
   // Counters include raw/loop-free/smoothed length of the very first walk (seed Fig. 6.5).
-  GridPlanResult solveGrid(const GridQuery& query) override;
+  GridPlanResult solveGrid(const GridQuery& query, const StopToken& stop) override;
 
  private:
   SacoParams p_;

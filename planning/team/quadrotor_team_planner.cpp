@@ -93,9 +93,8 @@ bool searchGrid(const TeamPlanningProblem& problem, MapfPlanner& planner,
   query.instance = &instance;
   query.time_limit_s = std::max(1e-3, problem.time_limit_s - deadline.elapsedMs() / 1000.0);
   query.seed = problem.seed;
-  query.stop = problem.stop;
   try {
-    r = planner.solve(query);
+    r = planner.solve(query, StopToken::untimed(problem.stop));
   } catch (const InputError& e) {  // e.g. a planner for 2D grids only
     throw InputError("", "planner.name", "'" + planner.name() + "': " + e.problem());
   }

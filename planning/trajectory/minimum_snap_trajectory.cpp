@@ -25,6 +25,62 @@ std::string formatPoint(const Eigen::Vector3d& p) {
   return s.str();
 }
 
+// One fit of `waypoints`: durations (optimised if asked, from `durations` or distance-
+// proportional ones), the closed-form trajectory, scaled in time to the limits.
+PiecewisePolynomialTrajectory fitOnce(const MinimumSnapOptions& options,
+                                      const std::vector<Eigen::Vector3d>& waypoints,
+                                      std::vector<double>& durations, int& evaluations,
+                                      double& scale, const StopToken& clock) {
+  const MinimumSnapClosedForm fit(waypoints);
+  if (durations.empty()) durations = distanceProportionalTimes(fit, options.time_penalty);
+  if (options.optimize_times) {
+    TimeAllocationResult allocation =
+        optimizeSegmentTimes(fit, durations, options.time_penalty, options.max_evaluations, &clock);
+    durations = std::move(allocation.durations);
+    evaluations += allocation.evaluations;
+  }
+  PiecewisePolynomialTrajectory trajectory = fit.trajectory(durations);
+  scale = timeScaleForLimits(trajectory, options.limits, options.samples_per_piece);
+  if (!options.fill_limits) scale = std::max(scale, 1.0);
+  trajectory.scaleTime(scale);
+  return trajectory;
+}
+
+// Why the fit gave up: where the trajectory still comes too close to an obstacle.
+std::string stillCollidingMessage(const InflatedWorld& checker,
+                                  const std::vector<Eigen::Vector3d>& waypoints,
+                                  const InflatedWorld::Collision& c, double inflation, int round) {
+  const bool segment_blocked = !checker.segmentClear(waypoints[c.piece], waypoints[c.piece + 1]);
+  return "trajectory still within " + std::to_string(inflation) + " m of an obstacle at " +
+         formatPoint(c.position) + " after " + std::to_string(round) + " repair rounds" +
+         (segment_blocked
+              ? " (the planned path segment " + formatPoint(waypoints[c.piece]) + " - " +
+                    formatPoint(waypoints[c.piece + 1]) + " is itself not clear)"
+              : "");
+}
+
+// Splits every colliding piece at the midpoint of its straight path segment; each half starts
+// at half its duration.
+void splitCollidingPieces(const std::vector<InflatedWorld::Collision>& collisions,
+                          std::vector<Eigen::Vector3d>& waypoints, std::vector<double>& durations) {
+  std::vector<Eigen::Vector3d> repaired;
+  std::vector<double> repaired_durations;
+  std::size_t next = 0;
+  for (std::size_t i = 0; i + 1 < waypoints.size(); ++i) {
+    repaired.push_back(waypoints[i]);
+    if (next < collisions.size() && collisions[next].piece == i) {
+      ++next;
+      repaired.push_back(0.5 * (waypoints[i] + waypoints[i + 1]));
+      repaired_durations.insert(repaired_durations.end(), 2, 0.5 * durations[i]);
+    } else {
+      repaired_durations.push_back(durations[i]);
+    }
+  }
+  repaired.push_back(waypoints.back());
+  waypoints = std::move(repaired);
+  durations = std::move(repaired_durations);
+}
+
 }  // namespace
 
 void MinimumSnapOptions::validate() const {
@@ -124,20 +180,8 @@ MinimumSnapResult MinimumSnapTrajectory::fitImpl(const Path& path, const World* 
   std::vector<double> durations;
   int evaluations = 0;
   for (int round = 0;; ++round) {
-    const MinimumSnapClosedForm fit(waypoints);
-    if (durations.empty()) durations = distanceProportionalTimes(fit, options_.time_penalty);
-    if (options_.optimize_times) {
-      TimeAllocationResult allocation = optimizeSegmentTimes(
-          fit, durations, options_.time_penalty, options_.max_evaluations, &clock);
-      durations = std::move(allocation.durations);
-      evaluations += allocation.evaluations;
-    }
-    PiecewisePolynomialTrajectory trajectory = fit.trajectory(durations);
-    double scale = timeScaleForLimits(trajectory, options_.limits, options_.samples_per_piece);
-    if (!options_.fill_limits) scale = std::max(scale, 1.0);
-    trajectory.scaleTime(scale);
-
-    result.trajectory = std::move(trajectory);
+    double scale = 1.0;
+    result.trajectory = fitOnce(options_, waypoints, durations, evaluations, scale, clock);
     result.waypoints.waypoints = waypoints;
     result.counters["repair_rounds"] = round;
     result.counters["cost_evaluations"] = evaluations;
@@ -157,35 +201,11 @@ MinimumSnapResult MinimumSnapTrajectory::fitImpl(const Path& path, const World* 
     }
     if (round >= options_.max_repair_rounds) {
       result.status = PlannerStatus::LimitReached;
-      const InflatedWorld::Collision& c = collisions.front();
-      const bool segment_blocked =
-          !checker->segmentClear(waypoints[c.piece], waypoints[c.piece + 1]);
       result.message =
-          "trajectory still within " + std::to_string(inflation) + " m of an obstacle at " +
-          formatPoint(c.position) + " after " + std::to_string(round) + " repair rounds" +
-          (segment_blocked
-               ? " (the planned path segment " + formatPoint(waypoints[c.piece]) + " - " +
-                     formatPoint(waypoints[c.piece + 1]) + " is itself not clear)"
-               : "");
+          stillCollidingMessage(*checker, waypoints, collisions.front(), inflation, round);
       break;
     }
-    // Split every colliding piece at the midpoint of its straight path segment.
-    std::vector<Eigen::Vector3d> repaired;
-    std::vector<double> repaired_durations;
-    std::size_t next = 0;
-    for (std::size_t i = 0; i + 1 < waypoints.size(); ++i) {
-      repaired.push_back(waypoints[i]);
-      if (next < collisions.size() && collisions[next].piece == i) {
-        ++next;
-        repaired.push_back(0.5 * (waypoints[i] + waypoints[i + 1]));
-        repaired_durations.insert(repaired_durations.end(), 2, 0.5 * durations[i]);
-      } else {
-        repaired_durations.push_back(durations[i]);
-      }
-    }
-    repaired.push_back(waypoints.back());
-    waypoints = std::move(repaired);
-    durations = std::move(repaired_durations);
+    splitCollidingPieces(collisions, waypoints, durations);
   }
 
   const TrajectoryPeaks peaks =

@@ -78,7 +78,8 @@ TEST(Ants000Msac, FindsTheOptimalDiagonalOnTheFreeSceneInEveryRun) {
       p.ants = m;
       p.conditional_diagonal = false;
       Msac msac(p);
-      const GridPlanResult r = msac.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}, seed));
+      const GridPlanResult r =
+          msac.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}, seed), StopToken::untimed());
       expectValidPath(g, r, {2, 2, 0}, {48, 48, 0}, false);
       EXPECT_NEAR(r.length, 46 * std::sqrt(2.0), 1e-9) << "m " << m << " seed " << seed;
     }
@@ -93,7 +94,7 @@ TEST(Ants000Msac, PathsOnRandom32AreValidAndNearOptimal) {
   int n = 0;
   for (std::size_t i = 0; i < scen.size() && n < 40; i += 2, ++n) {
     const Cell s{scen[i].start_x, scen[i].start_y, 0}, t{scen[i].goal_x, scen[i].goal_y, 0};
-    const GridPlanResult r = msac.solveGrid(ants000Query(g, s, t, i + 1));
+    const GridPlanResult r = msac.solveGrid(ants000Query(g, s, t, i + 1), StopToken::untimed());
     expectValidPath(g, r, s, t, true);
     const GridPlanResult best = planAStar(g, s, t);
     ASSERT_TRUE(best.success);
@@ -110,8 +111,8 @@ TEST(Ants000Msac, SameSeedSamePathOtherSeedMayDiffer) {
   const Cell s{1, 1, 0}, t{30, 28, 0};
   ASSERT_FALSE(g.blocked(s));
   ASSERT_FALSE(g.blocked(t));
-  const GridPlanResult a = msac.solveGrid(ants000Query(g, s, t, 7)),
-                       b = msac.solveGrid(ants000Query(g, s, t, 7));
+  const GridPlanResult a = msac.solveGrid(ants000Query(g, s, t, 7), StopToken::untimed()),
+                       b = msac.solveGrid(ants000Query(g, s, t, 7), StopToken::untimed());
   ASSERT_TRUE(a.success);
   EXPECT_TRUE(a.cells == b.cells);
 }
@@ -120,7 +121,8 @@ TEST(Ants000Msac, UnreachableGoalIsReportedWithinTheStepBudget) {
   OccupancyGrid g = freeGrid(30);
   for (int y = 0; y < 30; ++y) g.setBlocked(15, y, 0, true);  // a wall across the map
   Msac msac;
-  const GridPlanResult r = msac.solveGrid(ants000Query(g, {2, 2, 0}, {28, 28, 0}));
+  const GridPlanResult r =
+      msac.solveGrid(ants000Query(g, {2, 2, 0}, {28, 28, 0}), StopToken::untimed());
   EXPECT_FALSE(r.success);
   EXPECT_FALSE(r.message.empty());
   EXPECT_EQ(r.counters.at("iterations"), 3);
@@ -140,7 +142,8 @@ TEST(Ants000Msac, AntsBackOutOfADeadEndCorridorAndMarkIt) {
   MsacParams p;
   p.conditional_diagonal = false;
   Msac msac(p);
-  const GridPlanResult r = msac.solveGrid(ants000Query(g, {5, 14, 0}, {25, 14, 0}, 3));
+  const GridPlanResult r =
+      msac.solveGrid(ants000Query(g, {5, 14, 0}, {25, 14, 0}, 3), StopToken::untimed());
   expectValidPath(g, r, {5, 14, 0}, {25, 14, 0}, false);
   EXPECT_GE(r.counters.at("dead_end_marks"), 4);  // x = 11..14 have one way out
   for (const Cell& c : r.cells) EXPECT_FALSE(c.y == 14 && c.x >= 12 && c.x <= 14);
@@ -155,7 +158,8 @@ TEST(Ants000Msac, AllThreeTabuTableVersionsFindTheFreeSceneOptimum) {
     p.tabu_version = v;
     p.conditional_diagonal = false;
     Msac msac(p);
-    const GridPlanResult r = msac.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}));
+    const GridPlanResult r =
+        msac.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}), StopToken::untimed());
     ASSERT_TRUE(r.success) << "version " << v;
     EXPECT_NEAR(r.length, 65.0538, 1e-3);
   }
@@ -166,10 +170,12 @@ TEST(Ants000Msac, PlansOnTheStartLayerOfA3DGridAndRejectsLayerChanges) {
   for (int x = 0; x < 20; ++x)
     for (int y = 0; y < 20; ++y) g.setBlocked(x, y, 0, true);  // layer 0 solid
   Msac msac;
-  const GridPlanResult r = msac.solveGrid(ants000Query(g, {1, 1, 1}, {18, 17, 1}));
+  const GridPlanResult r =
+      msac.solveGrid(ants000Query(g, {1, 1, 1}, {18, 17, 1}), StopToken::untimed());
   ASSERT_TRUE(r.success) << r.message;
   for (const Cell& c : r.cells) EXPECT_EQ(c.z, 1);
-  const GridPlanResult bad = msac.solveGrid(ants000Query(g, {1, 1, 1}, {18, 17, 2}));
+  const GridPlanResult bad =
+      msac.solveGrid(ants000Query(g, {1, 1, 1}, {18, 17, 2}), StopToken::untimed());
   EXPECT_FALSE(bad.success);
   EXPECT_NE(bad.message.find("2D planner"), std::string::npos);
 }

@@ -34,7 +34,7 @@ TEST(Ants000Saco, PathsOnRandom32AreValidAndNoShorterThanAStar) {
   Saco sacodm;  // defaults: SACOdm, beta 1, rolling gamma 1, EAS weight 1, conditional diagonal
   for (std::size_t i = 0; i < 20; ++i) {
     const Cell s{scen[i].start_x, scen[i].start_y, 0}, t{scen[i].goal_x, scen[i].goal_y, 0};
-    const GridPlanResult r = sacodm.solveGrid(ants000Query(g, s, t, i + 1));
+    const GridPlanResult r = sacodm.solveGrid(ants000Query(g, s, t, i + 1), StopToken::untimed());
     ASSERT_TRUE(r.success) << r.message;
     EXPECT_EQ(r.cells.front(), s);
     EXPECT_EQ(r.cells.back(), t);
@@ -48,7 +48,8 @@ TEST(Ants000Saco, PathsOnRandom32AreValidAndNoShorterThanAStar) {
 TEST(Ants000Saco, CycleRemovalThenSmoothingShortenTheFirstWalk) {
   const OccupancyGrid g(50, 50);
   Saco saco(sacoParams(0.0, 0, false));
-  const GridPlanResult r = saco.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}, 5));
+  const GridPlanResult r =
+      saco.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}, 5), StopToken::untimed());
   ASSERT_TRUE(r.success);
   const double raw = r.counters.at("first_walk_raw_length");
   const double loop_free = r.counters.at("first_walk_loop_free_length");
@@ -65,9 +66,11 @@ TEST(Ants000Saco, DistanceTermCutsTheWalkingOnTheFreeScene) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     Saco saco(sacoParams(0.0, 0, false)), sacodm(sacoParams(1.0, 0, false));
     saco_steps +=
-        saco.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}, seed)).counters.at("expansions");
+        saco.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}, seed), StopToken::untimed())
+            .counters.at("expansions");
     sacodm_steps +=
-        sacodm.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}, seed)).counters.at("expansions");
+        sacodm.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}, seed), StopToken::untimed())
+            .counters.at("expansions");
   }
   EXPECT_GT(saco_steps, 3.0 * sacodm_steps);
 }
@@ -84,8 +87,10 @@ TEST(Ants000Saco, RollingMemoryWalksLessThanFirstGammaMemory) {
     Saco a(p);
     p.rolling_memory = true;
     Saco b(p);
-    first += a.solveGrid(ants000Query(g, {1, 1, 0}, {28, 25, 0}, seed)).counters.at("expansions");
-    rolling += b.solveGrid(ants000Query(g, {1, 1, 0}, {28, 25, 0}, seed)).counters.at("expansions");
+    first += a.solveGrid(ants000Query(g, {1, 1, 0}, {28, 25, 0}, seed), StopToken::untimed())
+                 .counters.at("expansions");
+    rolling += b.solveGrid(ants000Query(g, {1, 1, 0}, {28, 25, 0}, seed), StopToken::untimed())
+                   .counters.at("expansions");
   }
   EXPECT_LT(rolling, 0.7 * first);
 }
@@ -93,8 +98,10 @@ TEST(Ants000Saco, RollingMemoryWalksLessThanFirstGammaMemory) {
 TEST(Ants000Saco, SameSeedSamePath) {
   const OccupancyGrid g = readMovingAIMap(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map");
   Saco a, b;
-  const GridPlanResult ra = a.solveGrid(ants000Query(g, {1, 1, 0}, {30, 28, 0}, 11));
-  const GridPlanResult rb = b.solveGrid(ants000Query(g, {1, 1, 0}, {30, 28, 0}, 11));
+  const GridPlanResult ra =
+      a.solveGrid(ants000Query(g, {1, 1, 0}, {30, 28, 0}, 11), StopToken::untimed());
+  const GridPlanResult rb =
+      b.solveGrid(ants000Query(g, {1, 1, 0}, {30, 28, 0}, 11), StopToken::untimed());
   ASSERT_TRUE(ra.success);
   EXPECT_TRUE(ra.cells == rb.cells);
 }
@@ -103,7 +110,8 @@ TEST(Ants000Saco, UnreachableGoalIsReportedWithoutWalking) {
   OccupancyGrid g(30, 30);
   for (int y = 0; y < 30; ++y) g.setBlocked(15, y, 0, true);
   Saco saco;
-  const GridPlanResult r = saco.solveGrid(ants000Query(g, {2, 2, 0}, {28, 28, 0}, 1));
+  const GridPlanResult r =
+      saco.solveGrid(ants000Query(g, {2, 2, 0}, {28, 28, 0}, 1), StopToken::untimed());
   EXPECT_FALSE(r.success);
   EXPECT_NE(r.message.find("not reachable"), std::string::npos);
 }
@@ -116,7 +124,8 @@ TEST(Ants000Saco, ElitistDepositSettlesTheColonyOnOnePath) {
   p.elitist_weight = 1000.0;
   p.iterations = 200;
   Saco saco(p);
-  const GridPlanResult r = saco.solveGrid(ants000Query(g, {0, 0, 0}, {11, 6, 0}, 2));
+  const GridPlanResult r =
+      saco.solveGrid(ants000Query(g, {0, 0, 0}, {11, 6, 0}, 2), StopToken::untimed());
   ASSERT_TRUE(r.success);
   EXPECT_LT(r.counters.at("iterations"), 200);
 }

@@ -113,7 +113,7 @@ GridPlanResult solve(GridPlanner& p, const OccupancyGrid& g, const Cell& s, cons
   q.goal = t;
   q.seed = seed;
   q.time_limit_s = 5.0;
-  return p.solveGrid(q);
+  return p.solveGrid(q, StopToken::untimed());
 }
 
 }  // namespace

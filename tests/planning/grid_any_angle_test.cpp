@@ -80,9 +80,9 @@ int checkAnyAngleAgainstAStar(const OccupancyGrid& g, int queries, std::uint64_t
     q.grid = &g;
     q.start = randomFreeCell(g, rng);
     q.goal = randomFreeCell(g, rng);
-    const GridPlanResult a = astar.solveGrid(q);
+    const GridPlanResult a = astar.solveGrid(q, StopToken::untimed());
     for (GridPlanner* p : {static_cast<GridPlanner*>(&theta), static_cast<GridPlanner*>(&lazy)}) {
-      const GridPlanResult r = p->solveGrid(q);
+      const GridPlanResult r = p->solveGrid(q, StopToken::untimed());
       EXPECT_EQ(r.success, a.success) << p->name() << " query " << k;
       if (!r.success || !a.success) continue;
       EXPECT_LE(r.length, a.length + 1e-9) << p->name() << " query " << k;
@@ -154,10 +154,11 @@ TEST(GridAnyAngle, ThetaStarIsShorterThanAStarInTheOpen) {
   GridQuery q;
   q.grid = &g;
   q.goal = {10, 3, 0};
-  EXPECT_NEAR(AStar().solveGrid(q).length, 7 + 3 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(AStar().solveGrid(q, StopToken::untimed()).length, 7 + 3 * std::sqrt(2.0), 1e-9);
   BasicThetaStar theta;
   LazyThetaStar lazy;
-  const GridPlanResult t = theta.solveGrid(q), l = lazy.solveGrid(q);
+  const GridPlanResult t = theta.solveGrid(q, StopToken::untimed()),
+                       l = lazy.solveGrid(q, StopToken::untimed());
   EXPECT_NEAR(t.length, std::sqrt(109.0), 1e-9);
   EXPECT_NEAR(l.length, std::sqrt(109.0), 1e-9);
   EXPECT_EQ(t.cells.size(), 2u);
@@ -176,8 +177,8 @@ TEST(GridAnyAngle, LazyThetaStarMakesFewerLineOfSightChecksThanBasicOnACluttered
     q.grid = &g;
     q.start = randomFreeCell(g, rng);
     q.goal = randomFreeCell(g, rng);
-    basic_checks += theta.solveGrid(q).counters["los_checks"];
-    lazy_checks += lazy.solveGrid(q).counters["los_checks"];
+    basic_checks += theta.solveGrid(q, StopToken::untimed()).counters["los_checks"];
+    lazy_checks += lazy.solveGrid(q, StopToken::untimed()).counters["los_checks"];
   }
   // Seed 003 reports about 10x fewer on its 3D maps of large obstacles (Tabs. 2-4); random
   // single-voxel clutter fails more lazy checks, and 4-5x is measured here.

@@ -32,7 +32,7 @@ TEST(GridCellBlocking, ThetaStarWithTheCentreRulePlansSeed003DiscretesPath) {
   q.grid = &grid;
   q.start = grid.cellOf(map.start);
   q.goal = grid.cellOf(map.goal);
-  const GridPlanResult discrete = BasicThetaStar().solveGrid(q);
+  const GridPlanResult discrete = BasicThetaStar().solveGrid(q, StopToken::untimed());
   ASSERT_TRUE(discrete.success);
   ParamSet p("test");
   p.set("resolution", "1.0");
@@ -41,7 +41,7 @@ TEST(GridCellBlocking, ThetaStarWithTheCentreRulePlansSeed003DiscretesPath) {
   prob.world = &map.world;
   prob.start = map.start;  // cell centres, so the world path adds no end segments
   prob.goal = map.goal;
-  const PlanResult world = makePlanner("theta_star", p)->solve(prob);
+  const PlanResult world = makePlanner("theta_star", p)->solve(prob, StopToken::untimed());
   ASSERT_TRUE(world.success) << world.message;
   EXPECT_NEAR(world.path.length(), discrete.length, 1e-9);
   EXPECT_NEAR(world.path.length(), 78.19, 0.005);  // seed003-discrete's map 3 path
@@ -49,12 +49,13 @@ TEST(GridCellBlocking, ThetaStarWithTheCentreRulePlansSeed003DiscretesPath) {
   p = ParamSet("test");
   p.set("resolution", "1.0");
   p.set("cell_blocking", "cell");
-  EXPECT_GT(makePlanner("theta_star", p)->solve(prob).path.length(), world.path.length() + 3.0);
+  EXPECT_GT(makePlanner("theta_star", p)->solve(prob, StopToken::untimed()).path.length(),
+            world.path.length() + 3.0);
   // The default (exact) rule for a point mass: free centres as the thesis's, but every segment
   // checked against the obstacles, so never shorter than the thesis's path.
   p = ParamSet("test");
   p.set("resolution", "1.0");
-  const PlanResult exact = makePlanner("theta_star", p)->solve(prob);
+  const PlanResult exact = makePlanner("theta_star", p)->solve(prob, StopToken::untimed());
   ASSERT_TRUE(exact.success) << exact.message;
   EXPECT_GE(exact.path.length(), world.path.length() - 1e-9);
 }

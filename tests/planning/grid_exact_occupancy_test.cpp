@@ -15,7 +15,7 @@ PlanResult plan(const std::string& name, const PlanningProblem& prob,
                 const std::map<std::string, std::string>& params = {}) {
   ParamSet p("test");
   for (const auto& [k, v] : params) p.set(k, v);
-  return makePlanner(name, p)->solve(prob);
+  return makePlanner(name, p)->solve(prob, StopToken::untimed());
 }
 
 // The forest of experiments/scenarios/forest.yaml (generator seed 3, density 0.08), with trunks

@@ -52,7 +52,7 @@ std::size_t checkScenario(GridPlanner& planner, const Case& c, std::size_t limit
   const std::size_t n = limit == 0 ? lines.size() : std::min(limit, lines.size());
   for (std::size_t i = 0; i < n; ++i) {
     const MovingAIScenarioLine& s = lines[i];
-    const GridPlanResult r = planner.solveGrid(scenarioQuery(grid, s));
+    const GridPlanResult r = planner.solveGrid(scenarioQuery(grid, s), StopToken::untimed());
     EXPECT_TRUE(r.success) << planner.name() << " " << c.scen << " line " << s.line << ": "
                            << r.message;
     EXPECT_NEAR(r.length, s.optimal_length, 1e-4 * std::max(1.0, s.optimal_length))
@@ -97,7 +97,7 @@ TEST(GridMovingAIOptimality, CornerCuttingMakesSomeBerlinPathsShorter) {
   int shorter = 0;
   for (std::size_t i = 0; i < 200; ++i) {
     const auto& s = lines[i];
-    const GridPlanResult r = cutting.solveGrid(scenarioQuery(grid, s));
+    const GridPlanResult r = cutting.solveGrid(scenarioQuery(grid, s), StopToken::untimed());
     ASSERT_TRUE(r.success);
     EXPECT_LE(r.length, s.optimal_length + 1e-4 * s.optimal_length);
     if (r.length < s.optimal_length - 1e-3) ++shorter;

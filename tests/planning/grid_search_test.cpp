@@ -51,19 +51,23 @@ TEST(GridSearch, OptimalLengthsOnEmptyGridsFollowTheMoveSet) {
   const OccupancyGrid g2(12, 9), g3(8, 7, 6);
   const GridQuery q2 = query(g2, {1, 1, 0}, {9, 4, 0});  // dx 8, dy 3
   const GridQuery q3 = query(g3, {0, 0, 0}, {5, 3, 2});  // dx 5, dy 3, dz 2
-  for (auto& p : optimalPlanners({4, false})) EXPECT_NEAR(p->solveGrid(q2).length, 11.0, 1e-9);
+  for (auto& p : optimalPlanners({4, false}))
+    EXPECT_NEAR(p->solveGrid(q2, StopToken::untimed()).length, 11.0, 1e-9);
   for (auto& p : optimalPlanners({8, false}))
-    EXPECT_NEAR(p->solveGrid(q2).length, 5 + 3 * kSqrt2, 1e-9) << p->name();
-  for (auto& p : optimalPlanners({6, false})) EXPECT_NEAR(p->solveGrid(q3).length, 10.0, 1e-9);
+    EXPECT_NEAR(p->solveGrid(q2, StopToken::untimed()).length, 5 + 3 * kSqrt2, 1e-9) << p->name();
+  for (auto& p : optimalPlanners({6, false}))
+    EXPECT_NEAR(p->solveGrid(q3, StopToken::untimed()).length, 10.0, 1e-9);
   // 18 moves (no body diagonals): 3 x-y and 2 x-z face diagonals cover the offset exactly.
   for (auto& p : optimalPlanners({18, false}))
-    EXPECT_NEAR(p->solveGrid(q3).length, 5 * kSqrt2, 1e-9) << p->name();
+    EXPECT_NEAR(p->solveGrid(q3, StopToken::untimed()).length, 5 * kSqrt2, 1e-9) << p->name();
   for (auto& p : optimalPlanners({26, false}))
-    EXPECT_NEAR(p->solveGrid(q3).length, 2 * kSqrt3 + kSqrt2 + 2, 1e-9) << p->name();
+    EXPECT_NEAR(p->solveGrid(q3, StopToken::untimed()).length, 2 * kSqrt3 + kSqrt2 + 2, 1e-9)
+        << p->name();
   // connectivity 0 means all moves for the grid's dimensionality.
   for (auto& p : optimalPlanners({0, false})) {
-    EXPECT_NEAR(p->solveGrid(q2).length, 5 + 3 * kSqrt2, 1e-9) << p->name();
-    EXPECT_NEAR(p->solveGrid(q3).length, 2 * kSqrt3 + kSqrt2 + 2, 1e-9) << p->name();
+    EXPECT_NEAR(p->solveGrid(q2, StopToken::untimed()).length, 5 + 3 * kSqrt2, 1e-9) << p->name();
+    EXPECT_NEAR(p->solveGrid(q3, StopToken::untimed()).length, 2 * kSqrt3 + kSqrt2 + 2, 1e-9)
+        << p->name();
   }
 }
 
@@ -74,12 +78,12 @@ TEST(GridSearch, DiagonalBetweenTwoBlockedCellsNeedsCornerCutting) {
   g.setBlocked(1, 0, 0, true);
   g.setBlocked(0, 1, 0, true);
   for (auto& p : allPlanners({8, false})) {
-    const GridPlanResult r = p->solveGrid(query(g, {0, 0, 0}, {1, 1, 0}));
+    const GridPlanResult r = p->solveGrid(query(g, {0, 0, 0}, {1, 1, 0}), StopToken::untimed());
     EXPECT_FALSE(r.success) << p->name();
     EXPECT_EQ(r.message, "no path") << p->name();
   }
   for (auto& p : allPlanners({8, true})) {
-    const GridPlanResult r = p->solveGrid(query(g, {0, 0, 0}, {1, 1, 0}));
+    const GridPlanResult r = p->solveGrid(query(g, {0, 0, 0}, {1, 1, 0}), StopToken::untimed());
     ASSERT_TRUE(r.success) << p->name();
     EXPECT_NEAR(r.length, kSqrt2, 1e-12) << p->name();
   }
@@ -90,16 +94,16 @@ TEST(GridSearch, BodyDiagonalIn3DNeedsAllSixSideCellsFreeWithoutCornerCutting) {
   g.setBlocked(1, 0, 1, true);  // one side cell of the move (0,0,0) -> (1,1,1)
   AStar strict(AStar::Options{{26, false}, 1.0}), cutting(AStar::Options{{26, true}, 1.0});
   const GridQuery q = query(g, {0, 0, 0}, {1, 1, 1});
-  EXPECT_NEAR(cutting.solveGrid(q).length, kSqrt3, 1e-12);
+  EXPECT_NEAR(cutting.solveGrid(q, StopToken::untimed()).length, kSqrt3, 1e-12);
   // Around it: a face diagonal plus a straight move, sqrt 2 + 1.
-  EXPECT_NEAR(strict.solveGrid(q).length, kSqrt2 + 1, 1e-12);
+  EXPECT_NEAR(strict.solveGrid(q, StopToken::untimed()).length, kSqrt2 + 1, 1e-12);
 }
 
 TEST(GridSearch, WalledOffGoalGivesNoPathFromEveryPlanner) {
   OccupancyGrid g(20, 20);
   for (int i = 0; i < 20; ++i) g.setBlocked(i, 10, 0, true);
   for (auto& p : allPlanners({0, false})) {
-    const GridPlanResult r = p->solveGrid(query(g, {2, 2, 0}, {15, 15, 0}));
+    const GridPlanResult r = p->solveGrid(query(g, {2, 2, 0}, {15, 15, 0}), StopToken::untimed());
     EXPECT_FALSE(r.success) << p->name();
     EXPECT_EQ(r.message, "no path") << p->name();
     EXPECT_GT(r.counters.at("expansions"), 150) << p->name();  // searched the whole lower half
@@ -110,9 +114,9 @@ TEST(GridSearch, BlockedOrOutsideEndpointsAreRejectedWithAReason) {
   OccupancyGrid g(5, 5);
   g.setBlocked(0, 0, 0, true);
   for (auto& p : allPlanners({0, false})) {
-    EXPECT_EQ(p->solveGrid(query(g, {0, 0, 0}, {4, 4, 0})).message,
+    EXPECT_EQ(p->solveGrid(query(g, {0, 0, 0}, {4, 4, 0}), StopToken::untimed()).message,
               "start cell (0,0,0) is blocked");
-    EXPECT_EQ(p->solveGrid(query(g, {4, 4, 0}, {7, 1, 0})).message,
+    EXPECT_EQ(p->solveGrid(query(g, {4, 4, 0}, {7, 1, 0}), StopToken::untimed()).message,
               "goal cell (7,1,0) is outside the grid");
   }
 }
@@ -121,10 +125,10 @@ TEST(GridSearch, ConnectivityOfTheWrongDimensionIsAnInputError) {
   OccupancyGrid g2(5, 5), g3(5, 5, 5);
   AStar a2(AStar::Options{{6, false}, 1.0}, "scenario.yaml");
   Dijkstra d3({8, false});
-  EXPECT_THROW(a2.solveGrid(query(g2, {0, 0, 0}, {4, 4, 0})), InputError);
-  EXPECT_THROW(d3.solveGrid(query(g3, {0, 0, 0}, {4, 4, 4})), InputError);
+  EXPECT_THROW(a2.solveGrid(query(g2, {0, 0, 0}, {4, 4, 0}), StopToken::untimed()), InputError);
+  EXPECT_THROW(d3.solveGrid(query(g3, {0, 0, 0}, {4, 4, 4}), StopToken::untimed()), InputError);
   try {
-    a2.solveGrid(query(g2, {0, 0, 0}, {4, 4, 0}));
+    a2.solveGrid(query(g2, {0, 0, 0}, {4, 4, 0}), StopToken::untimed());
   } catch (const InputError& e) {
     EXPECT_EQ(e.file(), "scenario.yaml");
     EXPECT_EQ(e.place(), "parameter connectivity");
@@ -141,7 +145,7 @@ TEST(GridSearch, TimeLimitStopsAnExhaustiveSearch) {
   for (auto& p : allPlanners({0, false})) {
     GridQuery q = query(g, {0, 0, 0}, {999, 999, 0});
     q.time_limit_s = 0.001;
-    const GridPlanResult r = p->solveGrid(q);
+    const GridPlanResult r = p->solveGrid(q, StopToken::untimed());
     EXPECT_FALSE(r.success) << p->name();
     EXPECT_EQ(r.message, "time limit") << p->name();
     EXPECT_LT(r.counters.at("expansions"), 0.99e6) << p->name();
@@ -155,12 +159,12 @@ TEST(GridSearch, PlannerGivesTheSameAnswersWhenReusedAcrossGridsOfDifferentSizes
     const GridQuery qb = query(big, {2, 2, 0}, {35, 2, 0});
     const GridQuery qs = query(small, {0, 0, 0}, {5, 4, 0});
     const GridQuery qc = query(cube, {0, 0, 0}, {6, 6, 6});
-    const double first = p->solveGrid(qb).length;
+    const double first = p->solveGrid(qb, StopToken::untimed()).length;
     EXPECT_GT(first, 33.0) << p->name();
-    const double s1 = p->solveGrid(qs).length;
-    const double c1 = p->solveGrid(qc).length;
-    EXPECT_DOUBLE_EQ(p->solveGrid(qb).length, first) << p->name();
-    EXPECT_DOUBLE_EQ(p->solveGrid(qs).length, s1) << p->name();
+    const double s1 = p->solveGrid(qs, StopToken::untimed()).length;
+    const double c1 = p->solveGrid(qc, StopToken::untimed()).length;
+    EXPECT_DOUBLE_EQ(p->solveGrid(qb, StopToken::untimed()).length, first) << p->name();
+    EXPECT_DOUBLE_EQ(p->solveGrid(qs, StopToken::untimed()).length, s1) << p->name();
     EXPECT_NEAR(c1, 6 * kSqrt3, 1e-9) << p->name();
   }
 }
@@ -201,9 +205,9 @@ TEST(GridSearch, OptimalPlannersAgreeOnRandom3DBoxWorldsForEveryMoveSet) {
       const GridQuery q = query(g, {0, 0, 0}, {23, 19, 9});
       g.setBlocked(q.start, false);
       g.setBlocked(q.goal, false);
-      const GridPlanResult reference = planners[0]->solveGrid(q);  // Dijkstra
+      const GridPlanResult reference = planners[0]->solveGrid(q, StopToken::untimed());  // Dijkstra
       for (std::size_t i = 1; i < planners.size(); ++i) {
-        const GridPlanResult r = planners[i]->solveGrid(q);
+        const GridPlanResult r = planners[i]->solveGrid(q, StopToken::untimed());
         ASSERT_EQ(r.success, reference.success) << planners[i]->name() << " seed " << seed;
         EXPECT_NEAR(r.length, reference.length, 1e-9) << planners[i]->name() << " seed " << seed;
         // Every step is one legal move.
@@ -230,7 +234,8 @@ TEST(GridSearch, WeightedAStarStaysWithinItsBoundAndExpandsLess) {
   for (int y = 5; y < 60; ++y) g.setBlocked(30, y, 0, true);
   const GridQuery q = query(g, {5, 50, 0}, {55, 50, 0});
   AStar optimal, weighted(AStar::Options{{0, false}, 3.0});
-  const GridPlanResult a = optimal.solveGrid(q), w = weighted.solveGrid(q);
+  const GridPlanResult a = optimal.solveGrid(q, StopToken::untimed()),
+                       w = weighted.solveGrid(q, StopToken::untimed());
   ASSERT_TRUE(a.success);
   ASSERT_TRUE(w.success);
   EXPECT_GE(w.length, a.length - 1e-9);

@@ -43,7 +43,7 @@ TEST(GridWorldPlanning, ThetaStarFliesOverTheWallsOfSeed003Map1) {
   problem.start = map.start;
   problem.goal = map.goal;
   problem.inflation = 0.3;
-  const PlanResult r = planner->solve(problem);
+  const PlanResult r = planner->solve(problem, StopToken::untimed());
   ASSERT_TRUE(r.success) << r.message;
   EXPECT_EQ(r.path.waypoints.front(), map.start);
   EXPECT_EQ(r.path.waypoints.back(), map.goal);
@@ -79,7 +79,7 @@ TEST(Seed003Maps, GridsHaveTheThesisSizesAndFreeEndpoints) {
     q.grid = &g;
     q.start = s;
     q.goal = t;
-    const GridPlanResult r = theta.solveGrid(q);
+    const GridPlanResult r = theta.solveGrid(q, StopToken::untimed());
     ASSERT_TRUE(r.success) << maps[k].name;
     EXPECT_GT(r.length, straight[k] * 1.1) << maps[k].name;
   }

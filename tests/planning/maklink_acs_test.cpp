@@ -114,7 +114,7 @@ TEST(AcsMaklink, ShortensDijkstrasMidpointPathAndStaysClear) {
   const World w = room();
   AcsMaklink planner;
   const PlanningProblem p = problem(w, {1, 1, 1}, {19, 19, 1});
-  const PlanResult r = planner.solve(p);
+  const PlanResult r = planner.solve(p, StopToken::untimed());
   ASSERT_TRUE(r.success) << r.message;
   expectCollisionFree(w, r.path, p.inflation);
   EXPECT_LT(r.path.length(), r.counters.at("dijkstra_length_m") * 0.95);
@@ -148,7 +148,7 @@ TEST(AcsMaklink, SameSeedSamePath) {
   const World w = room();
   AcsMaklink a, b;
   const PlanningProblem p = problem(w, {1, 1, 1}, {19, 19, 1});
-  const PlanResult r1 = a.solve(p), r2 = b.solve(p);
+  const PlanResult r1 = a.solve(p, StopToken::untimed()), r2 = b.solve(p, StopToken::untimed());
   ASSERT_TRUE(r1.success);
   EXPECT_EQ(r1.path.waypoints, r2.path.waypoints);
 }
@@ -159,10 +159,11 @@ TEST(AcsMaklink, EnclosedGoalAndGoalInsideObstacleAreReported) {
   w.bounds_max = {20, 20, 5};
   w.obstacles = {box(10, 7, 8, 1), box(10, 13, 8, 1), box(6.5, 10, 1, 7), box(13.5, 10, 1, 7)};
   AcsMaklink planner;
-  const PlanResult enclosed = planner.solve(problem(w, {1, 1, 1}, {10, 10, 1}));
+  const PlanResult enclosed =
+      planner.solve(problem(w, {1, 1, 1}, {10, 10, 1}), StopToken::untimed());
   EXPECT_FALSE(enclosed.success);
   EXPECT_NE(enclosed.message.find("unreachable"), std::string::npos) << enclosed.message;
-  const PlanResult inside = planner.solve(problem(w, {1, 1, 1}, {10, 7, 1}));
+  const PlanResult inside = planner.solve(problem(w, {1, 1, 1}, {10, 7, 1}), StopToken::untimed());
   EXPECT_FALSE(inside.success);
   EXPECT_NE(inside.message.find("goal"), std::string::npos) << inside.message;
 }
@@ -175,7 +176,7 @@ TEST(AcsMaklink, PlansAtStartHeightAndClimbsToTheGoal) {
   w.obstacles.push_back(low);
   AcsMaklink planner;
   const PlanningProblem p = problem(w, {1, 1, 2}, {19, 19, 3});
-  const PlanResult r = planner.solve(p);
+  const PlanResult r = planner.solve(p, StopToken::untimed());
   ASSERT_TRUE(r.success) << r.message;
   for (std::size_t i = 0; i + 1 < r.path.size(); ++i) EXPECT_DOUBLE_EQ(r.path.waypoints[i].z(), 2);
   EXPECT_EQ(r.path.waypoints.back(), p.goal);
@@ -207,7 +208,7 @@ TEST(AcsMaklink, TimeLimitIsHonouredWhileBuildingALargeGraph) {
   AcsMaklink planner;
   PlanningProblem p = problem(w, {1, 1, 1}, {99, 99, 1});
   p.time_limit_s = 0.05;  // 225 octagons: 1800 vertices, far more than 50 ms of candidate lines
-  const PlanResult r = planner.solve(p);
+  const PlanResult r = planner.solve(p, StopToken::untimed());
   EXPECT_FALSE(r.success);
   EXPECT_NE(r.message.find("time limit"), std::string::npos) << r.message;
   EXPECT_LT(r.time_ms, 500.0);

@@ -28,8 +28,7 @@ MapfResult run(const std::string& planner, const MapfInstance& inst,
   q.instance = &inst;
   q.time_limit_s = time_limit_s;
   q.seed = seed;
-  q.stop = stop;
-  return algo->solve(q);
+  return algo->solve(q, StopToken::untimed(stop));
 }
 
 std::string data(const std::string& name) {

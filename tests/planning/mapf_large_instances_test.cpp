@@ -78,7 +78,7 @@ MapfResult solve(const std::string& planner, const MapfInstance& inst) {
   MapfQuery q;
   q.instance = &inst;
   q.time_limit_s = 60.0;
-  return algo->solve(q);
+  return algo->solve(q, StopToken::untimed());
 }
 
 void expectSolved(const MapfInstance& inst, const MapfResult& r, const std::string& what) {

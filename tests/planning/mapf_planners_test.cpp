@@ -33,7 +33,7 @@ MapfResult run(const std::string& planner, const MapfInstance& inst,
   q.instance = &inst;
   q.time_limit_s = time_limit_s;
   q.seed = 1;
-  return algo->solve(q);
+  return algo->solve(q, StopToken::untimed());
 }
 
 std::string data(const std::string& name) {

@@ -35,7 +35,7 @@ MapfResult solve(const std::string& planner, const MapfInstance& inst, double ti
   MapfQuery q;
   q.instance = &inst;
   q.time_limit_s = time_limit_s;
-  return makeMapfPlanner(planner, p)->solve(q);
+  return makeMapfPlanner(planner, p)->solve(q, StopToken::untimed());
 }
 
 class EveryHeuristicPlanner : public ::testing::TestWithParam<std::string> {};

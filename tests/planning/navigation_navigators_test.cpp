@@ -163,7 +163,7 @@ TEST(NavigationRegistry, RnaWfRnaDStarLiteAreGridPlannersThatDriveWithAFieldOfVi
     ParamSet params("test");
     params.set("sight", "40");
     const auto planner = makeGridPlanner(name, params);
-    const GridPlanResult r = planner->solveGrid(q);
+    const GridPlanResult r = planner->solveGrid(q, StopToken::untimed());
     ASSERT_TRUE(r.success) << name << ": " << r.message;
     EXPECT_EQ(r.cells.front(), q.start);
     EXPECT_EQ(r.cells.back(), q.goal);

@@ -42,7 +42,7 @@ PlanResult plan(const std::string& name, const Eigen::Vector3d& start, double ti
   problem.inflation = 0.2;
   problem.planar = true;
   problem.time_limit_s = time_limit_s;
-  return planner->solve(problem);
+  return planner->solve(problem, StopToken::untimed());
 }
 
 std::vector<std::string> singleAgentPlanners() {
@@ -98,8 +98,7 @@ MapfResult solveTeam(const std::string& name, const std::atomic<bool>* stop) {
   MapfQuery query;
   query.instance = &inst;
   query.time_limit_s = 3600.0;
-  query.stop = stop;
-  return makeMapfPlanner(name, params)->solve(query);
+  return makeMapfPlanner(name, params)->solve(query, StopToken::untimed(stop));
 }
 
 class EveryTeamPlanner : public ::testing::TestWithParam<std::string> {};

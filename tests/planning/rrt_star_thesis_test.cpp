@@ -24,7 +24,7 @@ PlanResult plan(const std::string& planner, const Seed003Map& map, std::uint64_t
   prob.planar = map.planar;
   prob.seed = seed;
   prob.time_limit_s = 30.0;
-  return makePlanner(planner, p)->solve(prob);
+  return makePlanner(planner, p)->solve(prob, StopToken::untimed());
 }
 
 // The thesis's Tab. 16 settings: map 3, mode 2, N 2000, step 2 m, radius 4 m, no goal bias.

@@ -79,7 +79,7 @@ TEST(SamplingPlanners, EveryPlannerReturnsCollisionFreePathInsideBounds) {
     for (std::uint64_t seed : {1, 2}) {
       prob.seed = seed;
       SCOPED_TRACE(name + " seed " + std::to_string(seed));
-      const PlanResult r = make(name, {{"max_nodes", "5000"}})->solve(prob);
+      const PlanResult r = make(name, {{"max_nodes", "5000"}})->solve(prob, StopToken::untimed());
       expectPathValid(prob, r);
       EXPECT_GE(r.path.length(), (prob.goal - prob.start).norm());
       EXPECT_GT(r.counters.at("collision_checks"), 0);
@@ -97,10 +97,10 @@ TEST(SamplingPlanners, SameSeedGivesSamePathAndAnotherSeedAnother) {
     SCOPED_TRACE(name);
     const std::map<std::string, std::string> budget = {{"max_nodes", "2000"}};
     prob.seed = 5;
-    const PlanResult a = make(name, budget)->solve(prob);
-    const PlanResult b = make(name, budget)->solve(prob);
+    const PlanResult a = make(name, budget)->solve(prob, StopToken::untimed());
+    const PlanResult b = make(name, budget)->solve(prob, StopToken::untimed());
     prob.seed = 6;
-    const PlanResult c = make(name, budget)->solve(prob);
+    const PlanResult c = make(name, budget)->solve(prob, StopToken::untimed());
     ASSERT_TRUE(a.success && b.success && c.success);
     EXPECT_EQ(a.path.waypoints, b.path.waypoints);
     EXPECT_EQ(a.counters, b.counters);
@@ -148,7 +148,7 @@ TEST(SamplingPlanners, RrtStarCostDecreasesWithBudgetTowardsTheKnownOptimum) {
       const PlanResult r =
           make("rrt_star",
                {{"max_nodes", budget}, {"mode", "2"}, {"step", "1"}, {"rewire_radius", "1.5"}})
-              ->solve(prob);
+              ->solve(prob, StopToken::untimed());
       ASSERT_TRUE(r.success) << budget;
       // No planner may beat the true optimum: that would mean cutting the rounded corners.
       EXPECT_GE(r.path.length(), optimum - 1e-9);
@@ -178,14 +178,15 @@ TEST(SamplingPlanners, StartOrGoalBlockedOrOutOfBoundsIsReportedAsFailure) {
     for (const Case& c : cases) {
       prob.start = c.start;
       prob.goal = c.goal;
-      const PlanResult r = make(name)->solve(prob);
+      const PlanResult r = make(name)->solve(prob, StopToken::untimed());
       EXPECT_FALSE(r.success) << name;
       EXPECT_NE(r.message.find(c.message), std::string::npos) << name << ": " << r.message;
     }
   }
   prob.start = inside;
   prob.goal = {29, 29, 8};
-  EXPECT_NE(make("rrt")->solve(prob).message.find("inside an obstacle"), std::string::npos);
+  EXPECT_NE(make("rrt")->solve(prob, StopToken::untimed()).message.find("inside an obstacle"),
+            std::string::npos);
 }
 
 TEST(SamplingPlanners, EnclosedGoalEndsWithTimeLimitNotAHang) {
@@ -210,7 +211,7 @@ TEST(SamplingPlanners, EnclosedGoalEndsWithTimeLimitNotAHang) {
   prob.inflation = 0.2;
   prob.time_limit_s = 0.1;
   for (const auto& name : kPlanners) {
-    const PlanResult r = make(name)->solve(prob);
+    const PlanResult r = make(name)->solve(prob, StopToken::untimed());
     EXPECT_FALSE(r.success) << name;
     EXPECT_EQ(r.message.rfind("time limit (0.1 s) reached after ", 0), 0u)
         << name << ": " << r.message;
@@ -218,7 +219,8 @@ TEST(SamplingPlanners, EnclosedGoalEndsWithTimeLimitNotAHang) {
   }
   // With a small node budget the failure is the budget, not the clock.
   prob.time_limit_s = 10;
-  const PlanResult r = make("rrt", {{"max_nodes", "500"}, {"mode", "2"}})->solve(prob);
+  const PlanResult r =
+      make("rrt", {{"max_nodes", "500"}, {"mode", "2"}})->solve(prob, StopToken::untimed());
   EXPECT_EQ(r.message.rfind("no path within max_nodes = 500 (obstacles inflated by 0.2 m", 0), 0u)
       << r.message;
   EXPECT_EQ(r.counters.at("nodes"), 500);
@@ -229,14 +231,15 @@ TEST(SamplingPlanners, FixedNodesCapBoundsTheTreeAndModesUseTheBudget) {
   PlanningProblem prob = acrossClutter(w);
   const PlanResult fn =
       make("rrt_star_fn", {{"max_tree_nodes", "300"}, {"mode", "2"}, {"max_nodes", "2000"}})
-          ->solve(prob);
+          ->solve(prob, StopToken::untimed());
   ASSERT_TRUE(fn.success);
   EXPECT_EQ(fn.counters.at("nodes"), 2000);  // seed 003's N, set
   EXPECT_LE(fn.counters.at("tree_nodes"), 301);
   EXPECT_GE(fn.counters.at("removed_nodes"), 1600);
   EXPECT_GT(fn.counters.at("rewires"), 0);
-  const PlanResult mode1 = make("rrt", {{"max_nodes", "2000"}})->solve(prob);
-  const PlanResult mode2 = make("rrt", {{"mode", "2"}, {"max_nodes", "2000"}})->solve(prob);
+  const PlanResult mode1 = make("rrt", {{"max_nodes", "2000"}})->solve(prob, StopToken::untimed());
+  const PlanResult mode2 =
+      make("rrt", {{"mode", "2"}, {"max_nodes", "2000"}})->solve(prob, StopToken::untimed());
   EXPECT_LT(mode1.counters.at("nodes"), 2000);
   EXPECT_EQ(mode2.counters.at("nodes"), 2000);
   EXPECT_EQ(mode1.path.waypoints, mode2.path.waypoints);  // RRT never improves its path
@@ -251,7 +254,7 @@ TEST(SamplingPlanners, PlanarProblemsStayInTheStartPlane) {
   prob.inflation = 0.3;
   prob.planar = true;
   for (const auto& name : kPlanners) {
-    const PlanResult r = make(name, {{"time_limit", "0.1"}})->solve(prob);
+    const PlanResult r = make(name, {{"time_limit", "0.1"}})->solve(prob, StopToken::untimed());
     ASSERT_TRUE(r.success) << name;
     for (const auto& p : r.path.waypoints) EXPECT_EQ(p.z(), 0.5) << name;
   }
@@ -262,8 +265,9 @@ TEST(SamplingPlanners, ShortcuttingShortensAndKeepsThePathFree) {
   PlanningProblem prob = acrossClutter(w);
   for (const auto& name : kPlanners) {
     SCOPED_TRACE(name);
-    const PlanResult plain = make(name, {{"max_nodes", "2000"}})->solve(prob);
-    const PlanResult cut = make(name, {{"shortcut", "true"}, {"max_nodes", "2000"}})->solve(prob);
+    const PlanResult plain = make(name, {{"max_nodes", "2000"}})->solve(prob, StopToken::untimed());
+    const PlanResult cut = make(name, {{"shortcut", "true"}, {"max_nodes", "2000"}})
+                               ->solve(prob, StopToken::untimed());
     expectPathValid(prob, cut);
     EXPECT_LE(cut.path.length(), plain.path.length() + 1e-9);
     EXPECT_LT(cut.path.size(), plain.path.size());

@@ -32,7 +32,7 @@ TEST(SamplingTimeLimit, RrtConnectWithDefaultsCrossesNarrowWindowForEverySeed) {
     auto planner = make("rrt_connect");
     for (std::uint64_t seed = 1; seed <= 10; ++seed) {
       prob.seed = seed;
-      const PlanResult r = planner->solve(prob);
+      const PlanResult r = planner->solve(prob, StopToken::untimed());
       ASSERT_TRUE(r.success) << "inflation " << inflation << " seed " << seed << ": " << r.message;
       EXPECT_EQ(r.path.waypoints.front(), prob.start);
       EXPECT_EQ(r.path.waypoints.back(), prob.goal);
@@ -46,7 +46,7 @@ TEST(SamplingTimeLimit, PrmWithDefaultsCrossesNarrowWindow) {
   PlanningProblem prob = throughNarrowWindow(w, 0.3);
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
     prob.seed = seed;
-    const PlanResult r = make("prm")->solve(prob);
+    const PlanResult r = make("prm")->solve(prob, StopToken::untimed());
     ASSERT_TRUE(r.success) << "seed " << seed << ": " << r.message;
     EXPECT_GE(smallestPathClearance(w, r.path), 0.3 - 1e-9);
   }
@@ -56,7 +56,8 @@ TEST(SamplingTimeLimit, PrmWithDefaultsCrossesNarrowWindow) {
 TEST(SamplingTimeLimit, MaxNodesStopsOnlyWhenSet) {
   const World w = narrowWindowWorld();
   const PlanningProblem prob = throughNarrowWindow(w, 0.45);
-  const PlanResult capped = make("rrt_connect", {{"max_nodes", "20"}})->solve(prob);
+  const PlanResult capped =
+      make("rrt_connect", {{"max_nodes", "20"}})->solve(prob, StopToken::untimed());
   EXPECT_FALSE(capped.success);
   EXPECT_EQ(counter(capped, "nodes"), 20);
   EXPECT_NE(capped.message.find("no path within max_nodes = 20"), std::string::npos)
@@ -70,9 +71,11 @@ TEST(SamplingTimeLimit, RrtStarImprovesUntilItsTimeLimitAndModeOneStopsAtFirstPa
   const World w = narrowWindowWorld();
   PlanningProblem prob = throughNarrowWindow(w, 0.3);
   prob.seed = 4;
-  const PlanResult first = make("rrt_star", {{"mode", "1"}})->solve(prob);
-  const PlanResult brief = make("rrt_star", {{"time_limit", "0.05"}})->solve(prob);
-  const PlanResult longer = make("rrt_star", {{"time_limit", "0.3"}})->solve(prob);
+  const PlanResult first = make("rrt_star", {{"mode", "1"}})->solve(prob, StopToken::untimed());
+  const PlanResult brief =
+      make("rrt_star", {{"time_limit", "0.05"}})->solve(prob, StopToken::untimed());
+  const PlanResult longer =
+      make("rrt_star", {{"time_limit", "0.3"}})->solve(prob, StopToken::untimed());
   ASSERT_TRUE(first.success && brief.success && longer.success);
   EXPECT_EQ(counter(first, "nodes"), counter(first, "first_path_nodes"));
   EXPECT_EQ(counter(longer, "stopped_by_time_limit"), 1);
@@ -93,7 +96,7 @@ TEST(SamplingTimeLimit, AnytimeDefaultImprovesForOneSecondAndHonoursTheProblemLi
   const World w = narrowWindowWorld(4.0);  // a wide window: a first path comes at once
   PlanningProblem prob = throughNarrowWindow(w, 0.3);
   prob.time_limit_s = 0.2;
-  const PlanResult r = make("informed_rrt_star")->solve(prob);
+  const PlanResult r = make("informed_rrt_star")->solve(prob, StopToken::untimed());
   ASSERT_TRUE(r.success) << r.message;
   EXPECT_LT(r.time_ms, 600.0);  // the problem's 0.2 s, not the planner's 1 s
   ParamSet p("test");
@@ -107,7 +110,8 @@ TEST(SamplingTimeLimit, AnytimeDefaultImprovesForOneSecondAndHonoursTheProblemLi
 TEST(SamplingTimeLimit, ThesisModeTwoUsesTheNodeBudgetNotTheClock) {
   const World w = narrowWindowWorld();
   const PlanningProblem prob = throughNarrowWindow(w, 0.3);
-  const PlanResult r = make("rrt_star_thesis", {{"mode", "2"}, {"max_nodes", "1500"}})->solve(prob);
+  const PlanResult r = make("rrt_star_thesis", {{"mode", "2"}, {"max_nodes", "1500"}})
+                           ->solve(prob, StopToken::untimed());
   EXPECT_EQ(counter(r, "nodes"), 1500);
 }
 

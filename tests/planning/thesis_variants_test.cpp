@@ -52,7 +52,8 @@ TEST(LazyThetaStarVariants, TheThesisVariantIsLongerOnAHandWorkedMap) {
   q.goal = {5, 3, 0};
   LazyThetaStar ours;
   LazyThetaStar thesis(GridMoves{0, false}, "", LazyThetaStar::Variant::kExpandAtOnce);
-  const GridPlanResult a = ours.solveGrid(q), b = thesis.solveGrid(q);
+  const GridPlanResult a = ours.solveGrid(q, StopToken::untimed()),
+                       b = thesis.solveGrid(q, StopToken::untimed());
   ASSERT_TRUE(a.success);
   ASSERT_TRUE(b.success);
   EXPECT_NEAR(a.length, std::sqrt(10.0) + std::sqrt(5.0) + 1.0, 1e-9);

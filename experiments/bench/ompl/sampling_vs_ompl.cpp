@@ -134,7 +134,7 @@ Outcome runOurs(const BenchWorld& b, const std::string& planner,
   prob.inflation = kInflation;
   prob.time_limit_s = time_limit;
   prob.seed = seed;
-  const cosim::PlanResult r = solver->solve(prob);
+  const cosim::PlanResult r = solver->solve(prob, cosim::StopToken::untimed());
   return {r.success, r.time_ms, r.success ? r.path.length() : 0.0};
 }
 
