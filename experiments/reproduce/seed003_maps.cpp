@@ -1,4 +1,4 @@
-#include "planning/worlds/seed003_maps.h"
+#include "experiments/reproduce/seed003_maps.h"
 
 #include <cmath>
 

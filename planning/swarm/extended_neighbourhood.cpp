@@ -1,4 +1,4 @@
-#include "planning/swarm/extended_neighbourhood_002.h"
+#include "planning/swarm/extended_neighbourhood.h"
 
 #include <algorithm>
 #include <cmath>

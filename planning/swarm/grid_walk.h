@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/stop_token.h"
-#include "planning/swarm/extended_neighbourhood_002.h"
+#include "planning/swarm/extended_neighbourhood.h"
 
 namespace cosim {
 

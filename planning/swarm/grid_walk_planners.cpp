@@ -1,9 +1,8 @@
-#include "planning/swarm/planners_002.h"
+#include "planning/swarm/grid_walk_planners.h"
 
 #include <string>
 
 #include "core/input_error.h"
-#include "planning/swarm/acs_maklink.h"
 #include "planning/swarm/ant_grid.h"
 #include "planning/swarm/genetic_algorithm.h"
 #include "planning/swarm/grid_planner_factory.h"
@@ -86,7 +85,7 @@ PsoParams readPsoParams(ParamSet& params) {
 }
 }  // namespace
 
-void registerAnt002Planners(PlannerRegistry& r) {
+void registerGridWalkPlanners(PlannerRegistry& r) {
   r.addGridPlanner("ant_grid", "swarm",
                    "seed 002 grid ant algorithm: node pheromone, heading heuristic, black list, "
                    "best-ant update; 4/8/16/24/32 directions (plans on the start's layer)",
@@ -103,7 +102,6 @@ void registerAnt002Planners(PlannerRegistry& r) {
                    "particle swarm optimisation with priority encoding (Mohemmed et al. 2008) "
                    "on the grid (plans on the start's layer)",
                    gridPlannerFactory<Pso>(readPsoParams));
-  registerAcsMaklinkPlanner(r);
 }
 
 }  // namespace cosim

@@ -1,4 +1,4 @@
-#include "planning/swarm/layer_walk_search_002.h"
+#include "planning/swarm/layer_walk_search.h"
 
 namespace cosim {
 

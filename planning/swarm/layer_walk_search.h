@@ -1,6 +1,6 @@
 #pragma once
 // What seed 002's walk-based grid planners (ant_grid, mmas, pso, and ga for its first population)
-// share around their agents' walks: the query's start layer (planar_layer_002.h) and move set, one
+// share around their agents' walks: the query's start layer (planar_layer.h) and move set, one
 // GridWalk on it, what the end of a walk means for the whole search, and the shortest path walked
 // so far. A walk that proves the goal unreachable ends the query with that message; one that runs
 // out of time ends the walking; a path that reached the goal is offered as the new best. The
@@ -12,9 +12,9 @@
 
 #include "core/stop_token.h"
 #include "planning/grid/grid_planner.h"
-#include "planning/swarm/extended_neighbourhood_002.h"
-#include "planning/swarm/grid_walk_002.h"
-#include "planning/swarm/planar_layer_002.h"
+#include "planning/swarm/extended_neighbourhood.h"
+#include "planning/swarm/grid_walk.h"
+#include "planning/swarm/planar_layer.h"
 
 namespace cosim {
 

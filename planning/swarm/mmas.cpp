@@ -6,9 +6,9 @@
 #include <random>
 
 #include "planning/grid/grid_distance.h"
-#include "planning/swarm/grid_walk_002.h"
-#include "planning/swarm/layer_walk_search_002.h"
-#include "planning/swarm/path_shortcut_002.h"
+#include "planning/swarm/grid_walk.h"
+#include "planning/swarm/layer_walk_search.h"
+#include "planning/swarm/path_shortcut.h"
 
 namespace cosim {
 

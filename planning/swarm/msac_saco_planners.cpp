@@ -1,50 +1,15 @@
-#include "planning/swarm/planners_000.h"
+#include "planning/swarm/msac_saco_planners.h"
 
-#include "planning/navigation/d_star_lite.h"
-#include "planning/navigation/robot_navigation_ant.h"
 #include "planning/swarm/grid_planner_factory.h"
 
 namespace cosim {
 
-namespace {
 // Seed 000's experiments use unconditional diagonals; our default is the conditional move (no
 // corner cutting), which keeps a vehicle of one cell clear of obstacle corners (GridWorldPlanner
 // paths) and is the move set of the MovingAI optimal lengths. The reproductions set it false.
 bool readConditionalDiagonal(ParamSet& params) {
   return params.getBool("conditional_diagonal", true);
 }
-
-ObstaclePrediction readPrediction(ParamSet& params) {
-  return params.getString("prediction", "constant_velocity", {"constant_velocity", "trajectory"}) ==
-                 "trajectory"
-             ? ObstaclePrediction::Trajectory
-             : ObstaclePrediction::ConstantVelocity;
-}
-
-RnaParams readRnaParams(ParamSet& params, bool wave_front) {
-  RnaParams p;
-  p.wave_front = wave_front;
-  p.sight = params.getInt("sight", p.sight, 1, 1000);
-  p.oscillation_any = params.getString("oscillation", "any", {"previous", "any"}) == "any";
-  p.max_replans = params.getInt("max_replans", p.max_replans, 0, 1000);
-  p.max_waits = params.getInt("max_waits", p.max_waits, 0, 100000);
-  p.prediction = readPrediction(params);
-  p.conditional_diagonal = readConditionalDiagonal(params);
-  if (!wave_front) {
-    p.msac.ants = params.getInt("ants", p.msac.ants, 1, 127);
-    p.msac.iterations = params.getInt("iterations", p.msac.iterations, 1, 1000);
-  }
-  return p;
-}
-
-DStarLiteParams readDStarLiteParams(ParamSet& params) {
-  DStarLiteParams p;
-  p.sight = params.getInt("sight", p.sight, 1, 1000);
-  p.conditional_diagonal = readConditionalDiagonal(params);
-  p.prediction = readPrediction(params);
-  return p;
-}
-}  // namespace
 
 MsacParams readMsacParams(ParamSet& params) {
   MsacParams p;
@@ -83,7 +48,7 @@ SacoParams readSacoParams(ParamSet& params, const std::string& name) {
   return p;
 }
 
-void registerAnt000Planners(PlannerRegistry& r) {
+void registerMsacSacoPlanners(PlannerRegistry& r) {
   r.addGridPlanner("msac", "swarm",
                    "Multi-Scout Ants Cooperation: two greedy scout-ant groups from start and goal "
                    "(seed 000)",
@@ -93,19 +58,6 @@ void registerAnt000Planners(PlannerRegistry& r) {
   r.addGridPlanner("sacodm", "swarm",
                    "SACO with distance (beta) and memory (gamma) terms (seed 000)",
                    gridPlannerFactory<Saco>(readSacoParams, std::string("sacodm")));
-  for (const bool wave_front : {false, true}) {
-    const std::string name = wave_front ? "wf_rna" : "rna";
-    r.addGridPlanner(name, "navigation",
-                     wave_front ? "RNA with a wave-front local planner: drives through the map "
-                                  "seen only through its field of view (seed 000)"
-                                : "Robot Navigation Ant: drives through the map seen only through "
-                                  "its field of view, re-planning with MSAC each step (seed 000)",
-                     navigatorFactory<RobotNavigationAnt>(name, readRnaParams, wave_front));
-  }
-  r.addGridPlanner("d_star_lite", "navigation",
-                   "D* Lite: incremental replanning while driving through a map seen only "
-                   "through the field of view (Koenig & Likhachev 2002)",
-                   navigatorFactory<DStarLite>("d_star_lite", readDStarLiteParams));
 }
 
 }  // namespace cosim

@@ -1,4 +1,4 @@
-#include "planning/swarm/path_shortcut_002.h"
+#include "planning/swarm/path_shortcut.h"
 
 #include <algorithm>
 #include <cmath>

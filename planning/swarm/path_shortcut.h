@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "planning/swarm/extended_neighbourhood_002.h"
+#include "planning/swarm/extended_neighbourhood.h"
 
 namespace cosim {
 

@@ -1,4 +1,4 @@
-#include "planning/swarm/planar_layer_002.h"
+#include "planning/swarm/planar_layer.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "planning/swarm/planar_obstacles_002.h"
+#include "planning/swarm/planar_obstacles.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "planning/worlds/grid_map_world.h"
+#include "planning/world/grid_map_world.h"
 
 #include <string>
 #include <vector>

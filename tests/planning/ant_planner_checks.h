@@ -1,5 +1,6 @@
 #pragma once
-// Checks shared by the seed-000 planner tests (MSAC, SACO, navigators).
+// Checks shared by the tests of the 8-connected ant planners of seed 000 (MSAC, SACO) and the
+// navigators.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,7 +11,7 @@
 
 namespace cosim::test {
 
-inline GridQuery ants000Query(const OccupancyGrid& g, Cell s, Cell t, std::uint64_t seed = 1) {
+inline GridQuery antQuery(const OccupancyGrid& g, Cell s, Cell t, std::uint64_t seed = 1) {
   GridQuery q;
   q.grid = &g;
   q.start = s;

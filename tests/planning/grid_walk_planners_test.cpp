@@ -13,10 +13,10 @@
 #include "core/input_error.h"
 #include "planning/planner_registry.h"
 #include "planning/swarm/ant_grid.h"
-#include "planning/swarm/extended_neighbourhood_002.h"
+#include "planning/swarm/extended_neighbourhood.h"
 #include "planning/swarm/genetic_algorithm.h"
 #include "planning/swarm/mmas.h"
-#include "planning/swarm/path_shortcut_002.h"
+#include "planning/swarm/path_shortcut.h"
 #include "planning/swarm/pso.h"
 
 using namespace cosim;
@@ -118,7 +118,7 @@ GridPlanResult solve(GridPlanner& p, const OccupancyGrid& g, const Cell& s, cons
 
 }  // namespace
 
-TEST(Ants002Neighbourhood, SizesAreThoseOfTheSeedsTable) {
+TEST(ExtendedNeighbourhood, SizesAreThoseOfTheSeedsTable) {
   EXPECT_EQ(ExtendedNeighbourhood(4).directions(), 4);
   EXPECT_EQ(ExtendedNeighbourhood(8).directions(), 8);
   EXPECT_EQ(ExtendedNeighbourhood(16).directions(), 16);
@@ -131,7 +131,7 @@ TEST(Ants002Neighbourhood, SizesAreThoseOfTheSeedsTable) {
   EXPECT_THROW(ExtendedNeighbourhood(30), std::invalid_argument);
 }
 
-TEST(Ants002Neighbourhood, LongMoveIsBlockedByACellItsSegmentCrosses) {
+TEST(ExtendedNeighbourhood, LongMoveIsBlockedByACellItsSegmentCrosses) {
   OccupancyGrid g(5, 5);
   g.setBlocked(1, 0, 0, true);  // the knight move (0,0) -> (2,1) passes through (1,0)
   const ExtendedNeighbourhood n(24);
@@ -144,7 +144,7 @@ TEST(Ants002Neighbourhood, LongMoveIsBlockedByACellItsSegmentCrosses) {
   EXPECT_TRUE(ExtendedNeighbourhood(32).legalMove(h, {0, 0, 0}, {0, 3, 0}));
 }
 
-TEST(Ants002Neighbourhood, UnitMovesAgreeWithNoCornerCuttingRuleOnRandomMap) {
+TEST(ExtendedNeighbourhood, UnitMovesAgreeWithNoCornerCuttingRuleOnRandomMap) {
   const OccupancyGrid g = randomMap();
   const ExtendedNeighbourhood n(8);
   int checked = 0;
@@ -160,7 +160,7 @@ TEST(Ants002Neighbourhood, UnitMovesAgreeWithNoCornerCuttingRuleOnRandomMap) {
   EXPECT_GT(checked, 7000);
 }
 
-TEST(Ants002Shortcut, ZigzagOnEmptyGridBecomesOctileOptimal) {
+TEST(PathShortcut, ZigzagOnEmptyGridBecomesOctileOptimal) {
   OccupancyGrid g(20, 20);
   std::vector<Cell> path;
   for (int x = 0; x <= 10; ++x) path.push_back({x, x % 2, 0});  // zigzag along y = 0/1
@@ -175,7 +175,7 @@ TEST(Ants002Shortcut, ZigzagOnEmptyGridBecomesOctileOptimal) {
   EXPECT_EQ(path.back(), (Cell{10, 6, 0}));
 }
 
-TEST(Ants002Shortcut, DetoursAroundAWallAreKeptAndPathStaysLegal) {
+TEST(PathShortcut, DetoursAroundAWallAreKeptAndPathStaysLegal) {
   OccupancyGrid g(12, 12);
   for (int y = 0; y <= 8; ++y) g.setBlocked(5, y, 0, true);  // wall x = 5, open above y = 8
   // A legal but wasteful path: up to y = 11, across, down again.
@@ -193,7 +193,7 @@ TEST(Ants002Shortcut, DetoursAroundAWallAreKeptAndPathStaysLegal) {
   EXPECT_NEAR(gridPathLength(path), 4 * std::sqrt(2.0) + 16, 1e-9);
 }
 
-TEST(Ants002AntGrid, HeadingCostPrefersStraightMovesTowardTheGoal) {
+TEST(AntGrid, HeadingCostPrefersStraightMovesTowardTheGoal) {
   EXPECT_DOUBLE_EQ(AntGrid::headingCost(0.0, true, 0.0, 0.0), 1.0);
   // 90 degrees off the goal and a 90-degree turn: 1 + 90^2 + 90.
   EXPECT_NEAR(AntGrid::headingCost(0.0, true, M_PI / 2, 0.0), 8191.0, 1e-9);
@@ -202,7 +202,7 @@ TEST(Ants002AntGrid, HeadingCostPrefersStraightMovesTowardTheGoal) {
   EXPECT_DOUBLE_EQ(AntGrid::headingCost(M_PI, true, -M_PI, M_PI), 1.0);     // same direction
 }
 
-TEST(Ants002AntGrid, EveryNeighbourhoodGivesLegalPathsNoShorterThanItsOptimum) {
+TEST(AntGrid, EveryNeighbourhoodGivesLegalPathsNoShorterThanItsOptimum) {
   const OccupancyGrid g = randomMap();
   for (int directions : {4, 8, 16, 24, 32}) {
     AntGridParams p;
@@ -224,7 +224,7 @@ TEST(Ants002AntGrid, EveryNeighbourhoodGivesLegalPathsNoShorterThanItsOptimum) {
   }
 }
 
-TEST(Ants002AntGrid, PheromoneLearningShortensTheBestRandomWalk) {
+TEST(AntGrid, PheromoneLearningShortensTheBestRandomWalk) {
   const OccupancyGrid g = randomMap();
   AntGridParams one;
   one.iterations = 1;  // the best of 20 heuristic walks, no pheromone feedback yet
@@ -238,7 +238,7 @@ TEST(Ants002AntGrid, PheromoneLearningShortensTheBestRandomWalk) {
   EXPECT_LT(colony_sum, 0.95 * first_sum);
 }
 
-TEST(Ants002AntGrid, LongerMovesGiveShorterPathsThanFourDirections) {
+TEST(AntGrid, LongerMovesGiveShorterPathsThanFourDirections) {
   const OccupancyGrid g = randomMap();
   const auto q = queries(8)[7];  // (24,0) -> (0,29), 39.5 cells with 8 directions
   const Cell s{q.start_x, q.start_y, 0}, t{q.goal_x, q.goal_y, 0};
@@ -247,7 +247,7 @@ TEST(Ants002AntGrid, LongerMovesGiveShorterPathsThanFourDirections) {
   EXPECT_LT(referenceOptimum(g, s, t, 32), referenceOptimum(g, s, t, 8) - 0.5);
 }
 
-TEST(Ants002Mmas, MeanGapBelowTwoPercentOnRandom32) {
+TEST(Mmas, MeanGapBelowTwoPercentOnRandom32) {
   const OccupancyGrid g = randomMap();
   Mmas planner;
   double gap_sum = 0.0;
@@ -262,7 +262,7 @@ TEST(Ants002Mmas, MeanGapBelowTwoPercentOnRandom32) {
   EXPECT_LT(gap_sum / qs.size(), 0.02);
 }
 
-TEST(Ants002Ga, LegalPathsAndElitismNeverLosesTheBest) {
+TEST(GeneticAlgorithm, LegalPathsAndElitismNeverLosesTheBest) {
   const OccupancyGrid g = randomMap();
   const auto q = queries(2)[1];
   const Cell s{q.start_x, q.start_y, 0}, t{q.goal_x, q.goal_y, 0};
@@ -279,7 +279,7 @@ TEST(Ants002Ga, LegalPathsAndElitismNeverLosesTheBest) {
   EXPECT_EQ(r1.counters.at("iterations"), 50);
 }
 
-TEST(Ants002AntGrid, SeedsTurnHeuristicCountsDirectionCodeSteps) {
+TEST(AntGrid, SeedsTurnHeuristicCountsDirectionCodeSteps) {
   EXPECT_DOUBLE_EQ(AntGrid::turnCost(0.0, false, M_PI / 2), 1.0);  // first move: no turn
   EXPECT_DOUBLE_EQ(AntGrid::turnCost(0.0, true, 0.0), 1.0);
   EXPECT_NEAR(AntGrid::turnCost(0.0, true, M_PI / 4), 2.0, 1e-12);
@@ -287,7 +287,7 @@ TEST(Ants002AntGrid, SeedsTurnHeuristicCountsDirectionCodeSteps) {
   EXPECT_NEAR(AntGrid::turnCost(M_PI, true, -M_PI), 1.0, 1e-12);
 }
 
-TEST(Ants002AntGrid, TurnOnlyHeuristicWandersFarFromTheOptimum) {
+TEST(AntGrid, TurnOnlyHeuristicWandersFarFromTheOptimum) {
   // Nothing in the seed's heuristic pulls towards the goal: on an open 40 x 40 grid the
   // best of 20 ants x 10 iterations stays well above the straight line, where the default
   // heuristic (with the goal direction) finds it.
@@ -308,7 +308,7 @@ TEST(Ants002AntGrid, TurnOnlyHeuristicWandersFarFromTheOptimum) {
   EXPECT_GT(a.length, 1.5 * optimum);
 }
 
-TEST(Ants002Ga, PlainVariantEvolvesLegalPathsFromRandomWalks) {
+TEST(GeneticAlgorithm, PlainVariantEvolvesLegalPathsFromRandomWalks) {
   const OccupancyGrid g = randomMap();
   const auto q = queries(2)[1];
   const Cell s{q.start_x, q.start_y, 0}, t{q.goal_x, q.goal_y, 0};
@@ -327,7 +327,7 @@ TEST(Ants002Ga, PlainVariantEvolvesLegalPathsFromRandomWalks) {
   EXPECT_GT(r1.length, guided.length);           // the guided GA with its mutation is better
 }
 
-TEST(Ants002Pso, DecodedPathsAreLegalAndNearOptimalOnRandom32) {
+TEST(Pso, DecodedPathsAreLegalAndNearOptimalOnRandom32) {
   const OccupancyGrid g = randomMap();
   Pso planner;
   for (const auto& q : queries(3)) {
@@ -339,7 +339,7 @@ TEST(Ants002Pso, DecodedPathsAreLegalAndNearOptimalOnRandom32) {
   }
 }
 
-TEST(Ants002Planners, SameSeedSamePathDifferentSeedsExplore) {
+TEST(GridWalkPlanners, SameSeedSamePathDifferentSeedsExplore) {
   const OccupancyGrid g = randomMap();
   const auto q = queries(8)[7];
   const Cell s{q.start_x, q.start_y, 0}, t{q.goal_x, q.goal_y, 0};
@@ -353,7 +353,7 @@ TEST(Ants002Planners, SameSeedSamePathDifferentSeedsExplore) {
   }
 }
 
-TEST(Ants002Planners, EnclosedGoalIsReportedUnreachableQuickly) {
+TEST(GridWalkPlanners, EnclosedGoalIsReportedUnreachableQuickly) {
   OccupancyGrid g(40, 40);
   for (int i = 20; i <= 24; ++i) {  // a closed ring around (22, 22)
     g.setBlocked(i, 20, 0, true);
@@ -371,7 +371,7 @@ TEST(Ants002Planners, EnclosedGoalIsReportedUnreachableQuickly) {
   }
 }
 
-TEST(Ants002Planners, ThreeDGridPlansOnStartLayerThenClimbs) {
+TEST(GridWalkPlanners, ThreeDGridPlansOnStartLayerThenClimbs) {
   OccupancyGrid g(16, 16, 4);
   for (int y = 0; y < 12; ++y) g.setBlocked(8, y, 1, true);  // a wall on layer 1
   ParamSet params;
@@ -396,7 +396,7 @@ TEST(Ants002Planners, ThreeDGridPlansOnStartLayerThenClimbs) {
       << blocked.message;
 }
 
-TEST(Ants002Planners, BadParametersAreInputErrors) {
+TEST(GridWalkPlanners, BadParametersAreInputErrors) {
   ParamSet bad_directions("s.yaml");
   bad_directions.set("directions", "30", "line 3");
   EXPECT_THROW(makeGridPlanner("ant_grid", bad_directions), InputError);

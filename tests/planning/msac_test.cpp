@@ -7,15 +7,16 @@
 #include "planning/grid/movingai.h"
 #include "core/input_error.h"
 #include "planning/planner_registry.h"
-#include "planning/swarm/ant_common_000.h"
+#include "planning/swarm/ant_grid_view.h"
+#include "planning/swarm/ant_path_processing.h"
 #include "planning/swarm/msac.h"
-#include "tests/planning/ants000_grid_checks.h"
+#include "tests/planning/ant_planner_checks.h"
 
 using namespace cosim;
 
 namespace {
 
-using test::ants000Query;
+using test::antQuery;
 
 // A result from start to goal whose cells form a legal path of the reported length.
 void expectValidPath(const OccupancyGrid& g, const GridPlanResult& r, const Cell& start,
@@ -34,7 +35,7 @@ OccupancyGrid freeGrid(int n) {
 
 }  // namespace
 
-TEST(Ants000PathProcessing, CycleRemovalCutsEveryLoop) {
+TEST(AntPathProcessing, CycleRemovalCutsEveryLoop) {
   const OccupancyGrid g = freeGrid(10);
   const AntGridView grid(g, 0, false);
   AntPathProcessing processing(grid);
@@ -47,7 +48,7 @@ TEST(Ants000PathProcessing, CycleRemovalCutsEveryLoop) {
   EXPECT_EQ(path, expected);
 }
 
-TEST(Ants000PathProcessing, LightSmoothingKeepsTheLatestNeighbour) {
+TEST(AntPathProcessing, LightSmoothingKeepsTheLatestNeighbour) {
   const OccupancyGrid g = freeGrid(10);
   const AntGridView grid(g, 0, false);
   AntPathProcessing processing(grid);
@@ -60,7 +61,7 @@ TEST(Ants000PathProcessing, LightSmoothingKeepsTheLatestNeighbour) {
   EXPECT_NEAR(grid.pathLength(path), 2 * std::sqrt(2.0), 1e-12);
 }
 
-TEST(Ants000PathProcessing, ConditionalDiagonalForbidsCuttingACorner) {
+TEST(AntPathProcessing, ConditionalDiagonalForbidsCuttingACorner) {
   OccupancyGrid g = freeGrid(4);
   g.setBlocked(1, 0, 0, true);
   const AntGridView conditional(g, 0, true), free_diagonal(g, 0, false);
@@ -70,7 +71,7 @@ TEST(Ants000PathProcessing, ConditionalDiagonalForbidsCuttingACorner) {
 
 // Seed 000 Table 6.7 / claim 1: on the free 50x50 scene (start-goal 46 diagonal steps, 65.05),
 // MSAC with MAX = 3, m = 2, 4, 8 finds the optimum in every run.
-TEST(Ants000Msac, FindsTheOptimalDiagonalOnTheFreeSceneInEveryRun) {
+TEST(Msac, FindsTheOptimalDiagonalOnTheFreeSceneInEveryRun) {
   const OccupancyGrid g = freeGrid(50);
   for (int m : {2, 4, 8})
     for (std::uint64_t seed = 1; seed <= 10; ++seed) {
@@ -78,13 +79,13 @@ TEST(Ants000Msac, FindsTheOptimalDiagonalOnTheFreeSceneInEveryRun) {
       p.ants = m;
       p.conditional_diagonal = false;
       Msac msac(p);
-      const GridPlanResult r = msac.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}, seed));
+      const GridPlanResult r = msac.solveGrid(antQuery(g, {2, 2, 0}, {48, 48, 0}, seed));
       expectValidPath(g, r, {2, 2, 0}, {48, 48, 0}, false);
       EXPECT_NEAR(r.length, 46 * std::sqrt(2.0), 1e-9) << "m " << m << " seed " << seed;
     }
 }
 
-TEST(Ants000Msac, PathsOnRandom32AreValidAndNearOptimal) {
+TEST(Msac, PathsOnRandom32AreValidAndNearOptimal) {
   const OccupancyGrid g = readMovingAIMap(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map");
   const auto scen =
       readMovingAIScenario(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10-random-1.scen");
@@ -93,7 +94,7 @@ TEST(Ants000Msac, PathsOnRandom32AreValidAndNearOptimal) {
   int n = 0;
   for (std::size_t i = 0; i < scen.size() && n < 40; i += 2, ++n) {
     const Cell s{scen[i].start_x, scen[i].start_y, 0}, t{scen[i].goal_x, scen[i].goal_y, 0};
-    const GridPlanResult r = msac.solveGrid(ants000Query(g, s, t, i + 1));
+    const GridPlanResult r = msac.solveGrid(antQuery(g, s, t, i + 1));
     expectValidPath(g, r, s, t, true);
     const GridPlanResult best = planAStar(g, s, t);
     ASSERT_TRUE(best.success);
@@ -104,30 +105,30 @@ TEST(Ants000Msac, PathsOnRandom32AreValidAndNearOptimal) {
   EXPECT_LT(gap_sum / n, 0.10);
 }
 
-TEST(Ants000Msac, SameSeedSamePathOtherSeedMayDiffer) {
+TEST(Msac, SameSeedSamePathOtherSeedMayDiffer) {
   const OccupancyGrid g = readMovingAIMap(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map");
   Msac msac;
   const Cell s{1, 1, 0}, t{30, 28, 0};
   ASSERT_FALSE(g.blocked(s));
   ASSERT_FALSE(g.blocked(t));
-  const GridPlanResult a = msac.solveGrid(ants000Query(g, s, t, 7)),
-                       b = msac.solveGrid(ants000Query(g, s, t, 7));
+  const GridPlanResult a = msac.solveGrid(antQuery(g, s, t, 7)),
+                       b = msac.solveGrid(antQuery(g, s, t, 7));
   ASSERT_TRUE(a.success);
   EXPECT_TRUE(a.cells == b.cells);
 }
 
-TEST(Ants000Msac, UnreachableGoalIsReportedWithinTheStepBudget) {
+TEST(Msac, UnreachableGoalIsReportedWithinTheStepBudget) {
   OccupancyGrid g = freeGrid(30);
   for (int y = 0; y < 30; ++y) g.setBlocked(15, y, 0, true);  // a wall across the map
   Msac msac;
-  const GridPlanResult r = msac.solveGrid(ants000Query(g, {2, 2, 0}, {28, 28, 0}));
+  const GridPlanResult r = msac.solveGrid(antQuery(g, {2, 2, 0}, {28, 28, 0}));
   EXPECT_FALSE(r.success);
   EXPECT_FALSE(r.message.empty());
   EXPECT_EQ(r.counters.at("iterations"), 3);
   EXPECT_EQ(r.counters.at("steps"), 3 * 30 * 30 / 2);
 }
 
-TEST(Ants000Msac, AntsBackOutOfADeadEndCorridorAndMarkIt) {
+TEST(Msac, AntsBackOutOfADeadEndCorridorAndMarkIt) {
   // A wall between start and goal with its passage far off (y = 2), and a one-cell-wide blind
   // corridor (y = 14, x = 10..14) pointing straight at the goal: the greedy ants walk into it.
   OccupancyGrid g(30, 30);
@@ -140,7 +141,7 @@ TEST(Ants000Msac, AntsBackOutOfADeadEndCorridorAndMarkIt) {
   MsacParams p;
   p.conditional_diagonal = false;
   Msac msac(p);
-  const GridPlanResult r = msac.solveGrid(ants000Query(g, {5, 14, 0}, {25, 14, 0}, 3));
+  const GridPlanResult r = msac.solveGrid(antQuery(g, {5, 14, 0}, {25, 14, 0}, 3));
   expectValidPath(g, r, {5, 14, 0}, {25, 14, 0}, false);
   EXPECT_GE(r.counters.at("dead_end_marks"), 4);  // x = 11..14 have one way out
   for (const Cell& c : r.cells) EXPECT_FALSE(c.y == 14 && c.x >= 12 && c.x <= 14);
@@ -148,33 +149,33 @@ TEST(Ants000Msac, AntsBackOutOfADeadEndCorridorAndMarkIt) {
   EXPECT_LT(r.length, 1.2 * best.length);
 }
 
-TEST(Ants000Msac, AllThreeTabuTableVersionsFindTheFreeSceneOptimum) {
+TEST(Msac, AllThreeTabuTableVersionsFindTheFreeSceneOptimum) {
   const OccupancyGrid g = freeGrid(50);
   for (int v : {1, 2, 3}) {
     MsacParams p;
     p.tabu_version = v;
     p.conditional_diagonal = false;
     Msac msac(p);
-    const GridPlanResult r = msac.solveGrid(ants000Query(g, {2, 2, 0}, {48, 48, 0}));
+    const GridPlanResult r = msac.solveGrid(antQuery(g, {2, 2, 0}, {48, 48, 0}));
     ASSERT_TRUE(r.success) << "version " << v;
     EXPECT_NEAR(r.length, 65.0538, 1e-3);
   }
 }
 
-TEST(Ants000Msac, PlansOnTheStartLayerOfA3DGridAndRejectsLayerChanges) {
+TEST(Msac, PlansOnTheStartLayerOfA3DGridAndRejectsLayerChanges) {
   OccupancyGrid g(20, 20, 3);
   for (int x = 0; x < 20; ++x)
     for (int y = 0; y < 20; ++y) g.setBlocked(x, y, 0, true);  // layer 0 solid
   Msac msac;
-  const GridPlanResult r = msac.solveGrid(ants000Query(g, {1, 1, 1}, {18, 17, 1}));
+  const GridPlanResult r = msac.solveGrid(antQuery(g, {1, 1, 1}, {18, 17, 1}));
   ASSERT_TRUE(r.success) << r.message;
   for (const Cell& c : r.cells) EXPECT_EQ(c.z, 1);
-  const GridPlanResult bad = msac.solveGrid(ants000Query(g, {1, 1, 1}, {18, 17, 2}));
+  const GridPlanResult bad = msac.solveGrid(antQuery(g, {1, 1, 1}, {18, 17, 2}));
   EXPECT_FALSE(bad.success);
   EXPECT_NE(bad.message.find("2D planner"), std::string::npos);
 }
 
-TEST(Ants000Registry, MsacSacoSacodmAreGridPlannersWithTheSeedsParameterNames) {
+TEST(MsacSacoRegistry, MsacSacoSacodmAreGridPlannersWithTheSeedsParameterNames) {
   for (const char* name : {"msac", "saco", "sacodm"}) {
     const PlannerEntry* e = PlannerRegistry::instance().find(name);
     ASSERT_NE(e, nullptr) << name;
@@ -200,7 +201,7 @@ TEST(Ants000Registry, MsacSacoSacodmAreGridPlannersWithTheSeedsParameterNames) {
 
 // The wider-range smoothing the seed's author proposes: a detour that light smoothing keeps
 // (it only looks one cell around each node) becomes the straight octile path.
-TEST(Ants000PathProcessing, WideSmoothingStraightensADetourLightSmoothingKeeps) {
+TEST(AntPathProcessing, WideSmoothingStraightensADetourLightSmoothingKeeps) {
   const OccupancyGrid g = freeGrid(12);
   const AntGridView grid(g, 0, true);
   AntPathProcessing processing(grid);
@@ -220,7 +221,7 @@ TEST(Ants000PathProcessing, WideSmoothingStraightensADetourLightSmoothingKeeps) 
   for (std::size_t i = 1; i < path.size(); ++i) EXPECT_TRUE(grid.adjacent(path[i - 1], path[i]));
 }
 
-TEST(Ants000PathProcessing, WideSmoothingNeverCutsThroughAnObstacle) {
+TEST(AntPathProcessing, WideSmoothingNeverCutsThroughAnObstacle) {
   OccupancyGrid g = freeGrid(12);
   for (int y = 0; y <= 5; ++y) g.setBlocked(5, y, 0, true);  // wall the path must go round
   const AntGridView grid(g, 0, true);

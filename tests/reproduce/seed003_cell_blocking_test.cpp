@@ -3,9 +3,9 @@
 // the thesis's did; the default blocks every cell any point of which is near an obstacle.
 #include <gtest/gtest.h>
 
+#include "experiments/reproduce/seed003_maps.h"
 #include "planning/grid/basic_theta_star.h"
 #include "planning/planner_registry.h"
-#include "planning/worlds/seed003_maps.h"
 
 namespace cosim {
 namespace {

@@ -1,14 +1,14 @@
 // Seed 003's own RRT* (its Fig. 16 choose-parent, planner rrt_star_thesis) beside Karaman and
-// Frazzoli's (rrt_star), and the linear-scan nearest-neighbour search that reproduces the
-// thesis's cost structure without changing any answer.
+// Frazzoli's (rrt_star) on seed 003's maps, and the linear-scan nearest-neighbour search that
+// reproduces the thesis's cost structure without changing any answer.
 #include <gtest/gtest.h>
 
-#include <random>
+#include <map>
+#include <string>
 
 #include "core/input_error.h"
+#include "experiments/reproduce/seed003_maps.h"
 #include "planning/planner_registry.h"
-#include "planning/sampling/nearest_neighbor_index.h"
-#include "planning/worlds/seed003_maps.h"
 
 namespace cosim {
 namespace {
@@ -81,32 +81,6 @@ TEST(RrtStarThesis, LinearScanChangesTheCostNotTheTree) {
     ASSERT_TRUE(kd.success && scan.success);
     EXPECT_EQ(kd.path.waypoints, scan.path.waypoints);
     EXPECT_EQ(kd.counters.at("nodes"), scan.counters.at("nodes"));
-  }
-}
-
-TEST(NearestNeighborIndex, LinearScanAnswersAsTheKdTreeWithRemovals) {
-  NearestNeighborIndex tree(64), scan(64, true);
-  std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> u(0.0, 10.0);
-  for (int i = 0; i < 300; ++i) {
-    const Eigen::Vector3d p(u(rng), u(rng), u(rng));
-    EXPECT_EQ(tree.add(p), scan.add(p));
-    if (i % 7 == 3) {
-      tree.remove(static_cast<std::uint32_t>(i - 2));
-      scan.remove(static_cast<std::uint32_t>(i - 2));
-    }
-  }
-  ASSERT_EQ(tree.size(), scan.size());
-  std::vector<std::pair<std::uint32_t, double>> a, b;
-  for (int k = 0; k < 50; ++k) {
-    const Eigen::Vector3d q(u(rng), u(rng), u(rng));
-    EXPECT_EQ(tree.nearest(q), scan.nearest(q));
-    tree.withinRadius(q, 2.0, a);
-    scan.withinRadius(q, 2.0, b);
-    EXPECT_EQ(a, b);
-    tree.nearestK(q, 6, a);
-    scan.nearestK(q, 6, b);
-    EXPECT_EQ(a, b);
   }
 }
 

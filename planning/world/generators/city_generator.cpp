@@ -1,4 +1,4 @@
-#include "planning/worlds/generators/city_generator.h"
+#include "planning/world/generators/city_generator.h"
 
 #include <cmath>
 

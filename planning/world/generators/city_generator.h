@@ -2,7 +2,7 @@
 // City blocks: a street grid whose lots each hold, with probability `density`, one box building of
 // random footprint and height. Streets are never built on, so start (one corner crossing) and goal
 // (the opposite one) are always connected at street level, whatever the seed.
-#include "planning/worlds/generators/generated_world.h"
+#include "planning/world/generators/generated_world.h"
 
 namespace cosim {
 

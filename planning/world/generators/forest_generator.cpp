@@ -1,4 +1,4 @@
-#include "planning/worlds/generators/forest_generator.h"
+#include "planning/world/generators/forest_generator.h"
 
 #include <cmath>
 

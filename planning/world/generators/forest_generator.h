@@ -3,7 +3,7 @@
 // the ground. `density` is the fraction of the ground area covered by trunks (0.05 = a dense
 // forest for a 0.45 m quadrotor). The start and the goal sit in opposite corners at 2 m, in
 // clearings of `clearing` metres radius.
-#include "planning/worlds/generators/generated_world.h"
+#include "planning/world/generators/generated_world.h"
 
 namespace cosim {
 

@@ -1,4 +1,4 @@
-#include "planning/worlds/generators/generated_world.h"
+#include "planning/world/generators/generated_world.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "planning/worlds/generators/maze_world_generator.h"
+#include "planning/world/generators/maze_world_generator.h"
 
 #include <cmath>
 

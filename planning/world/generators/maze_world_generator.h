@@ -4,7 +4,7 @@
 // walls kept: 1 = the perfect maze (one way between any two points), lower values knock out
 // random wall cells between corridors and open loops (removing walls never disconnects it).
 // Runs of wall cells along x become one box, which keeps the MuJoCo model small.
-#include "planning/worlds/generators/generated_world.h"
+#include "planning/world/generators/generated_world.h"
 
 namespace cosim {
 
