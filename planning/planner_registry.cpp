@@ -8,22 +8,27 @@
 #include "planning/mapf/mapf_planner_registry.h"
 #include "core/name_suggestion.h"
 #include "planning/sampling/sampling_planners.h"
-#include "planning/swarm/planners_000.h"
-#include "planning/swarm/planners_002.h"
+#include "planning/navigation/navigation_planners.h"
+#include "planning/swarm/acs_maklink.h"
+#include "planning/swarm/grid_walk_planners.h"
+#include "planning/swarm/msac_saco_planners.h"
 
 namespace cosim {
 
 // Each family's registration lives beside its planners: the family's header declares
-// `void register<Family>Planners(PlannerRegistry&)`; include it above and call it below.
+// `void register<Group>Planners(PlannerRegistry&)`; include it above and call it below. The
+// order of the calls is the order of `cosim plan --list`.
 
 const PlannerRegistry& PlannerRegistry::instance() {
   static const PlannerRegistry registry = [] {
     PlannerRegistry r;
-    // register<Family>Planners(r) calls go here, one per family.
+    // register<Group>Planners(r) calls go here, one per group of planners.
     registerSamplingPlanners(r);
     registerGridPlanners(r);
-    registerAnt000Planners(r);
-    registerAnt002Planners(r);
+    registerMsacSacoPlanners(r);
+    registerNavigationPlanners(r);
+    registerGridWalkPlanners(r);
+    registerAcsMaklinkPlanner(r);
     return r;
   }();
   return registry;

@@ -3,20 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planning/world/segment_distance.h"
+
 namespace cosim {
-
-namespace {
-
-// Distance from p to the segment a-b.
-double segmentDistance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                       const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double s = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (p - (a + s * ab)).norm();
-}
-
-}  // namespace
 
 std::vector<std::size_t> decimateTrail(const std::vector<LogSample>& samples,
                                        const std::vector<double>& values,
@@ -38,7 +27,7 @@ std::vector<std::size_t> decimateTrail(const std::vector<LogSample>& samples,
       // cheap (the samples are 2 ms apart, far denser than the tolerance matters).
       const std::size_t stride = std::max<std::size_t>(1, (i - from) / 24);
       for (std::size_t j = from + 1; j < i && within; j += stride)
-        within = segmentDistance(samples[j].pos, a, b) <= o.tolerance;
+        within = distanceToSegment(samples[j].pos, a, b) <= o.tolerance;
       if (!within) break;
       good = i;
     }
@@ -55,7 +44,7 @@ std::vector<Eigen::Vector3d> polylineCorners(const std::vector<Eigen::Vector3d>&
     if (!corners.empty() && (p - corners.back()).norm() < kSame) continue;
     // The last corner lies on the line from the one before it to p: it is no corner.
     if (corners.size() >= 2 &&
-        segmentDistance(corners.back(), corners[corners.size() - 2], p) < kSame &&
+        distanceToSegment(corners.back(), corners[corners.size() - 2], p) < kSame &&
         (corners.back() - corners[corners.size() - 2]).dot(p - corners.back()) > 0)
       corners.pop_back();
     corners.push_back(p);

@@ -4,16 +4,15 @@
 #include <cmath>
 #include <limits>
 
+#include "planning/world/segment_distance.h"
+
 namespace cosim {
 
 double distanceToPolyline(const Eigen::Vector3d& p, const std::vector<Eigen::Vector3d>& line) {
   if (line.empty()) return std::numeric_limits<double>::infinity();
   double best = (p - line[0]).norm();
   for (std::size_t i = 1; i < line.size(); ++i) {
-    const Eigen::Vector3d a = line[i - 1], ab = line[i] - a;
-    const double len2 = ab.squaredNorm();
-    const double s = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-    best = std::min(best, (p - (a + s * ab)).norm());
+    best = std::min(best, distanceToSegment(p, line[i - 1], line[i]));
   }
   return best;
 }

@@ -55,7 +55,7 @@ struct MovingObstacleSpec {
 };
 
 // world.grid_map (seed 004's grid worlds): a MovingAI .map is the floor plan. Its blocked cells
-// (plus `blocked`, cells the user adds) stand as boxes of `height` (planning/worlds/
+// (plus `blocked`, cells the user adds) stand as boxes of `height` (planning/world/
 // grid_map_world.h), the world spans the map from z = 0 to `ceiling`, and a team plan uses these
 // very cells (cell (x, y), x = column, y = row, is [x c, (x+1) c) x [y c, (y+1) c)) instead of a
 // grid voxelised from the boxes, which would block every free cell beside a block.

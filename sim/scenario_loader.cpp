@@ -6,7 +6,7 @@
 #include "planning/grid/movingai.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
-#include "planning/worlds/grid_map_world.h"
+#include "planning/world/grid_map_world.h"
 #include "sim/scenario.h"
 #include "control/crazyflie_control_rate.h"
 #include "sim/scenario_reference.h"

@@ -1,7 +1,7 @@
 // cosim reproduce seed003-discrete: seed 003's discrete comparison (Navratil 2019, section 4.1.1,
 // Tabs. 1-4): A*, Basic Theta* and Lazy Theta* on its 2D map (8-connected) and three 3D maps
 // (26-connected), path length, time and line-of-sight checks, with Basic Theta* = 100%. The
-// thesis's obstacle layouts exist only as figures; planning/worlds/seed003_maps.cpp rebuilds
+// thesis's obstacle layouts exist only as figures; experiments/reproduce/seed003_maps.cpp rebuilds
 // equivalent ones from the stated sizes, starts, goals and descriptions. Lazy Theta* runs as the
 // thesis's (and Nash et al.'s) variant, which expands a cell after SetVertex at once, with our
 // re-queueing variant beside it.
@@ -19,7 +19,7 @@
 #include "planning/grid/astar.h"
 #include "planning/grid/basic_theta_star.h"
 #include "planning/grid/lazy_theta_star.h"
-#include "planning/worlds/seed003_maps.h"
+#include "experiments/reproduce/seed003_maps.h"
 
 namespace cosim::reproduce {
 

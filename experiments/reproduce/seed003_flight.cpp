@@ -18,7 +18,7 @@
 #include "experiments/reproduce/agreement_section.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/reproduction_map.h"
-#include "planning/worlds/seed003_maps.h"
+#include "experiments/reproduce/seed003_maps.h"
 #include "run/run_pipeline.h"
 
 namespace cosim::reproduce {

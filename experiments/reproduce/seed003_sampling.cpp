@@ -4,9 +4,9 @@
 // RRT*s run side by side: the thesis's own (its Fig. 16 choose-parent, planner rrt_star_thesis),
 // on which its RRT*FN is built, and Karaman-Frazzoli's (rrt_star, our default). Every column uses
 // the thesis's settings: no goal bias, point-mass planning, the fixed rewire radius, and the goal
-// reached by a node within one step of it. The maps
-// are the reconstructions of planning/worlds/seed003_maps (the thesis shows its layouts only as
-// figures), so the ratios to RRT* are the comparable figures, not absolute lengths.
+// reached by a node within one step of it. The maps are the reconstructions of seed003_maps.h
+// (the thesis shows its layouts only as figures), so the ratios to RRT* are the comparable
+// figures, not absolute lengths.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -24,7 +24,7 @@
 #include "experiments/reproduce/seed003_sampling_findings.h"
 #include "experiments/reproduce/seed003_sampling_tables.h"
 #include "planning/planner_registry.h"
-#include "planning/worlds/seed003_maps.h"
+#include "experiments/reproduce/seed003_maps.h"
 
 namespace cosim::reproduce {
 
@@ -153,8 +153,8 @@ std::string samplingIntroduction(const Options& options, int runs,
         "\"first path after\" = nodes generated when the first path appeared (median); in mode 1 "
         "a cap binds only if that exceeds it. Seed percentages are recomputed from its absolute "
         "values (several printed ones disagree with them, see the seed's summary).\n\n"
-        "**The maps are reconstructions** (planning/worlds/seed003_maps: the thesis shows its "
-        "obstacle layouts only as figures), so compare the `% of RRT*` columns, not absolute "
+        "**The maps are reconstructions** (experiments/reproduce/seed003_maps: the thesis shows "
+        "its obstacle layouts only as figures), so compare the `% of RRT*` columns, not absolute "
         "lengths.\n\n";
   for (const Seed003Map& m : maps) md << "- map `" << m.name << "`: " << m.description << "\n";
   return md.str();

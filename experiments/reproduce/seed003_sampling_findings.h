@@ -10,7 +10,7 @@
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/seed003_sampling_tables.h"
 #include "planning/path.h"
-#include "planning/worlds/seed003_maps.h"
+#include "experiments/reproduce/seed003_maps.h"
 
 namespace cosim::reproduce {
 

@@ -3,9 +3,9 @@
 #include <cstdio>
 
 #include "core/input_error.h"
-#include "planning/worlds/generators/city_generator.h"
-#include "planning/worlds/generators/forest_generator.h"
-#include "planning/worlds/generators/maze_world_generator.h"
+#include "planning/world/generators/city_generator.h"
+#include "planning/world/generators/forest_generator.h"
+#include "planning/world/generators/maze_world_generator.h"
 
 namespace cosim {
 

@@ -13,7 +13,7 @@
 // after NC tours or when all m ants built the same tour.
 //
 // As a world planner it works in the horizontal plane at the start's height: the obstacles that
-// meet that plane are cut into grown convex polygons (planar_obstacles_002.h), the walls are the
+// meet that plane are cut into grown convex polygons (planar_obstacles.h), the walls are the
 // world's x-y bounds shrunk by the inflation; if the goal is at another height the path ends
 // with a vertical segment to it, checked against the world.
 #include <Eigen/Core>

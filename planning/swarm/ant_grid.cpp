@@ -3,9 +3,9 @@
 #include <cmath>
 #include <random>
 
-#include "planning/swarm/grid_walk_002.h"
-#include "planning/swarm/layer_walk_search_002.h"
-#include "planning/swarm/path_shortcut_002.h"
+#include "planning/swarm/grid_walk.h"
+#include "planning/swarm/layer_walk_search.h"
+#include "planning/swarm/path_shortcut.h"
 
 namespace cosim {
 

@@ -22,57 +22,64 @@ struct Ray {
   int line;  // -1 for an obstacle edge or a wall
 };
 
-}  // namespace
+// An obstacle vertex that lies in free space (not inside another obstacle, inside the walls).
+struct Vertex {
+  Eigen::Vector2d p;
+  int polygon, index;
+};
 
-MaklinkGraph::MaklinkGraph(std::vector<ConvexPolygon> obstacles, const Eigen::Vector2d& bounds_min,
-                           const Eigen::Vector2d& bounds_max, const StopToken* deadline)
-    : obstacles_(std::move(obstacles)), lo_(bounds_min), hi_(bounds_max) {
-  auto outOfTime = [&] {
-    if (deadline && deadline->expired()) complete_ = false;
-    return !complete_;
-  };
-  // Obstacle vertices that lie in free space (not inside another obstacle, inside the walls).
-  struct Vertex {
-    Eigen::Vector2d p;
-    int polygon, index;
-  };
+bool expired(const StopToken* deadline) {
+  return deadline && deadline->expired();
+}
+
+std::vector<Vertex> freeVertices(const MaklinkGraph& graph) {
   std::vector<Vertex> vertices;
-  for (int o = 0; o < static_cast<int>(obstacles_.size()); ++o)
-    for (int i = 0; i < static_cast<int>(obstacles_[o].vertices.size()); ++i) {
-      const Eigen::Vector2d& p = obstacles_[o].vertices[i];
-      if (pointFree(p)) vertices.push_back({p, o, i});
+  const std::vector<ConvexPolygon>& obstacles = graph.obstacles();
+  for (int o = 0; o < static_cast<int>(obstacles.size()); ++o)
+    for (int i = 0; i < static_cast<int>(obstacles[o].vertices.size()); ++i) {
+      const Eigen::Vector2d& p = obstacles[o].vertices[i];
+      if (graph.pointFree(p)) vertices.push_back({p, o, i});
     }
-  const int nv = static_cast<int>(vertices.size());
+  return vertices;
+}
 
-  // 1. Candidate lines: vertex-vertex (not an edge of one obstacle) and vertex-wall.
-  std::vector<Candidate> candidates;
+// 1. Candidate lines: vertex-vertex (not an edge of one obstacle) and vertex-wall, shortest
+// first. Wall points get the ids from vertices.size() up; ids: one past the last. False if the
+// deadline expired.
+bool candidateLines(const MaklinkGraph& graph, const std::vector<Vertex>& vertices,
+                    const Eigen::Vector2d& lo, const Eigen::Vector2d& hi, const StopToken* deadline,
+                    std::vector<Candidate>& candidates, int& ids) {
+  const int nv = static_cast<int>(vertices.size());
   for (int i = 0; i < nv; ++i) {
-    if (outOfTime()) return;
+    if (expired(deadline)) return false;
     for (int j = i + 1; j < nv; ++j) {
       const Vertex &u = vertices[i], &w = vertices[j];
       if (u.polygon == w.polygon) {
-        const int n = static_cast<int>(obstacles_[u.polygon].vertices.size());
+        const int n = static_cast<int>(graph.obstacles()[u.polygon].vertices.size());
         if ((u.index + 1) % n == w.index || (w.index + 1) % n == u.index) continue;
       }
-      if (segmentFree(u.p, w.p)) candidates.push_back({u.p, w.p, i, j, (u.p - w.p).norm()});
+      if (graph.segmentFree(u.p, w.p)) candidates.push_back({u.p, w.p, i, j, (u.p - w.p).norm()});
     }
   }
-  int next_id = nv;
+  ids = nv;
   for (int i = 0; i < nv; ++i) {
     const Eigen::Vector2d p = vertices[i].p;
     const Eigen::Vector2d feet[4] = {
-        {lo_.x(), p.y()}, {hi_.x(), p.y()}, {p.x(), lo_.y()}, {p.x(), hi_.y()}};
+        {lo.x(), p.y()}, {hi.x(), p.y()}, {p.x(), lo.y()}, {p.x(), hi.y()}};
     for (const Eigen::Vector2d& f : feet)
-      if ((f - p).norm() > 1e-9 && segmentFree(p, f))
-        candidates.push_back({p, f, i, next_id++, (f - p).norm()});
+      if ((f - p).norm() > 1e-9 && graph.segmentFree(p, f))
+        candidates.push_back({p, f, i, ids++, (f - p).norm()});
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& x, const Candidate& y) { return x.length < y.length; });
+  return true;
+}
 
-  // 2a. Shortest first, never crossing a kept line.
-  std::vector<Candidate> kept;
+// 2a. Shortest first, never crossing a kept line. False if the deadline expired.
+bool keepNonCrossing(const std::vector<Candidate>& candidates, const StopToken* deadline,
+                     std::vector<Candidate>& kept) {
   for (std::size_t n = 0; n < candidates.size(); ++n) {
-    if ((n & 255) == 0 && outOfTime()) return;
+    if ((n & 255) == 0 && expired(deadline)) return false;
     const Candidate& c = candidates[n];
     bool crosses = false;
     for (const Candidate& k : kept)
@@ -82,18 +89,24 @@ MaklinkGraph::MaklinkGraph(std::vector<ConvexPolygon> obstacles, const Eigen::Ve
       }
     if (!crosses) kept.push_back(c);
   }
+  return true;
+}
 
-  // 2b. Remove lines (longest first) while the free angles at both ends stay <= 180 degrees.
-  std::vector<std::vector<Ray>> rays(next_id);
+// The rays at every vertex id: the two obstacle edges at an obstacle vertex, the wall both ways
+// at a wall point, and the kept lines at both their ends.
+std::vector<std::vector<Ray>> raysAtVertices(const std::vector<ConvexPolygon>& obstacles,
+                                             const std::vector<Vertex>& vertices,
+                                             const std::vector<Candidate>& kept, int ids) {
+  const int nv = static_cast<int>(vertices.size());
+  std::vector<std::vector<Ray>> rays(ids);
   for (int i = 0; i < nv; ++i) {
-    const ConvexPolygon& poly = obstacles_[vertices[i].polygon];
+    const ConvexPolygon& poly = obstacles[vertices[i].polygon];
     const int n = static_cast<int>(poly.vertices.size()), k = vertices[i].index;
     for (const Eigen::Vector2d& q : {poly.vertices[(k + 1) % n], poly.vertices[(k + n - 1) % n]}) {
       const Eigen::Vector2d d = q - vertices[i].p;
       rays[i].push_back({std::atan2(d.y(), d.x()), -1});
     }
   }
-  std::vector<bool> alive(kept.size(), true);
   for (int l = 0; l < static_cast<int>(kept.size()); ++l) {
     const Candidate& c = kept[l];
     const Eigen::Vector2d d = c.b - c.a;
@@ -105,6 +118,14 @@ MaklinkGraph::MaklinkGraph(std::vector<ConvexPolygon> obstacles, const Eigen::Ve
       rays[c.vb].push_back({a - M_PI / 2, -1});
     }
   }
+  return rays;
+}
+
+// 2b. Remove lines (longest first) while the free angles at both ends stay <= 180 degrees.
+// Returns which of the kept lines remain.
+std::vector<bool> pruneRedundant(const std::vector<std::vector<Ray>>& rays,
+                                 const std::vector<Candidate>& kept) {
+  std::vector<bool> alive(kept.size(), true);
   // The free angle that the removal of line l would leave at vertex v.
   auto mergedAngle = [&](int v, int l) {
     double at = 0.0;
@@ -125,6 +146,24 @@ MaklinkGraph::MaklinkGraph(std::vector<ConvexPolygon> obstacles, const Eigen::Ve
     if (mergedAngle(c.va, l) <= M_PI + 1e-9 && mergedAngle(c.vb, l) <= M_PI + 1e-9)
       alive[l] = false;
   }
+  return alive;
+}
+
+}  // namespace
+
+MaklinkGraph::MaklinkGraph(std::vector<ConvexPolygon> obstacles, const Eigen::Vector2d& bounds_min,
+                           const Eigen::Vector2d& bounds_max, const StopToken* deadline)
+    : obstacles_(std::move(obstacles)), lo_(bounds_min), hi_(bounds_max) {
+  const std::vector<Vertex> vertices = freeVertices(*this);
+  std::vector<Candidate> candidates, kept;
+  int ids = 0;
+  if (!candidateLines(*this, vertices, lo_, hi_, deadline, candidates, ids) ||
+      !keepNonCrossing(candidates, deadline, kept)) {
+    complete_ = false;
+    return;
+  }
+  const std::vector<bool> alive =
+      pruneRedundant(raysAtVertices(obstacles_, vertices, kept, ids), kept);
   for (std::size_t l = 0; l < kept.size(); ++l)
     if (alive[l]) lines_.push_back({kept[l].a, kept[l].b});
 }

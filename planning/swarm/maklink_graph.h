@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/stop_token.h"
-#include "planning/swarm/planar_obstacles_002.h"
+#include "planning/swarm/planar_obstacles.h"
 
 namespace cosim {
 

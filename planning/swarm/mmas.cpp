@@ -6,9 +6,9 @@
 #include <random>
 
 #include "planning/grid/grid_distance.h"
-#include "planning/swarm/grid_walk_002.h"
-#include "planning/swarm/layer_walk_search_002.h"
-#include "planning/swarm/path_shortcut_002.h"
+#include "planning/swarm/grid_walk.h"
+#include "planning/swarm/layer_walk_search.h"
+#include "planning/swarm/path_shortcut.h"
 
 namespace cosim {
 
@@ -24,6 +24,16 @@ class LazyTrails {
     for (std::size_t a = 0; a < decay_.size(); ++a) decay_[a] = std::pow(1.0 - rho, a);
   }
   void setBounds(double lo, double hi) { lo_ = lo, hi_ = hi; }
+  // The bounds of the paper's eq. 11 for the best path so far (best_cells cells, best_length
+  // long) with D moves per cell: tau_max = 1 / (rho L_best),
+  // tau_min = tau_max (1 - p_best^(1/n)) / ((avg - 1) p_best^(1/n)).
+  void setBounds(const MmasParams& p, std::size_t best_cells, double best_length, int D) {
+    const double tau_max = 1.0 / (p.rho * best_length);
+    const double root = std::pow(p.p_best, 1.0 / std::max<std::size_t>(1, best_cells - 1));
+    const double avg = std::max(2.0, D / 2.0);
+    const double tau_min = std::min(tau_max, tau_max * (1.0 - root) / ((avg - 1.0) * root));
+    setBounds(tau_min, tau_max);
+  }
   double read(std::size_t i, int now) const {
     const double v = value_[i] * decay_[now - written_[i]];
     return std::clamp(v, lo_, hi_);
@@ -32,6 +42,19 @@ class LazyTrails {
     value_[i] = static_cast<float>(std::min(hi_, read(i, now) + amount));
     written_[i] = static_cast<std::uint16_t>(now);
   }
+  // Deposits 1 / length on the moves of the path (after local search the moves are recomputed
+  // from the cells).
+  void deposit(const std::vector<Cell>& path, double length, const OccupancyGrid& grid,
+               const ExtendedNeighbourhood& moves, int now) {
+    const double amount = 1.0 / length;
+    const std::size_t D = moves.directions();
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      const Cell& a = path[i];
+      const Cell& b = path[i + 1];
+      const int k = moves.indexOf(b.x - a.x, b.y - a.y);
+      add(grid.index(a) * D + k, now, amount);
+    }
+  }
 
  private:
   std::vector<float> value_;
@@ -39,6 +62,14 @@ class LazyTrails {
   std::vector<double> decay_;
   double lo_ = 0.0, hi_ = std::numeric_limits<double>::infinity();
 };
+
+// No path with D moves per cell can be shorter than this free-space bound.
+double freeSpaceLowerBound(const Cell& start, const Cell& goal, int D) {
+  const double dx = std::abs(start.x - goal.x), dy = std::abs(start.y - goal.y);
+  return D == 4   ? dx + dy
+         : D == 8 ? octileDistance(static_cast<int>(dx), static_cast<int>(dy), 0)
+                  : std::hypot(dx, dy);
+}
 }  // namespace
 
 GridPlanResult Mmas::solveGrid(const GridQuery& query, const StopToken& stop) {
@@ -74,11 +105,7 @@ GridPlanResult Mmas::solveGrid(const GridQuery& query, const StopToken& stop) {
   };
 
   // No path can be shorter than this free-space bound; reaching it ends the search early.
-  const double dx = std::abs(start.x - goal.x), dy = std::abs(start.y - goal.y);
-  const double lower_bound = D == 4 ? dx + dy
-                             : D == 8
-                                 ? octileDistance(static_cast<int>(dx), static_cast<int>(dy), 0)
-                                 : std::hypot(dx, dy);
+  const double lower_bound = freeSpaceLowerBound(start, goal, D);
   std::vector<Cell> path, iteration_best_path;
   std::vector<int> dirs;
   const std::vector<Cell>& best = search.best();
@@ -109,21 +136,12 @@ GridPlanResult Mmas::solveGrid(const GridQuery& query, const StopToken& stop) {
     if (p_.stall_iterations > 0 && iterations_done - search.bestIteration() >= p_.stall_iterations)
       break;
     ++now;  // one evaporation step for every trail (applied lazily)
-    const double tau_max = 1.0 / (p_.rho * best_length);
-    const double root = std::pow(p_.p_best, 1.0 / std::max<std::size_t>(1, best.size() - 1));
-    const double avg = std::max(2.0, D / 2.0);
-    const double tau_min = std::min(tau_max, tau_max * (1.0 - root) / ((avg - 1.0) * root));
-    tau.setBounds(tau_min, tau_max);
-    const bool use_best = (it % 5) == 4;
-    const std::vector<Cell>& deposit_path = use_best ? best : iteration_best_path;
-    const double amount = 1.0 / (use_best ? best_length : iteration_best);
-    // Deposit on the moves of the path (after local search the moves are recomputed from cells).
-    for (std::size_t i = 0; i + 1 < deposit_path.size(); ++i) {
-      const Cell& a = deposit_path[i];
-      const Cell& b = deposit_path[i + 1];
-      const int k = moves.indexOf(b.x - a.x, b.y - a.y);
-      tau.add(grid.index(a) * D + k, now, amount);
-    }
+    tau.setBounds(p_, best.size(), best_length, D);
+    // Only the iteration-best ant deposits, the best-so-far ant every 5th iteration.
+    if ((it % 5) == 4)
+      tau.deposit(best, best_length, grid, moves, now);
+    else
+      tau.deposit(iteration_best_path, iteration_best, grid, moves, now);
   }
 
   GridPlanResult result =

@@ -7,7 +7,7 @@
 // moves toward the goal; 1 / (length + distance to goal), the usual TSP-like choice, is nearly
 // uniform far from the goal and made the ants' walks wander over whole 512 x 512 maps);
 // the iteration-best ant's path is improved by local search (the paper's MMAS applies 2-opt/3-opt
-// to every ant on the TSP; here the staircase shortcut of path_shortcut_002.h, on the best ant
+// to every ant on the TSP; here the staircase shortcut of path_shortcut.h, on the best ant
 // only, as it costs more than the walks); then all trails evaporate by rho, only the
 // iteration-best ant (the best-so-far ant every 5th iteration) deposits 1 / L, and every trail
 // is kept within [tau_min, tau_max] with tau_max = 1 / (rho L_best) and

@@ -6,7 +6,7 @@
 #include <random>
 
 #include "core/stop_token.h"
-#include "planning/swarm/ant_common_000.h"
+#include "planning/swarm/ant_path_processing.h"
 
 namespace cosim {
 

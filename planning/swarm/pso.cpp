@@ -5,7 +5,7 @@
 #include <random>
 
 #include "planning/grid/grid_distance.h"
-#include "planning/swarm/layer_walk_search_002.h"
+#include "planning/swarm/layer_walk_search.h"
 
 namespace cosim {
 

@@ -1,19 +1,8 @@
 #include "planning/trajectory/waypoint_thinning.h"
 
-#include <algorithm>
+#include "planning/world/segment_distance.h"
 
 namespace cosim {
-namespace {
-
-double distanceToSegment(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                         const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
-}  // namespace
 
 std::vector<Eigen::Vector3d> dropDuplicateWaypoints(const std::vector<Eigen::Vector3d>& waypoints,
                                                     double min_distance) {

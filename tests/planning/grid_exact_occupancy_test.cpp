@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "planning/planner_registry.h"
-#include "planning/worlds/generators/forest_generator.h"
+#include "planning/world/generators/forest_generator.h"
 #include "tests/planning/path_clearance_check.h"
 
 namespace cosim {

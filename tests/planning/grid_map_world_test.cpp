@@ -1,5 +1,5 @@
-// A grid map as a world of boxes (planning/worlds/grid_map_world.h).
-#include "planning/worlds/grid_map_world.h"
+// A grid map as a world of boxes (planning/world/grid_map_world.h).
+#include "planning/world/grid_map_world.h"
 
 #include <gtest/gtest.h>
 

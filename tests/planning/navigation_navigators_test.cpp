@@ -8,7 +8,7 @@
 #include "planning/navigation/d_star_lite.h"
 #include "planning/navigation/robot_navigation_ant.h"
 #include "planning/planner_registry.h"
-#include "tests/planning/ants000_grid_checks.h"
+#include "tests/planning/ant_planner_checks.h"
 
 using namespace cosim;
 

@@ -7,9 +7,9 @@
 
 #include "planning/grid/occupancy_grid.h"
 #include "core/input_error.h"
-#include "planning/worlds/generators/city_generator.h"
-#include "planning/worlds/generators/forest_generator.h"
-#include "planning/worlds/generators/maze_world_generator.h"
+#include "planning/world/generators/city_generator.h"
+#include "planning/world/generators/forest_generator.h"
+#include "planning/world/generators/maze_world_generator.h"
 
 namespace cosim {
 namespace {
