@@ -4,7 +4,7 @@
 #include <mujoco/mujoco.h>
 
 #include "sim/world_model.h"
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 namespace cosim::test {
 namespace {

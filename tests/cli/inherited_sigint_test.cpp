@@ -9,8 +9,8 @@
 #include <fstream>
 #include <thread>
 
-#include "tests/experiments/cli_test_support.h"
-#include "tests/experiments/spawned_cosim.h"
+#include "tests/support/spawned_cosim.h"
+#include "tests/support/test_files.h"
 
 namespace cosim::test {
 namespace {

@@ -15,8 +15,9 @@
 #include <fstream>
 #include <thread>
 
-#include "tests/experiments/cli_test_support.h"
-#include "tests/experiments/spawned_cosim.h"
+#include "tests/support/cosim_command.h"
+#include "tests/support/json_fields.h"
+#include "tests/support/spawned_cosim.h"
 
 namespace cosim::test {
 namespace {
@@ -282,7 +283,7 @@ void interruptCbs(int signal_number, const std::string& name) {
   const fs::path dir = freshDir("interrupt-cbs-" + name);
   fs::create_directories(dir);
   const fs::path out = dir / "mapf", err = dir / "err";
-  const std::string data = COSIM_TEST_DATA_DIR "/movingai/";
+  const std::string data = COSIM_SOURCE_DIR "/experiments/maps/";
   // An earlier, solved instance left its mapf.json in the folder.
   const CommandResult first =
       runCosim("mapf " + data + "empty-8-8.map " + data +

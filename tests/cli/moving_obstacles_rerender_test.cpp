@@ -7,13 +7,13 @@
 #include <filesystem>
 #include <fstream>
 
-#include "run/run_pipeline.h"
 #include "core/input_error.h"
+#include "run/run_pipeline.h"
 #include "sim/moving_obstacle_motion.h"
 #include "sim/run_log.h"
 #include "sim/run_log_io.h"
 #include "sim/scenario.h"
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 using namespace cosim;
 

@@ -6,7 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
+#include "tests/support/json_fields.h"
 
 namespace cosim::test {
 namespace {

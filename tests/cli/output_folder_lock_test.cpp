@@ -11,8 +11,8 @@
 #include <string>
 #include <thread>
 
-#include "tests/experiments/cli_test_support.h"
-#include "tests/experiments/spawned_cosim.h"
+#include "tests/support/cosim_command.h"
+#include "tests/support/spawned_cosim.h"
 
 namespace cosim::test {
 namespace {

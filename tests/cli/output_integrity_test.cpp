@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 namespace cosim::test {
 namespace {
@@ -169,7 +169,8 @@ TEST_F(OutputIntegrity, PlanSweepGridBenchAndMapfFilesReadBack) {
   const Table b = readCsvStrictly(dir_ / "bench.csv");
   EXPECT_EQ(b.size(), 6u);
   EXPECT_EQ(b[0][0], "id");
-  const CommandResult mapf = runCosim("mapf " + data + "empty-8-8.map " + data +
+  const std::string maps = COSIM_SOURCE_DIR "/experiments/maps/";
+  const CommandResult mapf = runCosim("mapf " + maps + "empty-8-8.map " + maps +
                                       "empty-8-8-random-1.scen --agents 4 --planner cbs --out " +
                                       (dir_ / "mapf").string());
   ASSERT_EQ(mapf.status, 0) << mapf.err;

@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string>
 
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 namespace cosim::test {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 namespace cosim::test {
 namespace {
@@ -61,7 +61,7 @@ TEST(PlannerStatusKey, PlanJsonSaysExactSolutionBesideSuccess) {
 
 TEST(PlannerStatusKey, MapfJsonSaysWhyAPlannerFailed) {
   const fs::path dir = freshDir("mapf-status");
-  const std::string data = COSIM_TEST_DATA_DIR "/movingai/";
+  const std::string data = COSIM_SOURCE_DIR "/experiments/maps/";
   // A CT-node budget of 1 with conflicting agents: the budget ends the search.
   const CommandResult r = runCosim("mapf " + data + "empty-8-8.map " + data +
                                    "empty-8-8-random-1.scen --agents 8 --planner cbs --set "

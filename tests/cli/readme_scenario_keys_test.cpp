@@ -7,15 +7,17 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/input_error.h"
 #include "sim/scenario.h"
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 namespace cosim::test {
 namespace {

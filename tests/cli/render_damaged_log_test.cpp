@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 namespace cosim::test {
 namespace {

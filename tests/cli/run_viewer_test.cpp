@@ -5,8 +5,8 @@
 
 #include <cstdlib>
 
-#include "cli_test_support.h"
 #include "render/viewer_page.h"
+#include "tests/support/cosim_command.h"
 
 using namespace cosim::test;
 

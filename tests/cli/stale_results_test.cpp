@@ -7,7 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
+#include "tests/support/json_fields.h"
 
 namespace cosim::test {
 namespace {
@@ -41,15 +42,15 @@ TEST(StaleResults, ARefusedRerunIntoAnOldRunFolderLeavesNoneOfTheOldResults) {
 
 TEST(StaleResults, AFailingMapfExecuteIntoAnOldFolderLeavesNoOldExecutionMetrics) {
   const fs::path dir = freshDir("stale-mapf");
-  const std::string map = COSIM_TEST_DATA_DIR "/mapf/empty-8-8.map";
-  const std::string scen = COSIM_TEST_DATA_DIR "/mapf/empty-8-8-random-1.scen";
+  const std::string map = COSIM_SOURCE_DIR "/experiments/maps/empty-8-8.map";
+  const std::string scen = COSIM_SOURCE_DIR "/experiments/maps/empty-8-8-random-1.scen";
   const CommandResult first = runCosim("mapf " + map + " " + scen +
                                        " --agents 2 --planner cbs --execute --out " + dir.string());
   ASSERT_EQ(first.status, 0) << first.err;
   ASSERT_TRUE(jsonTrue(slurp(dir / "execution" / "metrics.json"), "reached_goal"));
 
   // Planning fails (a time limit no search meets): exit 1, and the old execution is gone.
-  const std::string den = COSIM_TEST_DATA_DIR "/movingai/";
+  const std::string den = COSIM_SOURCE_DIR "/experiments/maps/";
   const CommandResult failed =
       runCosim("mapf " + den + "random-32-32-10.map " + den +
                "random-32-32-10-random-1.scen --agents 150 --planner cbs --time-limit 0.001 "

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 namespace cosim::test {
 namespace {

@@ -8,7 +8,7 @@
 #include "render/camera_occlusion.h"
 #include "render/camera_rig.h"
 #include "render/log_lookup.h"
-#include "tests/experiments/headless_run.h"
+#include "tests/run/headless_run.h"
 
 namespace cosim {
 namespace {

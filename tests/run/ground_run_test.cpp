@@ -6,10 +6,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "run/run_pipeline.h"
 #include "core/input_error.h"
-#include "tests/experiments/cli_test_support.h"
-#include "tests/experiments/headless_run.h"
+#include "run/run_pipeline.h"
+#include "tests/run/headless_run.h"
+#include "tests/support/cosim_command.h"
+#include "tests/support/json_fields.h"
 
 namespace cosim {
 namespace {
@@ -72,8 +73,8 @@ TEST(GroundTeamRun, CosimRunDrivesALacamPlanWithoutRobotContacts) {
   EXPECT_EQ(test::jsonNumber(metrics, "robot_contacts"), 0);
   EXPECT_EQ(test::jsonNumber(metrics, "collisions"), 0);
   EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal"));
-  EXPECT_EQ(test::jsonNumber(metrics, "conflicts"), 0);  // planner_counters: the validator's
-  EXPECT_GT(test::jsonNumber(metrics, "first_solution_ms"), 0.0);
+  EXPECT_EQ(test::jsonNumber(metrics, "planner_counters.conflicts"), 0);  // the validator's
+  EXPECT_GT(test::jsonNumber(metrics, "planner_counters.first_solution_ms"), 0.0);
   std::filesystem::remove_all(dir);
 }
 
@@ -101,7 +102,7 @@ TEST(GroundNavigationRun, RnaRobotCrossesBetweenPatrollingCylindersWithoutTouchi
   EXPECT_EQ(test::jsonNumber(metrics, "moving_obstacle_contacts"), 0);
   EXPECT_GT(test::jsonNumber(metrics, "min_moving_obstacle_distance_m"), 0.0);
   // The navigator re-planned around predicted collisions on the way.
-  EXPECT_GT(test::jsonNumber(metrics, "replans"), 0);
+  EXPECT_GT(test::jsonNumber(metrics, "planner_counters.replans"), 0);
 }
 
 TEST(GroundTeamRun, MissingMeshIsExitTwoNamingFileAndElement) {

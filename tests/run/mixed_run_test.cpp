@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <string>
 
-#include "run/run_pipeline.h"
 #include "core/input_error.h"
-#include "tests/experiments/cli_test_support.h"
-#include "tests/experiments/headless_run.h"
+#include "run/run_pipeline.h"
+#include "tests/run/headless_run.h"
+#include "tests/support/json_fields.h"
 
 namespace cosim {
 namespace {
@@ -53,12 +53,13 @@ RunSummary runText(const std::string& text, const std::string& name, std::string
   return test::runWithoutPictures(parseScenario(text, "mixed_test.yaml", overrides), name, metrics);
 }
 
-// The metrics.json entry of one vehicle (its object in the "vehicles" list).
+// The metrics.json entry of one vehicle (its object in the "vehicles" list, which holds no
+// nested object), braces included.
 std::string vehicleEntry(const std::string& metrics, const std::string& name) {
   const auto at = metrics.find("\"name\": \"" + name + "\"");
   if (at == std::string::npos) return "";
   const auto from = metrics.rfind('{', at);
-  return metrics.substr(from, metrics.find('}', at) - from);
+  return metrics.substr(from, metrics.find('}', at) + 1 - from);
 }
 
 TEST(GroundTeamWithUavs, RobotsOnCbsPlanAndQuadrotorsOverheadAllArriveWithoutContacts) {

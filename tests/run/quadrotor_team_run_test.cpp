@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "run/run_pipeline.h"
 #include "core/input_error.h"
-#include "tests/experiments/cli_test_support.h"
-#include "tests/experiments/headless_run.h"
+#include "run/run_pipeline.h"
+#include "tests/run/headless_run.h"
+#include "tests/support/json_fields.h"
 
 namespace cosim {
 namespace {

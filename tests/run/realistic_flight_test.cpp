@@ -4,7 +4,8 @@
 // motion capture. And the default scenario flies on its estimate through rotor drag.
 #include <gtest/gtest.h>
 
-#include "tests/experiments/headless_run.h"
+#include "tests/run/headless_run.h"
+#include "tests/support/json_fields.h"
 
 namespace cosim::test {
 namespace {

@@ -11,7 +11,8 @@
 
 #include "run/run_pipeline.h"
 #include "sim/run_log_io.h"
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/json_fields.h"
+#include "tests/support/test_files.h"
 
 namespace cosim {
 namespace {

@@ -6,6 +6,8 @@
 
 #include <fstream>
 
+#include "tests/support/test_files.h"
+
 using namespace cosim;
 
 namespace {
@@ -64,9 +66,7 @@ TEST(RunSummaryLine, ASingleVehicleLineHasNoTeamPrefix) {
 }
 
 TEST(RunSummaryLine, TheLastLineNamesIndexAndViewerWhenPresent) {
-  const auto dir = std::filesystem::temp_directory_path() / "cosim_run_pages_line";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const auto dir = cosim::test::makeFreshDir("run-pages-line");
   EXPECT_EQ(runPagesLine(dir), "results in " + dir.string());
   std::ofstream(dir / "index.html") << "<html></html>";
   EXPECT_EQ(runPagesLine(dir), "open " + (dir / "index.html").string());

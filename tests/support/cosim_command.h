@@ -1,12 +1,14 @@
 #pragma once
-// Runs the built cosim program for end-to-end tests.
+// Runs the built cosim program (COSIM_BINARY, defined for every test program) for end-to-end
+// tests.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
+
+#include "tests/support/test_files.h"
 
 namespace cosim::test {
 
@@ -14,13 +16,6 @@ struct CommandResult {
   int status = -1;
   std::string out, err;
 };
-
-inline std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Runs `cosim <args>` with stdout and stderr captured; in folder `cwd` if one is given; killed
 // after `timeout_s` seconds if that is positive (status 124 if it then ended on SIGTERM, 137 if
@@ -43,24 +38,6 @@ inline CommandResult runCosim(const std::string& args, const std::filesystem::pa
   r.err = slurp(dir / "err");
   std::filesystem::remove_all(dir);
   return r;
-}
-
-// A fresh, empty folder for a test's outputs.
-inline std::filesystem::path freshDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("cosim-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  return dir;
-}
-
-// A number from a flat JSON object ("key": value).
-inline double jsonNumber(const std::string& json, const std::string& key) {
-  const auto at = json.find("\"" + key + "\":");
-  if (at == std::string::npos) return -1e300;
-  return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
-}
-inline bool jsonTrue(const std::string& json, const std::string& key) {
-  return json.find("\"" + key + "\": true") != std::string::npos;
 }
 
 }  // namespace cosim::test

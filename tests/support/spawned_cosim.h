@@ -13,7 +13,7 @@
 #include <thread>
 #include <vector>
 
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 extern char** environ;
 
