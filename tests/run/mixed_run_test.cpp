@@ -152,7 +152,7 @@ TEST(GroundTeamWithUavs, AerialSectionIsStrict) {
     EXPECT_NE(std::string(e.what()).find("aerial.trajectory.mode"), std::string::npos) << e.what();
   }
   // Over ground robots each quadrotor plans alone (a team planner plans quadrotor-only
-  // scenarios: tests/experiments/quadrotor_team_run_test.cpp), and says so.
+  // scenarios: tests/run/quadrotor_team_run_test.cpp), and says so.
   std::string metrics;
   try {
     runText(crossing(0.5), "mixed-bad-planner", metrics, {"aerial.planner.name=cbs"});
