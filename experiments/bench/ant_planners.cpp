@@ -48,9 +48,9 @@ struct MapSet {
 };
 
 std::vector<MapSet> mapSets(bool quick) {
-  const std::string test_data = COSIM_SOURCE_DIR "/tests/data/movingai/";
-  std::vector<MapSet> sets = {{test_data + "random-32-32-10.map",
-                               test_data + "random-32-32-10-random-1.scen", quick ? 10 : 100}};
+  const std::string bundled = COSIM_SOURCE_DIR "/experiments/maps/";
+  std::vector<MapSet> sets = {{bundled + "random-32-32-10.map",
+                               bundled + "random-32-32-10-random-1.scen", quick ? 10 : 100}};
   if (quick) return sets;
   const std::string shared = "/work/shared/data/grid/";
   for (const MapSet& s : std::vector<MapSet>{

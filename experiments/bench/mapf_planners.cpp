@@ -30,12 +30,11 @@ MapfTrial bestOf(int repeats, const char* planner, const MapfInstance& inst, dou
 }  // namespace
 
 Section benchMapfPlanners(bool quick) {
-  const std::string data = std::string(COSIM_SOURCE_DIR) + "/tests/data/";
+  const std::string data = std::string(COSIM_SOURCE_DIR) + "/experiments/maps/";
   const std::vector<BenchMap> maps = {
-      {"random32", data + "movingai/random-32-32-10.map",
-       data + "movingai/random-32-32-10-random-1.scen"},
-      {"warehouse", data + "mapf/warehouse-10-20-10-2-1.map",
-       data + "mapf/warehouse-10-20-10-2-1-random-1.scen"},
+      {"random32", data + "random-32-32-10.map", data + "random-32-32-10-random-1.scen"},
+      {"warehouse", data + "warehouse-10-20-10-2-1.map",
+       data + "warehouse-10-20-10-2-1-random-1.scen"},
   };
   const std::vector<int> counts =
       quick ? std::vector<int>{10, 20} : std::vector<int>{10, 20, 50, 100};

@@ -21,11 +21,18 @@ namespace cosim::reproduce {
 
 namespace {
 
-// The benchmark folder: the shared data set if present, else the few files bundled for tests.
+// The benchmark folder: the shared data set if present, else the maps cosim bundles.
 std::filesystem::path mapfDataDir(bool quick) {
   const std::filesystem::path shared = "/work/shared/data/mapf";
   if (!quick && std::filesystem::exists(shared / "random-32-32-10.map")) return shared;
-  return std::filesystem::path(COSIM_SOURCE_DIR) / "tests/data/mapf";
+  return std::filesystem::path(COSIM_SOURCE_DIR) / "experiments/maps";
+}
+
+// The maps, smallest first; --quick: an open, a maze and a warehouse map.
+std::vector<std::string> benchmarkMaps(bool quick) {
+  if (quick) return {"empty-8-8", "maze-32-32-2", "warehouse-10-20-10-2-1"};
+  return {"empty-8-8",    "empty-16-16", "empty-32-32",           "random-32-32-10",
+          "maze-32-32-2", "den312d",     "warehouse-10-20-10-2-1"};
 }
 
 using SuccessByMap = std::map<std::string, std::vector<std::pair<int, std::pair<double, double>>>>;
@@ -163,9 +170,7 @@ void writeScalingCell(const std::string& map, int n, const ScalingCell& cell, st
 
 Report seed004MapfScaling(const Options& options) {
   const std::filesystem::path dir = mapfDataDir(options.quick);
-  const std::vector<std::string> maps = {
-      "empty-8-8",    "empty-16-16", "empty-32-32",           "random-32-32-10",
-      "maze-32-32-2", "den312d",     "warehouse-10-20-10-2-1"};
+  const std::vector<std::string> maps = benchmarkMaps(options.quick);
   const std::vector<int> agent_counts =
       options.quick ? std::vector<int>{2, 5} : std::vector<int>{10, 20, 50, 100};
   std::vector<std::string> scens;

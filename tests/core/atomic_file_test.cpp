@@ -10,32 +10,19 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <vector>
 
 #include "core/input_error.h"
 #include "core/temporary_name.h"
+#include "tests/support/test_files.h"
 
 using namespace cosim;
+using cosim::test::makeFreshDir;
+using cosim::test::slurp;
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path freshDir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("cosim-core-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 std::vector<std::string> entries(const fs::path& dir) {
   std::vector<std::string> names;
@@ -47,7 +34,7 @@ std::vector<std::string> entries(const fs::path& dir) {
 }  // namespace
 
 TEST(AtomicFile, WriteLeavesOnlyTheTarget) {
-  const fs::path dir = freshDir("write");
+  const fs::path dir = makeFreshDir("write");
   writeFileAtomically(dir / "metrics.json", "{}\n");
   EXPECT_EQ(slurp(dir / "metrics.json"), "{}\n");
   EXPECT_EQ(entries(dir), std::vector<std::string>{"metrics.json"});
@@ -55,7 +42,7 @@ TEST(AtomicFile, WriteLeavesOnlyTheTarget) {
 }
 
 TEST(AtomicFile, WriteReplacesAnExistingFile) {
-  const fs::path dir = freshDir("replace");
+  const fs::path dir = makeFreshDir("replace");
   std::ofstream(dir / "a.csv") << "an older and longer content\n";
   writeFileAtomically(dir / "a.csv", "new\n");
   EXPECT_EQ(slurp(dir / "a.csv"), "new\n");
@@ -64,7 +51,7 @@ TEST(AtomicFile, WriteReplacesAnExistingFile) {
 }
 
 TEST(AtomicFile, WriteIntoAMissingFolderThrowsNamingThePath) {
-  const fs::path dir = freshDir("missing");
+  const fs::path dir = makeFreshDir("missing");
   const fs::path target = dir / "no-such-folder" / "x.json";
   try {
     writeFileAtomically(target, "{}");
@@ -77,7 +64,7 @@ TEST(AtomicFile, WriteIntoAMissingFolderThrowsNamingThePath) {
 }
 
 TEST(AtomicFile, MoveIntoPlaceRenamesAFileWrittenUnderItsTemporaryName) {
-  const fs::path dir = freshDir("move");
+  const fs::path dir = makeFreshDir("move");
   const fs::path target = dir / "final.png", tmp = temporaryNameFor(target, ".part");
   std::ofstream(target) << "old";
   std::ofstream(tmp) << "png bytes";
@@ -88,7 +75,7 @@ TEST(AtomicFile, MoveIntoPlaceRenamesAFileWrittenUnderItsTemporaryName) {
 }
 
 TEST(AtomicFile, MoveIntoPlaceReplacesAFolderOfFrames) {
-  const fs::path dir = freshDir("frames");
+  const fs::path dir = makeFreshDir("frames");
   const fs::path target = dir / "frames_chase", tmp = temporaryNameFor(target, ".part");
   fs::create_directories(target);
   std::ofstream(target / "00009.png") << "stale";
@@ -101,7 +88,7 @@ TEST(AtomicFile, MoveIntoPlaceReplacesAFolderOfFrames) {
 }
 
 TEST(AtomicFile, MoveIntoPlaceThatFailsRemovesWhatWasWritten) {
-  const fs::path dir = freshDir("move-fail");
+  const fs::path dir = makeFreshDir("move-fail");
   const fs::path tmp = dir / ".x.part1";
   std::ofstream(tmp) << "data";
   const fs::path target = dir / "no-such-folder" / "x.mp4";
@@ -118,7 +105,7 @@ TEST(AtomicFile, MoveIntoPlaceThatFailsRemovesWhatWasWritten) {
 // The rename would put a regular file in place of a FIFO or a device (as root it replaced the
 // machine's /dev/null): such a target is refused, untouched, with nothing left beside it.
 TEST(AtomicFile, AFifoOrADeviceIsNeverReplaced) {
-  const fs::path dir = freshDir("special");
+  const fs::path dir = makeFreshDir("special");
   const fs::path fifo = dir / "pipe";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
   try {

@@ -7,8 +7,9 @@
 #include <fstream>
 
 #include "sim/run_log_io.h"
-#include "tests/experiments/cli_test_support.h"
 #include "tests/experiments/usd_log_writer.h"
+#include "tests/support/cosim_command.h"
+#include "tests/support/json_fields.h"
 
 namespace cosim::test {
 namespace {

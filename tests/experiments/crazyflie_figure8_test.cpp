@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <regex>
 
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 namespace cosim {
 namespace {

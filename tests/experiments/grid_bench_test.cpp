@@ -16,6 +16,7 @@
 
 #include "experiments/bench/grid_astar_vs_boost.h"
 #include "experiments/reproduce/reproduction.h"
+#include "tests/support/test_files.h"
 
 namespace cosim::reproduce {
 Report seed003Discrete(const Options& options);
@@ -25,27 +26,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// MovingAI files: the grid tests' own, and those cosim bundles.
 const std::string kData = COSIM_TEST_DATA_DIR "/movingai/";
+const std::string kMaps = COSIM_SOURCE_DIR "/experiments/maps/";
 
 struct CommandRun {
   int status;
   std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using cosim::test::slurp;
 
 class GridBenchCommand : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("cosim-grid-bench-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
+    dir_ =
+        cosim::test::makeFreshDir(std::string("grid-bench-") +
+                                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
   void TearDown() override { fs::remove_all(dir_); }
 
@@ -103,7 +100,7 @@ TEST_F(GridBenchCommand, AStarOnArenaWritesTheContractCsvAndMatchesEveryOptimum)
 TEST_F(GridBenchCommand, LimitPlansOnlyTheFirstLines) {
   const fs::path csv = dir_ / "maze.csv";
   const CommandRun r =
-      run(kData + "maze-32-32-2.map " + kData +
+      run(kMaps + "maze-32-32-2.map " + kMaps +
           "maze-32-32-2-random-1.scen --planner bellman_ford --limit 7 --out " + csv.string());
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(csvRows(slurp(csv)).size(), 8u);

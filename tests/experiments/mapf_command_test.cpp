@@ -5,9 +5,10 @@
 #include <sstream>
 #include <vector>
 
-#include "cli_test_support.h"
 #include "experiments/bench/mapf_planners.h"
 #include "experiments/reproduce/reproduction.h"
+#include "tests/support/cosim_command.h"
+#include "tests/support/json_fields.h"
 
 namespace cosim::reproduce {
 Report seed004Planners(const Options& options);
@@ -19,8 +20,8 @@ using namespace cosim;
 using cosim::test::runCosim;
 
 namespace {
-const std::string kMap = COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map";
-const std::string kScen = COSIM_TEST_DATA_DIR "/movingai/random-32-32-10-random-1.scen";
+const std::string kMap = COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10.map";
+const std::string kScen = COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10-random-1.scen";
 
 // Rows of paths.csv per agent, and whether consecutive rows of an agent count t up from 0.
 std::vector<int> rowsPerAgent(const std::string& csv, int agents, bool* times_consecutive) {
@@ -110,8 +111,8 @@ TEST(MapfBench, QuickSectionReportsBothPlannersAtTwentyAgents) {
 // block, and the execution's scenario (written next to the results) is the map with its cells.
 TEST(MapfCommand, ExecuteDrivesTheCbsPlanWithRobotsInPhysicsWithoutContacts) {
   const auto dir = test::freshDir("mapf-execute");
-  const std::string map = COSIM_TEST_DATA_DIR "/mapf/empty-8-8.map";
-  const std::string scen = COSIM_TEST_DATA_DIR "/mapf/empty-8-8-random-1.scen";
+  const std::string map = COSIM_SOURCE_DIR "/experiments/maps/empty-8-8.map";
+  const std::string scen = COSIM_SOURCE_DIR "/experiments/maps/empty-8-8-random-1.scen";
   const auto r =
       runCosim("mapf " + map + " " + scen +
                " --agents 6 --planner cbs --block 3,3 --block 4,3 --execute --out " + dir.string());
@@ -125,7 +126,7 @@ TEST(MapfCommand, ExecuteDrivesTheCbsPlanWithRobotsInPhysicsWithoutContacts) {
   EXPECT_EQ(test::jsonNumber(run, "obstacle_contacts"), 0);
   // The physics ran the same plan: its step count times the step time is the planned makespan
   // (one step of settling and one onto the goal point aside).
-  const double step = test::jsonNumber(run, "step_time_s");
+  const double step = test::jsonNumber(run, "planner_counters.step_time_s");
   EXPECT_NEAR(test::jsonNumber(run, "planned_makespan_s"),
               test::jsonNumber(planned, "makespan") * step + 0.2, 1.01 * step);
   // The very plan mapf.json describes, not a second search: its search time is the run's
@@ -144,10 +145,11 @@ TEST(MapfCommand, ExecuteDrivesTheCbsPlanWithRobotsInPhysicsWithoutContacts) {
 // Robots too wide for the cells are bad input found before planning: exit 2, nothing written.
 TEST(MapfCommand, ExecuteRefusesCellsTooSmallForTheRobotBeforePlanning) {
   const auto dir = test::freshDir("mapf-execute-small-cells");
-  const auto r = runCosim("mapf " COSIM_TEST_DATA_DIR "/mapf/empty-8-8.map " COSIM_TEST_DATA_DIR
-                          "/mapf/empty-8-8-random-1.scen --agents 4 --planner cbs --execute "
-                          "--connectivity 8 --cell 0.5 --out " +
-                          dir.string());
+  const auto r =
+      runCosim("mapf " COSIM_SOURCE_DIR "/experiments/maps/empty-8-8.map " COSIM_SOURCE_DIR
+               "/experiments/maps/empty-8-8-random-1.scen --agents 4 --planner cbs --execute "
+               "--connectivity 8 --cell 0.5 --out " +
+               dir.string());
   EXPECT_EQ(r.status, 2);
   // omni_base (radius 0.15 m) plus the 0.05 m margin needs 0.2 / (sqrt(2) / 4) = 0.566 m cells.
   EXPECT_NE(r.err.find("need cells of at least 0.565685 m"), std::string::npos) << r.err;
@@ -158,8 +160,8 @@ TEST(MapfCommand, ExecuteRefusesCellsTooSmallForTheRobotBeforePlanning) {
 // success-rate figure and the summary with the published LaCAM* figures beside ours.
 TEST(MapfCommand, AgentRangeRunsEveryPlannerAtEveryCountAndWritesCsvFigureAndSummary) {
   const auto dir = test::freshDir("mapf-benchmark");
-  const std::string map = COSIM_TEST_DATA_DIR "/mapf/empty-8-8.map";
-  const std::string scen = COSIM_TEST_DATA_DIR "/mapf/empty-8-8-random-1.scen";
+  const std::string map = COSIM_SOURCE_DIR "/experiments/maps/empty-8-8.map";
+  const std::string scen = COSIM_SOURCE_DIR "/experiments/maps/empty-8-8-random-1.scen";
   const auto r =
       runCosim("mapf " + map + " " + scen +
                " --agents 4:12:4 --planner lacam,pibt,cbs --time-limit 5 --out " + dir.string());

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "experiments/bench/plan_bench_runs.h"
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 namespace cosim::test {
 namespace {

@@ -15,7 +15,7 @@
 
 #include "control/piecewise_polynomial_reference.h"
 #include "run/run_pipeline.h"
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/test_files.h"
 
 namespace cosim::test {
 namespace {

@@ -10,7 +10,8 @@
 #include "experiments/reproduce/seed002_maklink_map.h"
 #include "experiments/reproduce/seed002_workspaces.h"
 #include "planning/grid/astar.h"
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/cosim_command.h"
+#include "tests/support/json_fields.h"
 
 namespace cosim::reproduce {
 namespace {
@@ -35,7 +36,7 @@ TEST(ReproductionFiles, QuickRunsAreMarkedUnderTheTitleAndInTheJson) {
   EXPECT_TRUE(test::jsonTrue(json, "quick"));
   EXPECT_NE(json.find("\"experiment\": \"demo\""), std::string::npos);
   EXPECT_NE(json.find("\"planner\": \"rrt_star\""), std::string::npos);
-  EXPECT_EQ(test::jsonNumber(json, "length_m"), 12.5);
+  EXPECT_EQ(test::jsonNumber(json, "rows[0].length_m"), 12.5);
   Options full;
   EXPECT_EQ(reportMarkdown(full, twoRows()), twoRows().markdown);
   EXPECT_NE(reportJson("demo", full, twoRows()).find("\"quick\": false"), std::string::npos);

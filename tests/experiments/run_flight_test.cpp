@@ -9,7 +9,7 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "sim/run_log_io.h"
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/test_files.h"
 
 namespace cosim::test {
 namespace {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "run/run_pipeline.h"
-#include "tests/experiments/cli_test_support.h"
+#include "tests/support/test_files.h"
 
 namespace cosim::test {
 namespace {

@@ -12,9 +12,10 @@
 #include <cstdio>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <thread>
 
-#include "cli_test_support.h"
+#include "tests/support/cosim_command.h"
 
 namespace cosim {
 namespace {

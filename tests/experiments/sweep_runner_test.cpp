@@ -4,7 +4,6 @@
 #include "experiments/sweep/sweep_runner.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <atomic>
 #include <filesystem>
@@ -13,6 +12,7 @@
 
 #include "experiments/sweep/job_result.h"
 #include "experiments/sweep/sweep_results_table.h"
+#include "tests/support/test_files.h"
 
 namespace cosim {
 namespace {
@@ -40,9 +40,7 @@ esac
 class SweepRunnerTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() / ("cosim-sweep-runner-" + std::to_string(::getpid()));
-    fs::remove_all(root_);
-    fs::create_directories(root_);
+    root_ = cosim::test::makeFreshDir("sweep-runner");
     std::ofstream(root_ / "fake-cosim") << kFakeCosim;
     fs::permissions(root_ / "fake-cosim", fs::perms::owner_all);
     std::ofstream(root_ / "world.yaml") << "# any text: the fake program does not read it\n";

@@ -3,7 +3,6 @@
 #include "experiments/sweep/sweep_spec.h"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -11,6 +10,7 @@
 #include "experiments/sweep/sweep_jobs.h"
 #include "experiments/sweep/sweep_shard.h"
 #include "core/input_error.h"
+#include "tests/support/test_files.h"
 
 namespace cosim {
 namespace {
@@ -31,8 +31,7 @@ sim: {max_time: 30, seed: 1}
 class SweepSpecTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    root_ = fs::temp_directory_path() / ("cosim-sweep-spec-" + std::to_string(::getpid()));
-    fs::remove_all(root_);
+    root_ = cosim::test::freshDir("sweep-spec");
     fs::create_directories(root_ / "scenarios");
     fs::create_directories(root_ / "sweeps");
     write(root_ / "scenarios/a.yaml", kScenario);

@@ -36,8 +36,8 @@ seeds() {
   case "$1" in
     fuzz_scenario) ls experiments/scenarios/*.yaml ;;
     fuzz_sweep) ls experiments/sweeps/*.yaml ;;
-    fuzz_movingai_map) ls tests/data/movingai/*.map ;;
-    fuzz_movingai_scen) ls tests/data/movingai/*.scen ;;
+    fuzz_movingai_map) ls experiments/maps/*.map tests/data/movingai/*.map ;;
+    fuzz_movingai_scen) ls experiments/maps/*.scen tests/data/movingai/*.scen ;;
     fuzz_urdf) ls models/*.urdf ;;
     fuzz_world_fragment) ls tests/fuzz/corpus/fuzz_world_fragment/*.xml ;;
     fuzz_flight_log_csv | fuzz_usd_log) ;;  # their kept corpus only

@@ -143,7 +143,7 @@ TEST(GridAnyAngle, ThetaPathsAreClearAndNoLongerThanAStarIn3D) {
 }
 
 TEST(GridAnyAngle, ThetaPathsAreClearAndNoLongerThanAStarOnAMovingAIMaze) {
-  const OccupancyGrid g = readMovingAIMap(COSIM_TEST_DATA_DIR "/movingai/maze-32-32-2.map");
+  const OccupancyGrid g = readMovingAIMap(COSIM_SOURCE_DIR "/experiments/maps/maze-32-32-2.map");
   EXPECT_GT(checkAnyAngleAgainstAStar(g, 80, 17), 60);
 }
 

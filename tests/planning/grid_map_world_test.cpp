@@ -28,7 +28,7 @@ void expectBoxesCoverExactlyTheBlockedCells(const OccupancyGrid& grid, const Wor
 
 TEST(GridMapWorld, BoxesCoverExactlyTheBlockedCellsOfTheWarehouseMap) {
   const OccupancyGrid grid =
-      scaled(readMovingAIMap(COSIM_TEST_DATA_DIR "/mapf/warehouse-10-20-10-2-1.map"), 0.5);
+      scaled(readMovingAIMap(COSIM_SOURCE_DIR "/experiments/maps/warehouse-10-20-10-2-1.map"), 0.5);
   const World w = worldFromGridMap(grid, 0.4, 3.0);
   expectBoxesCoverExactlyTheBlockedCells(grid, w);
   EXPECT_DOUBLE_EQ(w.bounds_max.x(), 0.5 * grid.nx());
@@ -40,7 +40,7 @@ TEST(GridMapWorld, BoxesCoverExactlyTheBlockedCellsOfTheWarehouseMap) {
 
 TEST(GridMapWorld, BoxesCoverExactlyTheBlockedCellsOfTheMazeMap) {
   const OccupancyGrid grid =
-      scaled(readMovingAIMap(COSIM_TEST_DATA_DIR "/mapf/maze-32-32-2.map"), 0.7);
+      scaled(readMovingAIMap(COSIM_SOURCE_DIR "/experiments/maps/maze-32-32-2.map"), 0.7);
   const World w = worldFromGridMap(grid, 0.5, 2.0);
   expectBoxesCoverExactlyTheBlockedCells(grid, w);
   EXPECT_LT(w.obstacles.size(), grid.blockedCount());

@@ -11,6 +11,7 @@
 #include "planning/grid/bellman_ford.h"
 #include "planning/grid/dijkstra.h"
 #include "planning/grid/movingai.h"
+#include "tests/support/movingai_files.h"
 
 using namespace cosim;
 
@@ -46,9 +47,8 @@ GridQuery scenarioQuery(const OccupancyGrid& grid, const MovingAIScenarioLine& s
 
 // Returns the number of lines checked; every mismatch is a test failure naming the line.
 std::size_t checkScenario(GridPlanner& planner, const Case& c, std::size_t limit) {
-  const std::string dir = COSIM_TEST_DATA_DIR "/movingai/";
-  const OccupancyGrid grid = readMovingAIMap(dir + c.map);
-  const auto lines = readMovingAIScenario(dir + c.scen);
+  const OccupancyGrid grid = readMovingAIMap(test::movingAIFile(c.map));
+  const auto lines = readMovingAIScenario(test::movingAIFile(c.scen));
   const std::size_t n = limit == 0 ? lines.size() : std::min(limit, lines.size());
   for (std::size_t i = 0; i < n; ++i) {
     const MovingAIScenarioLine& s = lines[i];

@@ -96,11 +96,12 @@ double referenceOptimum(const OccupancyGrid& g, const Cell& s, const Cell& t, in
 }
 
 OccupancyGrid randomMap() {
-  return readMovingAIMap(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map");
+  return readMovingAIMap(COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10.map");
 }
 
 std::vector<MovingAIScenarioLine> queries(int n) {
-  auto lines = readMovingAIScenario(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10-random-1.scen");
+  auto lines =
+      readMovingAIScenario(COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10-random-1.scen");
   lines.resize(n);
   return lines;
 }

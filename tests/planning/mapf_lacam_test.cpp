@@ -11,6 +11,7 @@
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/mapf/movingai_instance.h"
 #include "planning/mapf/solution_validator.h"
+#include "tests/support/movingai_files.h"
 
 using namespace cosim;
 using cosim::test::instanceFrom;
@@ -31,8 +32,9 @@ MapfResult run(const std::string& planner, const MapfInstance& inst,
   return algo->solve(q, StopToken::untimed(stop));
 }
 
+// A MovingAI benchmark file by name, from wherever the repository keeps it.
 std::string data(const std::string& name) {
-  return std::string(COSIM_TEST_DATA_DIR) + "/" + name;
+  return test::movingAIFile(name);
 }
 
 MapfInstance benchmark(const std::string& map, const std::string& scen, int agents,
@@ -63,8 +65,8 @@ void expectValid(const MapfInstance& inst, const MapfResult& r, const std::strin
 TEST(Lacam, AnytimeSearchImprovesItsFirstSolutionDownToTheCbsOptimum) {
   // Measured: the first solutions cost 218 and 78; the search then proves the CBS optimum.
   for (const auto& inst :
-       {benchmark("movingai/random-32-32-10.map", "movingai/random-32-32-10-random-1.scen", 8),
-        benchmark("mapf/empty-8-8.map", "mapf/empty-8-8-random-1.scen", 12)}) {
+       {benchmark("random-32-32-10.map", "random-32-32-10-random-1.scen", 8),
+        benchmark("empty-8-8.map", "empty-8-8-random-1.scen", 12)}) {
     const MapfResult cbs = run("cbs", inst);
     ASSERT_TRUE(cbs.success);
     const MapfResult r = run("lacam", inst);
@@ -81,7 +83,7 @@ TEST(Lacam, AnytimeSearchImprovesItsFirstSolutionDownToTheCbsOptimum) {
 
 TEST(Lacam, WithoutAnytimeItKeepsTheFirstSolution) {
   const auto inst =
-      benchmark("movingai/random-32-32-10.map", "movingai/random-32-32-10-random-1.scen", 8);
+      benchmark("random-32-32-10.map", "random-32-32-10-random-1.scen", 8);
   const MapfResult r = run("lacam", inst, {{"anytime", "false"}});
   expectValid(inst, r, "lacam, anytime=false");
   EXPECT_EQ(static_cast<double>(sumOfCosts(r.paths)), r.counters.at("first_sum_of_costs"));
@@ -102,7 +104,7 @@ TEST(Lacam, ReachesTheOptimumOnFourAndEightConnectedGrids) {
   EXPECT_EQ(sumOfCosts(pocket.paths), 12);
   for (const int connectivity : {4, 8}) {
     const auto inst =
-        benchmark("mapf/empty-8-8.map", "mapf/empty-8-8-random-1.scen", 6, connectivity);
+        benchmark("empty-8-8.map", "empty-8-8-random-1.scen", 6, connectivity);
     // 8-connected the first solution is already optimal, but proving it takes long: a short
     // anytime phase keeps the test fast.
     const MapfResult cbs = run("cbs", inst), pibt = run("pibt", inst),
@@ -118,9 +120,9 @@ TEST(Lacam, SolvesTheFullScenarioOfDenseBenchmarkMaps) {
   // The benchmark files' full agent counts: 333 agents in a maze of corridors two cells wide,
   // 1000 in the warehouse, 290 in den312d (the full count of its even-1 file).
   for (const auto& [map, scen, agents] : std::vector<std::tuple<std::string, std::string, int>>{
-           {"mapf/maze-32-32-2.map", "mapf/maze-32-32-2-random-1.scen", 333},
-           {"mapf/warehouse-10-20-10-2-1.map", "mapf/warehouse-10-20-10-2-1-random-1.scen", 1000},
-           {"movingai/den312d.map", "movingai/den312d-even-1.scen", 290}}) {
+           {"maze-32-32-2.map", "maze-32-32-2-random-1.scen", 333},
+           {"warehouse-10-20-10-2-1.map", "warehouse-10-20-10-2-1-random-1.scen", 1000},
+           {"den312d.map", "den312d-even-1.scen", 290}}) {
     const auto inst = benchmark(map, scen, agents);
     const MapfResult r = run("lacam", inst, {{"anytime", "false"}}, 60.0);
     expectValid(inst, r, map);
@@ -129,7 +131,7 @@ TEST(Lacam, SolvesTheFullScenarioOfDenseBenchmarkMaps) {
 
 TEST(Lacam, SameSeedSamePathsAnotherSeedOtherPaths) {
   const auto inst =
-      benchmark("movingai/random-32-32-10.map", "movingai/random-32-32-10-random-1.scen", 150);
+      benchmark("random-32-32-10.map", "random-32-32-10-random-1.scen", 150);
   for (const std::string planner : {"lacam", "pibt"}) {
     const std::vector<std::pair<std::string, std::string>> params =
         planner == "lacam"
@@ -147,8 +149,8 @@ TEST(Lacam, SameSeedSamePathsAnotherSeedOtherPaths) {
 TEST(Lacam, TinyTimeLimitEndsTheSearchWithATimeLimitMessage) {
   // 1000 agents and 1 ms: not even the distance tables are done. The bound below is loose (it
   // only fails if the limit were ignored: the full search takes seconds).
-  const auto inst = benchmark("mapf/warehouse-10-20-10-2-1.map",
-                              "mapf/warehouse-10-20-10-2-1-random-1.scen", 1000);
+  const auto inst = benchmark("warehouse-10-20-10-2-1.map",
+                              "warehouse-10-20-10-2-1-random-1.scen", 1000);
   for (const std::string planner : {"lacam", "pibt"}) {
     const MapfResult r = run(planner, inst, {}, 0.001);
     EXPECT_FALSE(r.success) << planner;
@@ -159,7 +161,7 @@ TEST(Lacam, TinyTimeLimitEndsTheSearchWithATimeLimitMessage) {
 
 TEST(MapfPlanners, EveryPlannerStopsAtOnceWhenAskedTo) {
   const auto inst =
-      benchmark("movingai/random-32-32-10.map", "movingai/random-32-32-10-random-1.scen", 100);
+      benchmark("random-32-32-10.map", "random-32-32-10-random-1.scen", 100);
   const std::atomic<bool> stop{true};
   for (const auto& e : mapfPlanners()) {
     const MapfResult r = run(e.name, inst, {}, 30.0, 1, &stop);

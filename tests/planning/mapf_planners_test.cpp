@@ -13,6 +13,7 @@
 #include "planning/mapf/reverse_resumable_astar.h"
 #include "planning/mapf/solution_validator.h"
 #include "planning/mapf/timed_paths.h"
+#include "tests/support/movingai_files.h"
 
 using namespace cosim;
 using cosim::test::instanceFrom;
@@ -36,8 +37,9 @@ MapfResult run(const std::string& planner, const MapfInstance& inst,
   return algo->solve(q, StopToken::untimed());
 }
 
+// A MovingAI benchmark file by name, from wherever the repository keeps it.
 std::string data(const std::string& name) {
-  return std::string(COSIM_TEST_DATA_DIR) + "/" + name;
+  return test::movingAIFile(name);
 }
 
 // Agents on a seed-004 maze: starts on the first free cells of the top rows, goals on the last.
@@ -66,17 +68,17 @@ std::vector<NamedInstance> testInstances() {
   v.push_back({"2x2 crossing, 8-connected",
                instanceFrom({"..", ".."}, {{0, 0, 0}, {1, 0, 0}}, {{1, 1, 0}, {0, 1, 0}}, 8)});
   v.push_back({"random-32-32-10, 10 agents",
-               readMovingAIMapfInstance(data("movingai/random-32-32-10.map"),
-                                        data("movingai/random-32-32-10-random-1.scen"), 10)});
+               readMovingAIMapfInstance(data("random-32-32-10.map"),
+                                        data("random-32-32-10-random-1.scen"), 10)});
   v.push_back({"random-32-32-10, 10 agents, 8-connected",
-               readMovingAIMapfInstance(data("movingai/random-32-32-10.map"),
-                                        data("movingai/random-32-32-10-random-1.scen"), 10, 8)});
+               readMovingAIMapfInstance(data("random-32-32-10.map"),
+                                        data("random-32-32-10-random-1.scen"), 10, 8)});
   v.push_back({"maze-32-32-2, 4 agents",
-               readMovingAIMapfInstance(data("mapf/maze-32-32-2.map"),
-                                        data("mapf/maze-32-32-2-random-1.scen"), 4)});
+               readMovingAIMapfInstance(data("maze-32-32-2.map"),
+                                        data("maze-32-32-2-random-1.scen"), 4)});
   v.push_back({"empty-8-8, 8 agents, 8-connected",
-               readMovingAIMapfInstance(data("mapf/empty-8-8.map"),
-                                        data("mapf/empty-8-8-random-1.scen"), 8, 8)});
+               readMovingAIMapfInstance(data("empty-8-8.map"),
+                                        data("empty-8-8-random-1.scen"), 8, 8)});
   v.push_back({"seed-004 maze 15x15, 4 agents", seedMazeInstance(15, 4, 5)});
   return v;
 }
@@ -147,8 +149,8 @@ TEST(MapfPlanners, DynamicPrioritiesSolveThePocketCorridorTheFixedOrderCannot) {
 
 TEST(MapfPlanners, WhcaStarWithDynamicPrioritiesSolvesTheMazeWhereFixedOnesLivelock) {
   // Seed 004 claim (§4.5, §6.3): raising the priority of blocked agents raises the success rate.
-  const auto inst = readMovingAIMapfInstance(data("mapf/maze-32-32-2.map"),
-                                             data("mapf/maze-32-32-2-random-1.scen"), 20);
+  const auto inst = readMovingAIMapfInstance(data("maze-32-32-2.map"),
+                                             data("maze-32-32-2-random-1.scen"), 20);
   const MapfResult fixed = run("whca_star", inst, {{"priorities", "fixed"}});
   EXPECT_FALSE(fixed.success);
   const MapfResult dynamic = run("whca_star", inst, {{"priorities", "dynamic"}});
@@ -157,8 +159,8 @@ TEST(MapfPlanners, WhcaStarWithDynamicPrioritiesSolvesTheMazeWhereFixedOnesLivel
 }
 
 TEST(MapfPlanners, WhcaStarPlansTwentyAgentsOnRandom32) {
-  const auto inst = readMovingAIMapfInstance(data("movingai/random-32-32-10.map"),
-                                             data("movingai/random-32-32-10-random-1.scen"), 20);
+  const auto inst = readMovingAIMapfInstance(data("random-32-32-10.map"),
+                                             data("random-32-32-10-random-1.scen"), 20);
   const MapfResult r = run("whca_star", inst, {{"window", "8"}});
   ASSERT_TRUE(r.success) << r.message;
   EXPECT_TRUE(validateMapfSolution(inst, r.paths).valid());
@@ -177,8 +179,8 @@ TEST(MapfPlanners, UnreachableGoalIsReportedNotSearchedForEver) {
 }
 
 TEST(MapfPlanners, LraStarIsDeterministicInTheSeed) {
-  const auto inst = readMovingAIMapfInstance(data("mapf/empty-8-8.map"),
-                                             data("mapf/empty-8-8-random-1.scen"), 12);
+  const auto inst = readMovingAIMapfInstance(data("empty-8-8.map"),
+                                             data("empty-8-8-random-1.scen"), 12);
   const MapfResult a = run("lra_star", inst), b = run("lra_star", inst);
   ASSERT_EQ(a.paths.size(), b.paths.size());
   for (std::size_t i = 0; i < a.paths.size(); ++i) EXPECT_EQ(a.paths[i], b.paths[i]);
@@ -208,13 +210,13 @@ TEST(MapfPlannerRegistry, KnowsTheContractNamesAndRejectsUnknownOnes) {
 }
 
 TEST(MovingAIMapfInstance, MoreAgentsThanScenarioLinesIsAnInputError) {
-  EXPECT_THROW(readMovingAIMapfInstance(data("mapf/empty-8-8.map"),
-                                        data("mapf/empty-8-8-random-1.scen"), 1000),
+  EXPECT_THROW(readMovingAIMapfInstance(data("empty-8-8.map"),
+                                        data("empty-8-8-random-1.scen"), 1000),
                InputError);
 }
 
 TEST(ReverseResumableAStar, DistancesEqualBreadthFirstSearch) {
-  const OccupancyGrid g = readMovingAIMap(data("movingai/random-32-32-10.map"));
+  const OccupancyGrid g = readMovingAIMap(data("random-32-32-10.map"));
   const MapfGrid grid(g, 4);
   const int goal = grid.id({3, 4, 0});
   ReverseResumableAStar rra(grid, goal, grid.id({30, 30, 0}));

@@ -7,7 +7,7 @@
 using namespace cosim;
 
 TEST(MovingAIMap, ReadsDimensionsAndObstaclesOfRandom32) {
-  const OccupancyGrid g = readMovingAIMap(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map");
+  const OccupancyGrid g = readMovingAIMap(COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10.map");
   EXPECT_EQ(g.nx(), 32);
   EXPECT_EQ(g.ny(), 32);
   EXPECT_FALSE(g.is3D());
@@ -39,7 +39,8 @@ TEST(MovingAIMap, ShortRowNamesItsLine) {
 }
 
 TEST(MovingAIScenario, ParsesTabSeparatedLinesWithOptimalLength) {
-  const auto lines = readMovingAIScenario(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10-random-1.scen");
+  const auto lines =
+      readMovingAIScenario(COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10-random-1.scen");
   ASSERT_GT(lines.size(), 10u);
   EXPECT_EQ(lines[0].width, 32);
   EXPECT_GT(lines[0].optimal_length, 0.0);

@@ -87,9 +87,9 @@ TEST(Msac, FindsTheOptimalDiagonalOnTheFreeSceneInEveryRun) {
 }
 
 TEST(Msac, PathsOnRandom32AreValidAndNearOptimal) {
-  const OccupancyGrid g = readMovingAIMap(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map");
+  const OccupancyGrid g = readMovingAIMap(COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10.map");
   const auto scen =
-      readMovingAIScenario(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10-random-1.scen");
+      readMovingAIScenario(COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10-random-1.scen");
   Msac msac;
   double gap_sum = 0.0;
   int n = 0;
@@ -107,7 +107,7 @@ TEST(Msac, PathsOnRandom32AreValidAndNearOptimal) {
 }
 
 TEST(Msac, SameSeedSamePathOtherSeedMayDiffer) {
-  const OccupancyGrid g = readMovingAIMap(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map");
+  const OccupancyGrid g = readMovingAIMap(COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10.map");
   Msac msac;
   const Cell s{1, 1, 0}, t{30, 28, 0};
   ASSERT_FALSE(g.blocked(s));

@@ -28,9 +28,9 @@ SacoParams sacoParams(double beta, int gamma, bool rolling) {
 }  // namespace
 
 TEST(Saco, PathsOnRandom32AreValidAndNoShorterThanAStar) {
-  const OccupancyGrid g = readMovingAIMap(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map");
+  const OccupancyGrid g = readMovingAIMap(COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10.map");
   const auto scen =
-      readMovingAIScenario(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10-random-1.scen");
+      readMovingAIScenario(COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10-random-1.scen");
   Saco sacodm;  // defaults: SACOdm, beta 1, rolling gamma 1, EAS weight 1, conditional diagonal
   for (std::size_t i = 0; i < 20; ++i) {
     const Cell s{scen[i].start_x, scen[i].start_y, 0}, t{scen[i].goal_x, scen[i].goal_y, 0};
@@ -96,7 +96,7 @@ TEST(Saco, RollingMemoryWalksLessThanFirstGammaMemory) {
 }
 
 TEST(Saco, SameSeedSamePath) {
-  const OccupancyGrid g = readMovingAIMap(COSIM_TEST_DATA_DIR "/movingai/random-32-32-10.map");
+  const OccupancyGrid g = readMovingAIMap(COSIM_SOURCE_DIR "/experiments/maps/random-32-32-10.map");
   Saco a, b;
   const GridPlanResult ra =
       a.solveGrid(antQuery(g, {1, 1, 0}, {30, 28, 0}, 11), StopToken::untimed());

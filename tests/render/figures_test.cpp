@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <sstream>
 
 #include "core/input_error.h"
 #include "render/comparison_chart.h"
@@ -14,13 +13,6 @@ using namespace cosim;
 using namespace cosim::test;
 
 namespace {
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Width and height from a PNG's IHDR chunk.
 std::pair<int, int> pngSize(const std::filesystem::path& p) {
@@ -37,7 +29,7 @@ std::pair<int, int> pngSize(const std::filesystem::path& p) {
 }  // namespace
 
 TEST(Figures, RunFiguresAreWrittenAsPngAndSvgWithTheirContent) {
-  const auto dir = freshTestDir("figures");
+  const auto dir = makeFreshDir("figures");
   const Scenario s = renderTestScenario();
   const RunLog log = straightFlightLog(3.0, 0.25);
   const std::vector<std::string> names = writeRunFigures(log, s, dir / "figures");
@@ -66,7 +58,7 @@ TEST(Figures, RunFiguresAreWrittenAsPngAndSvgWithTheirContent) {
 }
 
 TEST(Figures, ComparisonChartWithNumericXIsALinePerGroupAveragedOverRepeats) {
-  const auto dir = freshTestDir("chart_lines");
+  const auto dir = makeFreshDir("chart_lines");
   std::ofstream(dir / "results.csv")
       << "job,planner.name,resolution,planning_time_ms,status\n"
          "1,astar,0.5,10,ok\n2,astar,0.5,14,ok\n3,astar,1.0,4,ok\n"
@@ -81,7 +73,7 @@ TEST(Figures, ComparisonChartWithNumericXIsALinePerGroupAveragedOverRepeats) {
 }
 
 TEST(Figures, ComparisonChartWithCategoricalXIsBars) {
-  const auto dir = freshTestDir("chart_bars");
+  const auto dir = makeFreshDir("chart_bars");
   std::ofstream(dir / "results.csv")
       << "planner,scenario,rmse_m\nastar,forest,0.1\nrrt_star,forest,0.2\n"
          "astar,canyon,0.15\nrrt_star,canyon,0.3\n";
@@ -95,7 +87,7 @@ TEST(Figures, ComparisonChartWithCategoricalXIsBars) {
 }
 
 TEST(Figures, ComparisonChartNamesAMissingColumn) {
-  const auto dir = freshTestDir("chart_bad");
+  const auto dir = makeFreshDir("chart_bad");
   std::ofstream(dir / "results.csv") << "planner,rmse_m\nastar,0.1\n";
   try {
     writeComparisonChart(dir / "results.csv", "planner", "max_error_m", "", dir / "x");
@@ -108,7 +100,7 @@ TEST(Figures, ComparisonChartNamesAMissingColumn) {
 }
 
 TEST(Figures, TeamPathFiguresShowFlownPathsAndTheirPlansOnlyWhenAsked) {
-  const auto dir = freshTestDir("team_figures");
+  const auto dir = makeFreshDir("team_figures");
   Scenario s = renderTestScenario();
   s.vehicles.push_back(s.vehicles[0]);
   s.vehicles[1].name = "uav2";

@@ -3,9 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "render/run_outputs.h"
 #include "render_test_scene.h"
 
@@ -32,10 +29,7 @@ std::string dumpDom(const std::string& browser, const std::filesystem::path& pag
       profile.string() + " --virtual-time-budget=20000 --dump-dom file://" + page.string() + " > " +
       out.string() + " 2> /dev/null";
   if (std::system(cmd.c_str()) != 0) return "";
-  std::ifstream in(out);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return slurp(out);
 }
 
 }  // namespace
@@ -45,7 +39,7 @@ TEST(HtmlReport, RunReportLoadsEveryVideoAndFigureInHeadlessChromium) {
   if (browser.empty())
     GTEST_SKIP()
         << "Chromium is not installed (Debian package 'chromium'); the report cannot be checked";
-  const auto dir = freshTestDir("report");
+  const auto dir = makeFreshDir("report");
   Scenario s = renderTestScenario(320, 180);
   s.render.fps = 5;
   s.render.cameras = {"top"};

@@ -1,13 +1,12 @@
 #pragma once
 // A small known world and a synthetic flight log for the render tests: no planning, no physics.
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <string>
 
 #include "sim/run_log.h"
 #include "sim/scenario.h"
+#include "tests/support/test_files.h"
 
 namespace cosim::test {
 
@@ -62,14 +61,6 @@ inline RunLog straightFlightLog(double seconds, double lag = 0.2) {
   log.sim_time = seconds;
   log.end_reason = RunEnd::Goal;
   return log;
-}
-
-inline std::filesystem::path freshTestDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("cosim_render_test_" + name + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
 }
 
 }  // namespace cosim::test

@@ -3,8 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "render/run_outputs.h"
 #include "render_test_scene.h"
@@ -20,10 +18,7 @@ std::string probe(const std::filesystem::path& video, const std::string& entries
                           entries + " -of default=noprint_wrappers=1 " + video.string() + " > " +
                           out.string();
   if (std::system(cmd.c_str()) != 0) return "";
-  std::ifstream in(out);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
+  return slurp(out);
 }
 
 double field(const std::string& text, const std::string& key) {
@@ -45,7 +40,7 @@ TEST(VideoOutput, FrameCountFollowsSimulatedTimeAndSpeedup) {
 }
 
 TEST(VideoOutput, Mp4HasTheExpectedFramesDurationAndBrowserEncoding) {
-  const auto dir = freshTestDir("mp4");
+  const auto dir = makeFreshDir("mp4");
   Scenario s = renderTestScenario(320, 180);
   s.render.fps = 10;
   const RunLog log = straightFlightLog(2.0);
@@ -72,7 +67,7 @@ TEST(VideoOutput, Mp4HasTheExpectedFramesDurationAndBrowserEncoding) {
 }
 
 TEST(VideoOutput, PngSequenceHasOneNumberedFramePerVideoFrame) {
-  const auto dir = freshTestDir("png_sequence");
+  const auto dir = makeFreshDir("png_sequence");
   Scenario s = renderTestScenario(320, 180);
   s.render.fps = 5;
   const RunLog log = straightFlightLog(1.0);

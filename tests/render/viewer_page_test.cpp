@@ -5,9 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "render_test_scene.h"
 
@@ -20,13 +18,6 @@ std::string chromium() {
   for (const char* p : {"/usr/bin/chromium", "/usr/bin/chromium-browser", "/usr/bin/google-chrome"})
     if (std::filesystem::exists(p)) return p;
   return "";
-}
-
-std::string readAll(const std::filesystem::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // Headless Chromium on the page with software WebGL and every host name unresolvable, so a
@@ -44,7 +35,7 @@ std::string browse(const std::string& browser, const std::filesystem::path& page
       " --window-size=640,360 --hide-scrollbars --virtual-time-budget=8000 " + what + " 'file://" +
       page.string() + fragment + "' > " + out.string() + " 2> /dev/null";
   if (std::system(cmd.c_str()) != 0) return "";
-  return readAll(out);
+  return slurp(out);
 }
 
 // A screenshot as RGB bytes (ffmpeg decodes the PNG); empty if it could not be taken.
@@ -56,7 +47,7 @@ std::vector<std::uint8_t> screenshot(const std::string& browser, const std::file
   const std::string cmd = "ffmpeg -v error -y -i " + png.string() + " -f rawvideo -pix_fmt rgb24 " +
                           rgb.string() + " 2> /dev/null";
   if (!std::filesystem::exists(png) || std::system(cmd.c_str()) != 0) return {};
-  const std::string b = readAll(rgb);
+  const std::string b = slurp(rgb);
   return std::vector<std::uint8_t>(b.begin(), b.end());
 }
 
@@ -98,13 +89,13 @@ TEST(ViewerPage, DrawsTheRunAtTheAddressedTimesWithoutTheNetwork) {
   const std::string browser = chromium();
   if (browser.empty()) GTEST_SKIP() << "Chromium is not installed (Debian package 'chromium')";
   if (!loadThreeJs().missing.empty()) GTEST_SKIP() << loadThreeJs().missing;
-  const auto dir = freshTestDir("viewer");
+  const auto dir = makeFreshDir("viewer");
   const Scenario s = renderTestScenario();
   const RunLog log = straightFlightLog(6.0);
   const WorldModel world = WorldModel::build(s);
   ASSERT_EQ(writeRunViewer(dir, world, s, log, "viewer test", "ok"), "");
   const auto page = dir / "viewer.html";
-  const std::string html = readAll(page);
+  const std::string html = slurp(page);
   EXPECT_EQ(html.find("src=\"http"), std::string::npos);
   EXPECT_EQ(html.find("href=\"http"), std::string::npos);
 
@@ -138,7 +129,7 @@ TEST(ViewerPage, DrawsTheRunAtTheAddressedTimesWithoutTheNetwork) {
 }
 
 TEST(ViewerPage, WithoutThreeJsNothingIsWrittenAndTheReasonIsGiven) {
-  const auto dir = freshTestDir("viewer_missing");
+  const auto dir = makeFreshDir("viewer_missing");
   const Scenario s = renderTestScenario();
   const WorldModel world = WorldModel::build(s);
   ::setenv("COSIM_THREE_DIR", (dir / "no-three").c_str(), 1);

@@ -11,6 +11,7 @@
 #include "sim/ground_simulation.h"
 #include "sim/ground_vehicle_handles.h"
 #include "sim/world_model.h"
+#include "tests/support/test_files.h"
 
 namespace cosim {
 namespace {
@@ -18,13 +19,6 @@ namespace {
 std::string scenarioText(const std::string& vehicles, const std::string& extra_world = "") {
   return "world:\n  bounds: {min: [0, 0, 0], max: [6, 6, 2]}\n" + extra_world + "vehicles:\n" +
          vehicles + "sim: {timestep: 0.002, control_rate: 50, max_time: 12}\n";
-}
-
-std::filesystem::path tempDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("cosim-ground-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  return dir;
 }
 
 void writeFile(const std::filesystem::path& p, const std::string& text) {
@@ -83,7 +77,7 @@ TEST(GroundRobotModel, OmniBaseBecomesPlanarBaseFacingItsStartYaw) {
 }
 
 TEST(GroundRobotModel, MalformedUrdfNamesFileAndLine) {
-  const auto dir = tempDir("malformed");
+  const auto dir = test::makeFreshDir("ground-malformed");
   writeFile(dir / "bad.urdf", "<robot name=\"x\">\n  <link name=\"a\">\n</robot>\n");
   const Scenario s =
       parseScenario(scenarioText("  - {model: bad.urdf, start: [1, 1, 0], goal: [4, 4, 0]}\n"),
@@ -99,7 +93,7 @@ TEST(GroundRobotModel, MalformedUrdfNamesFileAndLine) {
 }
 
 TEST(GroundRobotModel, UrdfJointWithUnknownLinkIsRejectedByUrdfdom) {
-  const auto dir = tempDir("badjoint");
+  const auto dir = test::makeFreshDir("ground-badjoint");
   writeFile(dir / "r.urdf",
             "<robot name=\"r\"><link name=\"base\"/><joint name=\"j\" type=\"fixed\"><parent "
             "link=\"base\"/>"
@@ -118,7 +112,7 @@ TEST(GroundRobotModel, UrdfJointWithUnknownLinkIsRejectedByUrdfdom) {
 }
 
 TEST(GroundRobotModel, MissingMeshNamesLinkAndMeshElement) {
-  const auto dir = tempDir("mesh");
+  const auto dir = test::makeFreshDir("ground-mesh");
   writeFile(dir / "m.urdf",
             "<robot name=\"m\"><link name=\"base\"><inertial><mass value=\"1\"/><inertia "
             "ixx=\"0.01\" ixy=\"0\" "

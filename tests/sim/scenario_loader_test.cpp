@@ -131,7 +131,7 @@ std::string gridMapScenario(const std::string& grid_map, const std::string& extr
          "vehicles: [{name: r0, model: omni_base, start: [0.25, 0.25, 0], goal: [3.75, 3.75, "
          "0]}]\n";
 }
-const std::string kEightByEight = COSIM_TEST_DATA_DIR "/mapf/empty-8-8.map";
+const std::string kEightByEight = COSIM_SOURCE_DIR "/experiments/maps/empty-8-8.map";
 }  // namespace
 
 TEST(ScenarioLoader, GridMapBecomesTheWorldWithTheUsersBlockedCells) {

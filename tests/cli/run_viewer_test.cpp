@@ -1,0 +1,55 @@
+// `cosim run` writes viewer.html beside index.html, which links it, and `cosim export-mcap`
+// turns the same folder into an MCAP file; without three.js the run still succeeds and says
+// once why the page is missing.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+
+#include "render/viewer_page.h"
+#include "tests/support/cosim_command.h"
+
+using namespace cosim::test;
+
+namespace {
+
+// The default scenario on a short hop (about 4 s of flight), no pictures.
+const char* kShortRun = "run --quiet --no-video --no-images --set 'vehicles[0].goal=[6,5,2.5]'";
+
+}  // namespace
+
+TEST(RunViewer, RunFolderHoldsTheReplayLinkedFromIndexAndExportsMcap) {
+  if (!cosim::loadThreeJs().missing.empty()) GTEST_SKIP() << cosim::loadThreeJs().missing;
+  const auto dir = freshDir("run-viewer");
+  const CommandResult run = runCosim(std::string(kShortRun) + " --out " + dir.string());
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::string page = slurp(dir / "viewer.html");
+  EXPECT_NE(page.find("REVISION=\"111\""), std::string::npos) << "three.js r111 is embedded";
+  EXPECT_NE(page.find("\"name\":\"uav1\""), std::string::npos);
+  EXPECT_EQ(page.find("<script src="), std::string::npos) << "no script is loaded from elsewhere";
+  EXPECT_NE(slurp(dir / "index.html").find("href=\"viewer.html\""), std::string::npos);
+
+  const CommandResult mcap = runCosim("export-mcap " + dir.string());
+  ASSERT_EQ(mcap.status, 0) << mcap.err;
+  const std::string file = slurp(dir / "run.mcap");
+  ASSERT_GT(file.size(), 16u);
+  EXPECT_EQ(file.substr(0, 8), std::string("\x89MCAP0\r\n", 8));
+  EXPECT_EQ(file.substr(file.size() - 8), std::string("\x89MCAP0\r\n", 8));
+  EXPECT_NE(file.find("foxglove.FrameTransform"), std::string::npos);
+  EXPECT_NE(mcap.out.find("messages on 6 channels"), std::string::npos) << mcap.out;
+  std::filesystem::remove_all(dir);
+}
+
+TEST(RunViewer, WithoutThreeJsTheRunSucceedsAndSaysWhyOnce) {
+  const auto dir = freshDir("run-no-viewer");
+  ::setenv("COSIM_THREE_DIR", (dir / "none").c_str(), 1);  // inherited by the program
+  const CommandResult run = runCosim(std::string(kShortRun) + " --out " + dir.string());
+  ::unsetenv("COSIM_THREE_DIR");
+  EXPECT_EQ(run.status, 0) << run.err;
+  const std::string why = "viewer.html was not written: three.js not found";
+  const auto first = run.err.find(why);
+  EXPECT_NE(first, std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find(why, first + 1), std::string::npos) << "said once";
+  EXPECT_FALSE(std::filesystem::exists(dir / "viewer.html"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "metrics.json"));
+  std::filesystem::remove_all(dir);
+}
