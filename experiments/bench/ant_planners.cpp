@@ -52,12 +52,11 @@ std::vector<MapSet> mapSets(bool quick) {
   std::vector<MapSet> sets = {{bundled + "random-32-32-10.map",
                                bundled + "random-32-32-10-random-1.scen", quick ? 10 : 100}};
   if (quick) return sets;
-  const std::string shared = "/work/shared/data/grid/";
-  for (const MapSet& s : std::vector<MapSet>{
-           {shared + "dao/arena.map", shared + "dao/arena.map.scen", 60},
-           {shared + "dao/den312d.map", shared + "dao/den312d.map.scen", 40},
-           {shared + "cities/Berlin_0_256.map", shared + "cities/Berlin_0_256.map.scen", 10}})
-    if (std::filesystem::exists(s.map) && std::filesystem::exists(s.scen)) sets.push_back(s);
+  // The MovingAI maps kept in the repository: two game maps and a city map.
+  const std::string test_maps = COSIM_SOURCE_DIR "/tests/data/movingai/";
+  sets.push_back({test_maps + "arena.map", test_maps + "arena.map.scen", 60});
+  sets.push_back({bundled + "den312d.map", bundled + "den312d-random-1.scen", 40});
+  sets.push_back({test_maps + "Berlin_0_256.map", test_maps + "Berlin_0_256.map.scen", 10});
   return sets;
 }
 

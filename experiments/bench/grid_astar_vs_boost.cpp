@@ -156,34 +156,6 @@ Comparison compare(const OccupancyGrid& grid, const std::vector<Query>& queries,
   return c;
 }
 
-// The MovingAI map with the most free cells among the largest maps found under `dirs` (first
-// existing directory wins), and its scenario file.
-std::pair<std::string, std::string> largestMap(const std::vector<std::string>& dirs) {
-  for (const std::string& dir : dirs) {
-    std::error_code ec;
-    if (!std::filesystem::is_directory(dir, ec)) continue;
-    std::string best;
-    std::size_t best_cells = 0, best_free = 0;
-    std::vector<std::string> maps;
-    for (const auto& e : std::filesystem::recursive_directory_iterator(dir, ec))
-      if (e.path().extension() == ".map" &&
-          std::filesystem::exists(e.path().string() + ".scen", ec))
-        maps.push_back(e.path().string());
-    std::sort(maps.begin(), maps.end());
-    for (const std::string& m : maps) {
-      const OccupancyGrid g = readMovingAIMap(m);
-      const std::size_t free = g.cellCount() - g.blockedCount();
-      if (g.cellCount() > best_cells || (g.cellCount() == best_cells && free > best_free)) {
-        best = m;
-        best_cells = g.cellCount();
-        best_free = free;
-      }
-    }
-    if (!best.empty()) return {best, best + ".scen"};
-  }
-  return {"", ""};
-}
-
 // A 3D grid of random boxes (fixed seed) filling about 20% of the cells.
 OccupancyGrid randomBoxWorld(int nx, int ny, int nz, std::uint64_t seed) {
   OccupancyGrid g(nx, ny, nz);
@@ -241,15 +213,11 @@ Section benchGridAStarVsBoost(bool quick) {
   s.name = "grid_astar_vs_boost";
   const GridMoves moves2d{8, false}, moves3d{26, false};
 
-  // 2D: the largest MovingAI map of the benchmark set (the bundled 256x256 test map in quick
-  // mode, or when the set is not installed), every k-th scenario line so all buckets appear.
+  // 2D: the bundled 256x256 MovingAI city map (Berlin_0_256), every k-th scenario line so all
+  // buckets appear.
   std::pair<std::string, std::string> files{
       std::string(COSIM_SOURCE_DIR) + "/tests/data/movingai/Berlin_0_256.map",
       std::string(COSIM_SOURCE_DIR) + "/tests/data/movingai/Berlin_0_256.map.scen"};
-  if (!quick) {
-    const auto found = largestMap({"/work/shared/data/grid", "/work/shared/data"});
-    if (!found.first.empty()) files = found;
-  }
   const OccupancyGrid map = readMovingAIMap(files.first);
   const auto lines = readMovingAIScenario(files.second);
   const std::size_t wanted = quick ? 100 : 1000;

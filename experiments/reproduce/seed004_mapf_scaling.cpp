@@ -21,10 +21,8 @@ namespace cosim::reproduce {
 
 namespace {
 
-// The benchmark folder: the shared data set if present, else the maps cosim bundles.
-std::filesystem::path mapfDataDir(bool quick) {
-  const std::filesystem::path shared = "/work/shared/data/mapf";
-  if (!quick && std::filesystem::exists(shared / "random-32-32-10.map")) return shared;
+// The benchmark folder: the MovingAI maps cosim bundles.
+std::filesystem::path mapfDataDir(bool) {
   return std::filesystem::path(COSIM_SOURCE_DIR) / "experiments/maps";
 }
 
