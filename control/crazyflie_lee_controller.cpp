@@ -2,13 +2,11 @@
 
 #include <cmath>
 
+#include "control/vee_map.h"
+
 namespace cosim {
 
 namespace {
-
-Eigen::Vector3d vee(const Eigen::Matrix3d& S) {
-  return {S(2, 1), S(0, 2), S(1, 0)};
-}
 
 Eigen::Vector3d clampEach(const Eigen::Vector3d& v, double limit) {
   return v.cwiseMax(-limit).cwiseMin(limit);

@@ -3,13 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cosim {
+#include "control/vee_map.h"
 
-namespace {
-Eigen::Vector3d vee(const Eigen::Matrix3d& S) {
-  return {S(2, 1), S(0, 2), S(1, 0)};
-}
-}  // namespace
+namespace cosim {
 
 CrazyflieMellingerController::CrazyflieMellingerController(const QuadrotorParams& airframe,
                                                            const CrazyflieMellingerGains& gains,

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "control/thrust_direction.h"
+#include "control/vee_map.h"
 
 namespace cosim {
 namespace {
@@ -24,10 +25,6 @@ constexpr double kPwm2RpmScale = 0.2685;  // rpm = PWM2RPM_SCALE pwm + PWM2RPM_C
 constexpr double kMixRollPitch = 0.5;
 constexpr double kMixYaw = 1.0;
 }  // namespace cf2x
-
-Eigen::Vector3d vee(const Eigen::Matrix3d& S) {
-  return {S(2, 1), S(0, 2), S(1, 0)};
-}
 
 // Roll, pitch, yaw with R = Rz(yaw) Ry(pitch) Rx(roll), as pybullet's getEulerFromQuaternion.
 Eigen::Vector3d rollPitchYaw(const Eigen::Matrix3d& R) {

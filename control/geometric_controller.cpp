@@ -4,17 +4,9 @@
 #include <cmath>
 
 #include "control/thrust_direction.h"
+#include "control/vee_map.h"
 
 namespace cosim {
-namespace {
-
-// The vee map: the vector of a skew-symmetric matrix.
-Eigen::Vector3d vee(const Eigen::Matrix3d& S) {
-  return {S(2, 1), S(0, 2), S(1, 0)};
-}
-
-}  // namespace
-
 GeometricController::GeometricController(const QuadrotorParams& params, const GeometricGains& gains,
                                          bool drag_compensation)
     : params_(params),
