@@ -73,15 +73,17 @@ fi
 
 # Runs "$@" and prints its children's user + system CPU seconds.
 cpu_seconds() {
-  /usr/bin/time -f "%U %S" -o "$SCRATCH/cpu" "$@" >>"$SCRATCH/log" 2>&1 || {
-    echo "measure_build_time.sh: failed: $* (last lines of the log:)" >&2
-    tail -n 30 "$SCRATCH/log" >&2
+  /usr/bin/time -f "%U %S" -o "$SCRATCH/cpu" "$@" >>"$LOG" 2>&1 || {
+    echo "measure_build_time.sh: failed: $* (last lines of $LOG:)" >&2
+    tail -n 30 "$LOG" >&2
     exit 1
   }
   awk '{ printf "%.2f", $1 + $2 }' "$SCRATCH/cpu"
 }
 
 rm -rf "$BUILD"
+mkdir -p "$BUILD"
+LOG=$BUILD/measure_build_time.log  # what the configure and the builds printed (warnings too)
 generator_args=()
 [ -n "$GENERATOR" ] && generator_args=(-G "$GENERATOR")
 configure_cpu=$(cpu_seconds cmake -S "$SOURCE" -B "$BUILD" "${generator_args[@]}" \
@@ -104,6 +106,7 @@ reference_runs() {
 
 reference_runs
 echo "build_time: source $SOURCE, build $BUILD, -j$JOBS, generator $(cache_value CMAKE_GENERATOR)"
+echo "build_time: build output in $LOG"
 echo "build_time: configure $configure_cpu s CPU (not in the sums below)"
 echo "build_time: reference unit before the build $(awk -v t="$reference_total" -v n="$REF_RUNS" \
   'BEGIN { printf "%.3f", t / n }') s CPU (mean of $REF_RUNS compiles)"
@@ -124,6 +127,8 @@ for r in "${results[@]}"; do
   ratio=$(awk -v a="$total" -v b="$reference" 'BEGIN { printf "%.1f", a / b }')
   printf 'build_time: %-12s %10s %10s %12s\n' "$target" "$s" "$total" "$ratio"
 done
+
+echo "build_time: compiler warnings: $(grep -c 'warning:' "$LOG" || true)"
 
 if [ -n "$PER_TU" ]; then
   echo "build_time: costliest compiles and links (CPU s, from $PER_TU):"
