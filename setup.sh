@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(
-  build-essential cmake pkg-config ccache
+  build-essential cmake pkg-config ccache ninja-build
   libmujoco-dev libqhull-dev          # physics (libqhull-dev: mujoco's CMake config needs its headers)
   libeigen3-dev liburdfdom-dev libtinyxml2-dev
   libosmesa6-dev                      # off-screen OpenGL, no display or GPU needed
@@ -42,6 +42,9 @@ case "${1:-build}" in
   run|test|build) ;;
   *) echo "usage: $0 [run|test|build]" >&2; exit 2 ;;
 esac
+# Ninja: less work per file than make, and it keeps the machine busy across libraries. A build
+# folder made earlier keeps the generator it was made with (CMake ignores this then).
+if command -v ninja >/dev/null 2>&1; then export CMAKE_GENERATOR="${CMAKE_GENERATOR:-Ninja}"; fi
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 # The MCAP reference reader (@mcap/core, npm registry) for the export test, once; without npm or
 # the registry the test is skipped, and the setup goes on.

@@ -8,7 +8,7 @@
 namespace cosim {
 
 namespace {
-constexpr double kFullScale = 65535.0;  // UINT16_MAX: the firmware's 16-bit thrust and PWM scale
+constexpr double kPwmFullScale = 65535.0;  // UINT16_MAX: the firmware's 16-bit thrust and PWM scale
 
 // The thrust curve's inverse (voltageForThrust) relies on a curve rising and convex for v >= 0.
 const CrazyfliePlatform& withRisingConvexCurve(const CrazyfliePlatform& p) {
@@ -129,7 +129,7 @@ Eigen::Vector4d crazyflieLegacyMix(const CrazyfliePlatform& p, double thrust, do
   const Eigen::Vector4d u(thrust - r + q + yaw, thrust - r - q - yaw, thrust + r - q + yaw,
                           thrust + r + q - yaw);
   // Battery compensation reads the 16-bit value as u / 65535 THRUST_MAX newtons (motors.c).
-  return (u / kFullScale * p.thrust_max).cwiseMax(0.0);
+  return (u / kPwmFullScale * p.thrust_max).cwiseMax(0.0);
 }
 
 Eigen::Vector4d crazyflieToRotorOrder(const Eigen::Vector4d& m) {

@@ -32,7 +32,7 @@ Eigen::Vector3d rollPitchYaw(const Eigen::Matrix3d& R) {
           std::atan2(R(1, 0), R(0, 0))};
 }
 
-double wrapAngle(double a) {
+double angleRemainder(double a) {
   return std::remainder(a, 2.0 * M_PI);
 }
 
@@ -96,7 +96,7 @@ ControlOutput DslPidController::update(const VehicleState& s, const FlatReferenc
   const Eigen::Vector3d rpy = rollPitchYaw(R);
   Eigen::Vector3d rpy_rates = Eigen::Vector3d::Zero();
   if (has_last_rpy_)
-    for (int i = 0; i < 3; ++i) rpy_rates[i] = wrapAngle(rpy[i] - last_rpy_[i]) / dt;
+    for (int i = 0; i < 3; ++i) rpy_rates[i] = angleRemainder(rpy[i] - last_rpy_[i]) / dt;
   last_rpy_ = rpy;
   has_last_rpy_ = true;
   const Eigen::Vector3d rpy_rates_e = Eigen::Vector3d(0.0, 0.0, ref.yaw_rate) - rpy_rates;

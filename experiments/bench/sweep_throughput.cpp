@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-double seconds(Clock::time_point t0) {
+double secondsSince(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
@@ -33,7 +33,7 @@ double runOneByOne(const std::vector<SweepJob>& jobs, const fs::path& dir) {
         ChildProcess::start("/proc/self/exe", sweepJobArguments(job, out, false), out / "log.txt");
     child.wait();  // as a shell loop would: no polling delay on this side
   }
-  return seconds(t0);
+  return secondsSince(t0);
 }
 
 double cpuSeconds(int who) {
@@ -53,7 +53,7 @@ double runSweep(const std::vector<SweepJob>& jobs, const fs::path& dir, int para
   const double self0 = cpuSeconds(RUSAGE_SELF), children0 = cpuSeconds(RUSAGE_CHILDREN);
   const auto t0 = Clock::now();
   runSweepJobs(jobs, o);
-  const double wall = seconds(t0);
+  const double wall = secondsSince(t0);
   if (runner_cpu_share)
     *runner_cpu_share =
         (cpuSeconds(RUSAGE_SELF) - self0) / std::max(1e-9, cpuSeconds(RUSAGE_CHILDREN) - children0);

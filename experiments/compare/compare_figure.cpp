@@ -13,7 +13,7 @@ namespace {
 
 constexpr std::size_t kMaxPlotRows = 2500;  // per series: smooth at print size, small SVGs
 
-std::string num(double v) {
+std::string plotValue(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v);
   return buf;
@@ -25,9 +25,11 @@ std::string dataRows(const FlightComparison& c) {
   std::ostringstream s;
   const std::size_t n = c.t.size(), step = std::max<std::size_t>(1, n / kMaxPlotRows);
   for (std::size_t k = 0; k < n; k = (k + 1 < n && k + step >= n) ? n - 1 : k + step) {
-    s << num(c.t[k]) << ' ' << num(c.reference[k].x()) << ' ' << num(c.reference[k].y()) << ' '
-      << num(c.sim[k].x()) << ' ' << num(c.sim[k].y()) << ' ' << num(c.real[k].x()) << ' '
-      << num(c.real[k].y()) << ' ' << num(c.real_error[k]) << ' ' << num(c.sim_error[k]) << '\n';
+    s << plotValue(c.t[k]) << ' ' << plotValue(c.reference[k].x()) << ' '
+      << plotValue(c.reference[k].y()) << ' ' << plotValue(c.sim[k].x()) << ' '
+      << plotValue(c.sim[k].y()) << ' ' << plotValue(c.real[k].x()) << ' '
+      << plotValue(c.real[k].y()) << ' ' << plotValue(c.real_error[k]) << ' '
+      << plotValue(c.sim_error[k]) << '\n';
   }
   return s.str();
 }
@@ -43,14 +45,15 @@ std::string figureBody(const FlightComparison& c) {
     << "set xlabel 'x (m)'\nset ylabel 'y (m)'\nset size ratio -1\n"
     << "plot 'compare.dat' using 2:3 with lines lw 1.2 dt (6,4) lc rgb '" << ref
     << "' title 'reference', \\\n"
-    << "     'compare.dat' using 4:5 with lines lw 3.5 lc rgb '" << sim << "' title 'simulated', \\\n"
+    << "     'compare.dat' using 4:5 with lines lw 3.5 lc rgb '" << sim
+    << "' title 'simulated', \\\n"
     << "     'compare.dat' using 6:7 with lines lw 2 lc rgb '" << real << "' title 'real'\n"
     << "set size noratio\nset title 'position error against the reference'\n"
     << "set xlabel 'run time (s)'\nset ylabel 'error (m)'\nset yrange [0:*]\n"
     << "plot 'compare.dat' using 1:9 with lines lw 3.5 lc rgb '" << sim << "' title "
-    << gnuplotString("simulated, RMSE " + num(c.sim_rmse_m) + " m") << ", \\\n"
+    << gnuplotString("simulated, RMSE " + plotValue(c.sim_rmse_m) + " m") << ", \\\n"
     << "     'compare.dat' using 1:8 with lines lw 2 lc rgb '" << real << "' title "
-    << gnuplotString("real, RMSE " + num(c.real_rmse_m) + " m") << "\n"
+    << gnuplotString("real, RMSE " + plotValue(c.real_rmse_m) + " m") << "\n"
     << "unset multiplot\n";
   return b.str();
 }

@@ -14,7 +14,7 @@ namespace {
 constexpr int kFinestRefinement = 4;
 // Neighbouring vertices of the k = 1 lattice are exactly one separation apart: a hair more
 // pitch keeps round-off from making that a conflict.
-constexpr double kPitchRoundOff = 1.0 + 1e-6;
+constexpr double kRoadmapPitchRoundOff = 1.0 + 1e-6;
 
 // Starts and goals within this of one height are a planar team (m).
 constexpr double kSameHeight = 1e-6;
@@ -86,7 +86,7 @@ bool tryLattice(const World& world, const std::vector<Eigen::Vector3d>& starts,
                 double separation, double inflation, int k, const Eigen::Vector3d* anchor,
                 bool allow_planar, DenseRoadmap& out, Failure& failure) {
   const Eigen::Vector3d pitch =
-      separation * kPitchRoundOff / k * Eigen::Vector3d(e.radius, e.radius, e.height);
+      separation * kRoadmapPitchRoundOff / k * Eigen::Vector3d(e.radius, e.radius, e.height);
   DenseRoadmap r{anchor ? TeamGrid::over(world, pitch, inflation, *anchor)
                         : TeamGrid::over(world, pitch, inflation),
                  MapfGraph(),
