@@ -9,7 +9,7 @@ namespace cosim {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNoObstacleDistance = std::numeric_limits<double>::infinity();
 // Obstacle boxes are widened by this much when they are binned into grid cells, so a point on a
 // cell face is found in the cells on both sides.
 constexpr double kBinPadding = 1e-7;
@@ -142,7 +142,7 @@ double CollisionWorld::signedDistance(const Shape& s, const Eigen::Vector3d& p) 
              std::min(std::max(radial, axial), 0.0);
     }
   }
-  return kInf;
+  return kNoObstacleDistance;
 }
 
 bool CollisionWorld::pointFree(const Eigen::Vector3d& p) const {
@@ -295,8 +295,8 @@ bool CollisionWorld::segmentFree(const Eigen::Vector3d& a, const Eigen::Vector3d
       t_delta[i] = -cell_size_ / d[i];
     } else {
       step[i] = 0;
-      t_max[i] = kInf;
-      t_delta[i] = kInf;
+      t_max[i] = kNoObstacleDistance;
+      t_delta[i] = kNoObstacleDistance;
     }
   }
   const int max_cells = dims_.sum() + 3;
@@ -314,7 +314,7 @@ bool CollisionWorld::segmentFree(const Eigen::Vector3d& a, const Eigen::Vector3d
 }
 
 double CollisionWorld::distanceToObstacles(const Eigen::Vector3d& p) const {
-  double best = kInf;
+  double best = kNoObstacleDistance;
   if (!insideBounds(p)) {
     for (const Shape& s : shapes_) best = std::min(best, signedDistance(s, p));
     return best;
