@@ -19,7 +19,7 @@ SteppedSimulation::SteppedSimulation(const std::string& path,
   // flight (run/run_simulation.cpp).
   try {
     setup_ = resolveRun(scenario_, false);
-    if (setup_.ground())
+    if (setup_.primaryKind() == VehicleKind::GroundRobot)
       throw InputError(scenario_.file, "key vehicles",
                        "cosim.Simulation steps quadrotor runs; this scenario has ground robots "
                        "(run it with cosim.run)");

@@ -101,7 +101,7 @@ std::unique_ptr<ReferenceSource> singleReference(const Scenario& s, const Vehicl
                                                  std::size_t k, QuadrotorPlans& q) {
   if (spec.reference) return std::make_unique<PiecewisePolynomialReference>(*spec.reference);
   ParamSet traj = s.trajectory_params;
-  if (s.trajectory_mode == "waypoints") {
+  if (s.trajectory_mode == TrajectoryMode::Waypoints) {
     const double radius = traj.getDouble("switch_radius", 0.2, 0.01, 100.0);
     traj.requireAllUsed("trajectory mode 'waypoints'");
     return std::make_unique<WaypointReference>(q.plans[k].path.waypoints,

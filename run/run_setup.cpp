@@ -75,7 +75,7 @@ bool flyGivenReferences(const Scenario& s) {
 bool isGroundRun(const Scenario& s) {
   if (!s.moving_obstacles.empty()) return true;
   return std::any_of(s.vehicles.begin(), s.vehicles.end(),
-                     [](const VehicleSpec& v) { return v.ground; });
+                     [](const VehicleSpec& v) { return v.kind == VehicleKind::GroundRobot; });
 }
 
 bool isNavigatorName(const std::string& name) {
@@ -85,12 +85,12 @@ bool isNavigatorName(const std::string& name) {
 RunSetup resolveRun(Scenario& s, bool plan_as_point_mass) {
   RunSetup setup;
   for (std::size_t v = 0; v < s.vehicles.size(); ++v)
-    (s.vehicles[v].ground ? setup.robots : setup.quadrotors).push_back(v);
+    (s.vehicles[v].kind == VehicleKind::GroundRobot ? setup.robots : setup.quadrotors).push_back(v);
   if (!s.moving_obstacles.empty() && setup.robots.empty())
     throw InputError(s.file, "world.moving_obstacles",
                      "moving obstacles need ground robots (omni_base, diff_drive or a URDF): "
                      "quadrotors do not sense them");
-  if (setup.ground()) {
+  if (setup.primaryKind() == VehicleKind::GroundRobot) {
     resolveGroundRun(s, setup);
   } else if (isMapfPlanner(s.planner_name) && !flyGivenReferences(s)) {
     setup.quadrotor_planning = Planning::Team;
@@ -99,7 +99,7 @@ RunSetup resolveRun(Scenario& s, bool plan_as_point_mass) {
     // sag about 0.2 m under another and break the planned separation (1 downwash violation),
     // while indi, geometric and dsl_pid kept it (closest 1.48, 1.17 and 1.30 ellipsoids).
     if (!s.controller_given) s.controller_name = "indi";
-    s.trajectory_mode = "minimum_snap";  // what the team flies, whatever the file said
+    s.trajectory_mode = TrajectoryMode::MinimumSnap;  // what the team flies, whatever the file said
   }
   // Seed 003's reproduction plans for a point (run/run_pipeline.h): no margin either.
   if (plan_as_point_mass && setup.quadrotor_planning == Planning::Alone)

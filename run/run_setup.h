@@ -29,11 +29,13 @@ struct RunSetup {
   // trajectory and controller in place of the top-level ones (which drive the robots).
   std::optional<Scenario> aerial;
 
-  // A run with ground robots (moving obstacles need them) runs the ground loop; a run of
-  // quadrotors alone the flight loop.
-  bool ground() const { return !robots.empty(); }
+  // The kind the top-level sections drive: the ground robots if there are any (moving
+  // obstacles need them; the run is the ground loop), else the quadrotors (the flight loop).
+  VehicleKind primaryKind() const {
+    return robots.empty() ? VehicleKind::Quadrotor : VehicleKind::GroundRobot;
+  }
   // The vehicles the top-level sections drive: metrics.json's top-level figures are theirs.
-  const std::vector<std::size_t>& primary() const { return ground() ? robots : quadrotors; }
+  const std::vector<std::size_t>& primary() const { return robots.empty() ? quadrotors : robots; }
   // The scenario as the quadrotors' planner, trajectory and controller see it.
   const Scenario& quadrotorSections(const Scenario& scenario) const {
     return aerial ? *aerial : scenario;

@@ -91,7 +91,8 @@ RunLog simulateRun(const Scenario& scenario, const RunSetup& setup, const WorldM
                    RunPlan& plan, RunPilots& pilots, const RunRequest& request,
                    const RunReporter& report) {
   if (!plan.drivable()) return unplannedLog(scenario);
-  if (setup.ground()) return drive(scenario, setup, world, plan.robots, pilots, request, report);
+  if (setup.primaryKind() == VehicleKind::GroundRobot)
+    return drive(scenario, setup, world, plan.robots, pilots, request, report);
   return fly(scenario, world, pilots, request, report);
 }
 

@@ -2,13 +2,14 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
-#include "planning/grid/movingai.h"
+#include "control/crazyflie_control_rate.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
+#include "planning/grid/movingai.h"
 #include "planning/worlds/grid_map_world.h"
 #include "sim/scenario.h"
-#include "control/crazyflie_control_rate.h"
 #include "sim/scenario_reference.h"
 #include "sim/scenario_sensing.h"
 #include "sim/yaml_document.h"
@@ -278,7 +279,7 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
       r.fail(n["name"], key + ".name", "duplicate vehicle name '" + v.name + "'");
   if (!n["model"]) r.fail(n, key, "vehicle needs a 'model' (cf2, quad_1500g, or a URDF path)");
   v.model = r.text(n["model"], key + ".model");
-  v.model_file = resolveModelFile(v.model, scenario_dir, v.ground);
+  v.model_file = resolveModelFile(v.model, scenario_dir, v.kind);
   if (!std::filesystem::exists(v.model_file))
     r.fail(n["model"], key + ".model",
            "no model '" + v.model + "' (looked for " + v.model_file.string() + ")");
@@ -304,7 +305,8 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
   if (v.waypoints.empty()) r.fail(n, key, "vehicle needs a 'goal', 'waypoints' or a 'reference'");
   if (n["yaw"]) v.yaw_deg = r.number(n["yaw"], key + ".yaw", -3600, 3600);
   if (n["mass"]) {
-    if (v.ground) r.fail(n["mass"], key + ".mass", "mass applies to quadrotor models, not URDFs");
+    if (v.kind == VehicleKind::GroundRobot)
+      r.fail(n["mass"], key + ".mass", "mass applies to quadrotor models, not URDFs");
     v.mass = r.number(n["mass"], key + ".mass", 1e-4, 1e4);
   }
   s.vehicles.push_back(std::move(v));
@@ -341,9 +343,10 @@ void readMotionSections(const YamlReader& r, const YAML::Node& parent, const std
     const YAML::Node t = parent["trajectory"];
     r.requireMap(t, prefix + "trajectory");
     if (t["mode"]) {
-      out.trajectory_mode = r.text(t["mode"], prefix + "trajectory.mode");
-      if (out.trajectory_mode != "waypoints" && out.trajectory_mode != "minimum_snap")
+      const auto mode = trajectoryModeNamed(r.text(t["mode"], prefix + "trajectory.mode"));
+      if (!mode)
         r.fail(t["mode"], prefix + "trajectory.mode", "must be 'waypoints' or 'minimum_snap'");
+      out.trajectory_mode = *mode;
     }
     readParams(r, t, prefix + "trajectory", {"mode"}, overrides, out.trajectory_params);
   }
@@ -378,16 +381,18 @@ std::filesystem::path modelsDirectory() {
 }
 
 std::filesystem::path resolveModelFile(const std::string& model,
-                                       const std::filesystem::path& scenario_dir, bool& ground) {
-  ground = model.size() > 5 && model.substr(model.size() - 5) == ".urdf";
-  if (ground)
+                                       const std::filesystem::path& scenario_dir,
+                                       VehicleKind& kind) {
+  const bool urdf_path = model.size() > 5 && model.substr(model.size() - 5) == ".urdf";
+  kind = urdf_path ? VehicleKind::GroundRobot : VehicleKind::Quadrotor;
+  if (urdf_path)
     return std::filesystem::path(model).is_absolute() ? std::filesystem::path(model)
                                                       : scenario_dir / model;
   const auto xml = modelsDirectory() / (model + ".xml");
   const auto urdf = modelsDirectory() / (model + ".urdf");
   std::error_code ec;
   if (!std::filesystem::exists(xml, ec) && std::filesystem::exists(urdf, ec)) {
-    ground = true;
+    kind = VehicleKind::GroundRobot;
     return urdf;
   }
   return xml;
@@ -486,14 +491,15 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
   if (root["aerial"]) {
     const YAML::Node n = root["aerial"];
     r.checkKeys(n, "aerial", {"planner", "trajectory", "controller"});
-    const auto count = [&s](bool ground) {
+    const auto count = [&s](VehicleKind kind) {
       return std::count_if(s.vehicles.begin(), s.vehicles.end(),
-                           [ground](const VehicleSpec& v) { return v.ground == ground; });
+                           [kind](const VehicleSpec& v) { return v.kind == kind; });
     };
-    if (count(true) == 0 || count(false) == 0)
+    const auto robots = count(VehicleKind::GroundRobot);
+    if (robots == 0 || count(VehicleKind::Quadrotor) == 0)
       r.fail(n, "aerial",
              "is for the quadrotors of a scenario with ground robots too (this one has only " +
-                 std::string(count(true) ? "ground robots" : "quadrotors") +
+                 std::string(robots ? "ground robots" : "quadrotors") +
                  "; use the top-level planner, trajectory and controller)");
     readMotionSections(r, n, "aerial.", overrides, s.aerial);
   }
@@ -560,20 +566,21 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
     r.checkKeys(n, "render",
                 {"camera", "cameras", "width", "height", "fps", "speed", "speedup", "fixed_camera",
                  "obstacle_alpha", "png_frames", "team_plans"});
-    const auto cameraName = [&](const YAML::Node& c, const std::string& key) {
+    const auto readCamera = [&](const YAML::Node& c, const std::string& key) {
       const std::string name = r.text(c, key);
-      if (name != "chase" && name != "orbit" && name != "top" && name != "overview" &&
-          name != "fixed")
-        r.fail(c, key, "must be chase, orbit, top, overview or fixed");
-      return name;
+      try {
+        return cameraKind(name);
+      } catch (const std::invalid_argument&) {
+        r.fail(c, key, std::string("must be ") + cameraNames());
+      }
     };
-    if (n["camera"]) s.render.camera = cameraName(n["camera"], "render.camera");
+    if (n["camera"]) s.render.camera = readCamera(n["camera"], "render.camera");
     if (n["cameras"]) {
       if (!n["cameras"].IsSequence())
         r.fail(n["cameras"], "render.cameras", "must be a list of camera names");
       for (std::size_t i = 0; i < n["cameras"].size(); ++i)
         s.render.cameras.push_back(
-            cameraName(n["cameras"][i], "render.cameras[" + std::to_string(i) + "]"));
+            readCamera(n["cameras"][i], "render.cameras[" + std::to_string(i) + "]"));
     }
     if (n["fixed_camera"]) {
       const YAML::Node f = n["fixed_camera"];
@@ -585,8 +592,8 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
         r.fail(f, "render.fixed_camera", "pos and lookat must differ");
       s.render.has_fixed_camera = true;
     }
-    bool wants_fixed = s.render.camera == "fixed";
-    for (const auto& c : s.render.cameras) wants_fixed = wants_fixed || c == "fixed";
+    bool wants_fixed = s.render.camera == CameraKind::Fixed;
+    for (const auto& c : s.render.cameras) wants_fixed = wants_fixed || c == CameraKind::Fixed;
     if (wants_fixed && !s.render.has_fixed_camera)
       r.fail(n, "render",
              "camera 'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]}");

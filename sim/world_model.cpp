@@ -272,7 +272,7 @@ std::string composeWorldXml(const Scenario& s) {
   XMLElement* custom = doc.NewElement("custom");
   int on_floor = 0;  // robots whose wheels touch the floor at every step
   for (const VehicleSpec& v : s.vehicles) {
-    if (v.ground)
+    if (v.kind == VehicleKind::GroundRobot)
       on_floor += addUrdfVehicle(doc, worldbody, v, lo.z()) ? 1 : 0;
     else
       addVehicle(doc, worldbody, custom, v);
@@ -321,7 +321,7 @@ WorldModel WorldModel::fromXml(const std::string& xml, const Scenario& scenario)
     const std::string p = v.name + "/";
     const std::string file = v.model_file.string();
     h.body = mj_name2id(m, mjOBJ_BODY, (p + "base").c_str());
-    if (v.ground) {
+    if (v.kind == VehicleKind::GroundRobot) {
       readGroundVehicleHandles(m, v, h);
       wm.vehicles_.push_back(std::move(h));
       continue;  // the quadrotor conventions below do not apply
