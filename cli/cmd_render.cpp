@@ -25,16 +25,17 @@ struct RenderArgs {
 // and time-lapse.
 void applyRenderOptions(const RenderArgs& a, Scenario& s) {
   if (!a.camera.empty()) {
+    CameraKind camera = CameraKind::Chase;
     try {
-      cameraKind(a.camera);
+      camera = cameraKind(a.camera);
     } catch (const std::invalid_argument&) {
       throw InputError("command line", "--camera", std::string("must be ") + cameraNames());
     }
-    if (a.camera == "fixed" && !s.render.has_fixed_camera)
+    if (camera == CameraKind::Fixed && !s.render.has_fixed_camera)
       throw InputError("command line", "--camera",
                        "'fixed' needs render.fixed_camera: {pos: [x, y, z], lookat: [x, y, z]} "
                        "in the scenario");
-    s.render.camera = a.camera;
+    s.render.camera = camera;
   }
   if (a.width) s.render.width = a.width;
   if (a.height) s.render.height = a.height;
@@ -50,9 +51,10 @@ void renderRun(const RenderArgs& a, CommandContext& ctx) {
   Scenario s = readRunScenario(dir);
   applyRenderOptions(a, s);
   // Where the output goes is checked before anything is read or drawn.
-  const std::string camera = s.render.camera;
+  const CameraKind camera = s.render.camera;
+  const std::string name = cameraName(camera);
   std::filesystem::path out = a.out;
-  if (out.empty()) out = dir / (a.frames ? "frames_" + camera : "video_" + camera + ".mp4");
+  if (out.empty()) out = dir / (a.frames ? "frames_" + name : "video_" + name + ".mp4");
   const bool one_frame = out.extension() == ".png" && !a.frames;
   checkOutputPath(out, a.out.empty() ? "run folder" : "--out", a.frames);
   RunLog log = readRunLog(dir, s);

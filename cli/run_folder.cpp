@@ -92,7 +92,7 @@ void completeRunLog(RunLog& log, const Scenario& scenario, const WorldModel& wor
     log.vehicles[v].radius = world.vehicles()[v].params.radius;
     if (scenario.vehicles[v].reference)  // its tracking error covers the reference's duration
       log.vehicles[v].reference_end = scenario.vehicles[v].reference->duration();
-    if (!scenario.vehicles[v].ground)
+    if (scenario.vehicles[v].kind == VehicleKind::Quadrotor)
       log.vehicles[v].max_thrust = world.vehicles()[v].params.max_thrust;
   }
 }

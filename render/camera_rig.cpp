@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 #include <vector>
 
 #include "render/camera_occlusion.h"
@@ -17,19 +16,6 @@ constexpr double kModelFovy = 45.0;  // <visual><global fovy> in sim/world_model
 // stay parallel, heights barely shift positions) with MuJoCo 2.2's perspective-only camera.
 constexpr double kTopFovy = 8.0;
 }  // namespace
-
-CameraKind cameraKind(const std::string& name) {
-  if (name == "chase") return CameraKind::Chase;
-  if (name == "orbit") return CameraKind::Orbit;
-  if (name == "top") return CameraKind::Top;
-  if (name == "overview") return CameraKind::Overview;
-  if (name == "fixed") return CameraKind::Fixed;
-  throw std::invalid_argument("unknown camera '" + name + "' (" + cameraNames() + ")");
-}
-
-const char* cameraNames() {
-  return "chase, orbit, top, overview or fixed";
-}
 
 Eigen::Vector3d CameraPose::eye() const {
   const double a = azimuth * kDeg, e = elevation * kDeg;

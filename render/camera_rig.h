@@ -5,17 +5,11 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "sim/camera_kind.h"
 #include "sim/run_log.h"
 #include "sim/scenario.h"
 
 namespace cosim {
-
-enum class CameraKind { Chase, Orbit, Top, Overview, Fixed };
-
-// Throws std::invalid_argument for an unknown name (the loader has already checked scenario
-// names; this guards the command line).
-CameraKind cameraKind(const std::string& name);
-const char* cameraNames();  // "chase, orbit, top, overview or fixed", for messages
 
 // A MuJoCo free camera (mjvCamera's lookat/azimuth/elevation/distance, degrees) plus the
 // vertical field of view it is rendered with.

@@ -14,14 +14,17 @@ std::size_t sampleIndexAt(const VehicleLog& v, double t) {
 
 ErrorReference errorReference(const Scenario& scenario, std::size_t index) {
   bool has_ground = false;
-  for (const VehicleSpec& v : scenario.vehicles) has_ground = has_ground || v.ground;
-  if (index < scenario.vehicles.size() && scenario.vehicles[index].ground)
+  for (const VehicleSpec& v : scenario.vehicles)
+    has_ground = has_ground || v.kind == VehicleKind::GroundRobot;
+  if (index < scenario.vehicles.size() && scenario.vehicles[index].kind == VehicleKind::GroundRobot)
     return ErrorReference::TimedPlan;
   if (index < scenario.vehicles.size() && scenario.vehicles[index].reference)
     return ErrorReference::Trajectory;  // a given reference, flown in time
   // With ground robots, the top-level sections are theirs and `aerial` is the quadrotors'.
-  const std::string& mode = has_ground ? scenario.aerial.trajectory_mode : scenario.trajectory_mode;
-  return mode != "waypoints" ? ErrorReference::Trajectory : ErrorReference::PlannedPath;
+  const TrajectoryMode mode =
+      has_ground ? scenario.aerial.trajectory_mode : scenario.trajectory_mode;
+  return mode != TrajectoryMode::Waypoints ? ErrorReference::Trajectory
+                                           : ErrorReference::PlannedPath;
 }
 
 const char* errorReferenceName(ErrorReference r) {

@@ -35,7 +35,7 @@ int videoFrameCount(double duration, const RenderSettings& settings) {
   return static_cast<int>(periods) + 1;
 }
 
-int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
+int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, CameraKind camera,
                    const std::filesystem::path& out, VideoFormat format, bool progress,
                    const std::atomic<bool>* interrupt, int workers) {
   std::optional<ProgressBar> bar;
@@ -46,7 +46,7 @@ int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const 
   return renderRunVideo(renderer, settings, camera, out, format, show, interrupt, workers);
 }
 
-int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
+int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, CameraKind camera,
                    const std::filesystem::path& out, VideoFormat format,
                    const FrameProgress& progress, const std::atomic<bool>* interrupt, int workers) {
   const int frames = videoFrameCount(renderer.endTime(), settings);
@@ -55,19 +55,18 @@ int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const 
     if (progress) progress(done, frames);
   };
   bar(0);
-  const CameraKind kind = cameraKind(camera);
   const double seconds_per_frame = settings.speedup / settings.fps;
   if (workers == 0) workers = defaultRenderWorkers();
   int done = 0;
   if (workers == 1) {
     std::vector<std::uint8_t> rgb;
     for (; done < frames && !interrupted(interrupt); ++done) {
-      renderer.render(done * seconds_per_frame, kind, rgb);
+      renderer.render(done * seconds_per_frame, camera, rgb);
       video.addFrame(rgb);
       bar(done + 1);
     }
   } else {
-    const FrameSequence sequence{kind, frames, seconds_per_frame, renderer.width(),
+    const FrameSequence sequence{camera, frames, seconds_per_frame, renderer.width(),
                                  renderer.height()};
     done = renderFramesInOrder(
         renderer.world(), renderer.scenario(), renderer.log(), sequence, workers,
@@ -82,15 +81,16 @@ int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const 
   return frames;
 }
 
-std::vector<std::string> videoCameras(const RenderSettings& settings) {
-  std::vector<std::string> cams = {settings.camera};
+std::vector<CameraKind> videoCameras(const RenderSettings& settings) {
+  std::vector<CameraKind> cams = {settings.camera};
   for (const auto& c : settings.cameras)
     if (std::find(cams.begin(), cams.end(), c) == cams.end()) cams.push_back(c);
   return cams;
 }
 
-std::string videoFileName(const RenderSettings& settings, const std::string& camera) {
-  return camera == settings.camera ? "video.mp4" : "video_" + camera + ".mp4";
+std::string videoFileName(const RenderSettings& settings, CameraKind camera) {
+  return camera == settings.camera ? "video.mp4"
+                                   : std::string("video_") + cameraName(camera) + ".mp4";
 }
 
 RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, const RunLog& log,
@@ -120,18 +120,20 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
     done.figures = writeRunFigures(log, scenario, dir / "figures");
   }
   if (request.video) {
-    for (const std::string& camera : videoCameras(rs)) {
+    for (const CameraKind camera : videoCameras(rs)) {
       if (stop()) return done;
       const std::string file = videoFileName(rs, camera);
-      say("rendering " + file + " (" + camera + " camera, " +
+      say("rendering " + file + " (" + cameraName(camera) + " camera, " +
           std::to_string(videoFrameCount(renderer.endTime(), rs)) + " frames)");
       renderRunVideo(renderer, rs, camera, dir / file, VideoFormat::Mp4, frames_of(file),
                      request.interrupt);
       if (stop()) return done;
       done.videos.push_back(file);
-      if (rs.png_frames)
-        renderRunVideo(renderer, rs, camera, dir / ("frames_" + camera), VideoFormat::PngSequence,
-                       frames_of("frames_" + camera), request.interrupt);
+      if (rs.png_frames) {
+        const std::string frames = std::string("frames_") + cameraName(camera);
+        renderRunVideo(renderer, rs, camera, dir / frames, VideoFormat::PngSequence,
+                       frames_of(frames), request.interrupt);
+      }
     }
   }
   stop();

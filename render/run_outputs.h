@@ -33,19 +33,19 @@ using FrameProgress = std::function<void(int done, int total)>;
 // and the result is 0 frames. workers: threads rendering frames at once, each with a renderer of
 // its own like `renderer` (render/ordered_frame_workers.h); 0: all cores; 1: `renderer` alone,
 // on this thread.
-int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
+int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, CameraKind camera,
                    const std::filesystem::path& out, VideoFormat format,
                    const FrameProgress& progress, const std::atomic<bool>* interrupt = nullptr,
                    int workers = 0);
 // The same with, if `progress`, a progress bar with the time left on stderr (render/progress_bar.h).
-int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, const std::string& camera,
+int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, CameraKind camera,
                    const std::filesystem::path& out, VideoFormat format, bool progress,
                    const std::atomic<bool>* interrupt = nullptr, int workers = 0);
 
 // The cameras of a run's videos, in order, without repeats: render.camera, then render.cameras.
-std::vector<std::string> videoCameras(const RenderSettings& settings);
+std::vector<CameraKind> videoCameras(const RenderSettings& settings);
 // The file of a camera's video: video.mp4 for the main camera, video_<camera>.mp4 otherwise.
-std::string videoFileName(const RenderSettings& settings, const std::string& camera);
+std::string videoFileName(const RenderSettings& settings, CameraKind camera);
 
 struct RunRenderRequest {
   bool images = true;  // final.png and the figures

@@ -185,14 +185,14 @@ void RunRenderer::annotate(double t) {
     const std::size_t i = sampleIndexAt(v, t);
     StateBoxVehicle& s = states.emplace_back();
     s.name = v.name;
-    s.ground = isGround(a);
+    s.kind = isGround(a) ? VehicleKind::GroundRobot : VehicleKind::Quadrotor;
     s.speed = v.samples[i].vel.norm();
     s.error = errors_[a][i];
     s.reference = references_[a];
     // As the simulation decides arrival (ground robots on the floor plane), from the log alone
     // so a re-render says the same.
     Eigen::Vector3d off = v.samples[i].pos - v.goal;
-    if (s.ground) off.z() = 0.0;
+    if (s.kind == VehicleKind::GroundRobot) off.z() = 0.0;
     s.at_goal = off.norm() < scenario_.sim.goal_tolerance;
   }
   const auto plannerName = [](const std::string& name) {

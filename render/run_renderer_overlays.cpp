@@ -64,7 +64,7 @@ void RunRenderer::addSphere(const Eigen::Vector3d& p, double radius, const Eigen
 }
 
 bool RunRenderer::isGround(std::size_t vehicle) const {
-  return vehicle < scenario_.vehicles.size() && scenario_.vehicles[vehicle].ground;
+  return vehicle < scenario_.vehicles.size() && scenario_.vehicles[vehicle].kind == VehicleKind::GroundRobot;
 }
 
 Eigen::Vector3f RunRenderer::plannedColour(std::size_t vehicle) const {

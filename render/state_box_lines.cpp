@@ -46,7 +46,8 @@ std::vector<StateLine> stateBoxLines(double t, const std::vector<StateBoxVehicle
                        format("%.3f m", vehicles[0].error));
   } else if (!vehicles.empty()) {
     std::vector<const StateBoxVehicle*> robots, quadrotors;
-    for (const StateBoxVehicle& v : vehicles) (v.ground ? robots : quadrotors).push_back(&v);
+    for (const StateBoxVehicle& v : vehicles)
+      (v.kind == VehicleKind::GroundRobot ? robots : quadrotors).push_back(&v);
     const std::size_t fixed = lines.size() + planners.size();
     const std::size_t budget = max_lines > fixed ? max_lines - fixed : 0;
     bool list_robots = robots.size() <= kListedRobots, list_quadrotors = true;
@@ -65,7 +66,8 @@ std::vector<StateLine> stateBoxLines(double t, const std::vector<StateBoxVehicle
         needed() <= budget)
       lines.emplace_back("vehicle", "speed, error");
     for (const StateBoxVehicle& v : vehicles)
-      if (v.ground ? list_robots : list_quadrotors) lines.push_back(vehicleLine(v));
+      if (v.kind == VehicleKind::GroundRobot ? list_robots : list_quadrotors)
+        lines.push_back(vehicleLine(v));
     if (!list_robots && !robots.empty()) summarise(robots, "robot", lines);
     if (!list_quadrotors && !quadrotors.empty()) summarise(quadrotors, "quadrotor", lines);
   }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/log_lookup.h"
+#include "sim/vehicle_kind.h"
 
 namespace cosim {
 
@@ -16,9 +17,9 @@ using StateLine = std::pair<std::string, std::string>;  // label, value
 // One vehicle's entry in the box at time t (not the control state, VehicleState).
 struct StateBoxVehicle {
   std::string name;
-  bool ground = false;  // a ground robot (else a quadrotor)
-  double speed = 0.0;   // m/s
-  double error = 0.0;   // m, against `reference`
+  VehicleKind kind = VehicleKind::Quadrotor;
+  double speed = 0.0;  // m/s
+  double error = 0.0;  // m, against `reference`
   ErrorReference reference = ErrorReference::Trajectory;
   bool at_goal = false;  // within the goal tolerance of its goal
 };

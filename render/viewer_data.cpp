@@ -191,7 +191,7 @@ nlohmann::json vehiclesJson(const WorldModel& world, const Scenario& scenario, c
     out.push_back(
         {{"name", vl.name},
          {"model", model},
-         {"ground", known && scenario.vehicles[v].ground},
+         {"ground", known && scenario.vehicles[v].kind == VehicleKind::GroundRobot},
          {"radius", rounded(vl.radius, 1e-4)},
          {"max_thrust", rounded(vl.max_thrust, 1e-4)},
          {"goal",

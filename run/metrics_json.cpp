@@ -52,7 +52,7 @@ void addFlight(JsonObject& j, const RunRecord& r) {
       .add("estimator", s.estimator.name)
       .add("controller", r.setup.primarySections().controller.name)
       .add("drag_compensation", r.setup.primarySections().controller.drag_compensation)
-      .add("trajectory_mode", r.setup.primarySections().trajectory.mode)
+      .add("trajectory_mode", trajectoryModeName(r.setup.primarySections().trajectory.mode))
       .add("vehicle_radius_m", radius)
       .add("inflation_m", r.plan.quadrotors.summary.inflation);
 }
@@ -84,7 +84,7 @@ void addQuadrotorsOverRobots(JsonObject& j, const RunRecord& r) {
       .add("robot_uav_contacts", m.contacts.robot_uav_contacts)
       .add("uav_contacts", m.contacts.uav_contacts)
       .add("uav_planner", plannerName(air.planner.name))
-      .add("uav_trajectory_mode", air.trajectory.mode)
+      .add("uav_trajectory_mode", trajectoryModeName(air.trajectory.mode))
       .add("uav_controller", air.controller.name)
       .add("uav_rmse_m", m.uavs.rmse_m)
       .add("uav_max_error_m", m.uavs.max_error_m)
@@ -156,7 +156,7 @@ JsonObject robotEntry(const RunRecord& r, std::size_t v, std::size_t k) {
 std::vector<JsonObject> vehicleEntries(const RunRecord& r) {
   std::vector<JsonObject> entries;
   for (std::size_t v = 0, k = 0; v < r.log.vehicles.size(); ++v)
-    entries.push_back(r.scenario.vehicles[v].ground ? robotEntry(r, v, k++) : quadrotorEntry(r, v));
+    entries.push_back(r.scenario.vehicles[v].kind == VehicleKind::GroundRobot ? robotEntry(r, v, k++) : quadrotorEntry(r, v));
   return entries;
 }
 

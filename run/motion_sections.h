@@ -10,6 +10,7 @@
 #include "core/param_set.h"
 #include "planning/team/separation_ellipsoid.h"
 #include "sim/scenario.h"
+#include "sim/trajectory_mode.h"
 
 namespace cosim {
 
@@ -22,8 +23,8 @@ struct PlannerSection {
 };
 
 struct TrajectorySection {
-  std::string mode = "waypoints";  // waypoints | minimum_snap
-  ParamSet params;                 // max_speed, switch_radius, ...
+  TrajectoryMode mode = TrajectoryMode::Waypoints;
+  ParamSet params;  // max_speed, switch_radius, ...
 };
 
 struct ControllerSection {

@@ -102,7 +102,7 @@ std::unique_ptr<ReferenceSource> singleReference(const Scenario& s, const Motion
                                                  QuadrotorPlans& q) {
   if (spec.reference) return std::make_unique<PiecewisePolynomialReference>(*spec.reference);
   ParamSet traj = m.trajectory.params;
-  if (m.trajectory.mode == "waypoints") {
+  if (m.trajectory.mode == TrajectoryMode::Waypoints) {
     const double radius = traj.getDouble("switch_radius", 0.2, 0.01, 100.0);
     traj.requireAllUsed("trajectory mode 'waypoints'");
     return std::make_unique<WaypointReference>(q.plans[k].path.waypoints,

@@ -7,7 +7,8 @@ namespace cosim {
 RunPlan planRun(const Scenario& scenario, const RunSetup& setup, const WorldModel& world,
                 const RunRequest& request, const RunReporter& report) {
   RunPlan plan;
-  if (setup.ground()) plan.robots = planRobots(scenario, setup, world, request.given_team_plan);
+  if (setup.primaryKind() == VehicleKind::GroundRobot)
+    plan.robots = planRobots(scenario, setup, world, request.given_team_plan);
   if (!setup.quadrotors.empty())
     plan.quadrotors = planQuadrotors(scenario, setup.quadrotor_sections, world, setup.quadrotors,
                                      setup.quadrotor_planning, request, report);

@@ -24,7 +24,7 @@ struct RunPlan {
   bool drivable() const { return cosim::drivable(status); }
   // The planner's figures of the vehicles the top-level sections drive (RunSetup::primary).
   const PlanSummary& primarySummary(const RunSetup& setup) const {
-    return setup.ground() ? robots.summary : quadrotors.summary;
+    return setup.primaryKind() == VehicleKind::GroundRobot ? robots.summary : quadrotors.summary;
   }
 };
 

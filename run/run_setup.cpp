@@ -67,7 +67,7 @@ void resolveQuadrotorRun(const Scenario& s, RunSetup& setup) {
   // while indi, geometric and dsl_pid kept it (closest 1.48, 1.17 and 1.30 ellipsoids).
   MotionSections& team = setup.quadrotor_sections;
   if (!s.controller_given) team.controller.name = "indi";
-  team.trajectory.mode = "minimum_snap";  // what the team flies, whatever the file said
+  team.trajectory.mode = TrajectoryMode::MinimumSnap;  // what the team flies, whatever the file said
 }
 
 }  // namespace
@@ -75,7 +75,7 @@ void resolveQuadrotorRun(const Scenario& s, RunSetup& setup) {
 bool isGroundRun(const Scenario& s) {
   if (!s.moving_obstacles.empty()) return true;
   return std::any_of(s.vehicles.begin(), s.vehicles.end(),
-                     [](const VehicleSpec& v) { return v.ground; });
+                     [](const VehicleSpec& v) { return v.kind == VehicleKind::GroundRobot; });
 }
 
 bool isNavigatorName(const std::string& name) {
@@ -85,7 +85,7 @@ bool isNavigatorName(const std::string& name) {
 RunSetup resolveRun(const Scenario& s, bool plan_as_point_mass) {
   RunSetup setup;
   for (std::size_t v = 0; v < s.vehicles.size(); ++v)
-    (s.vehicles[v].ground ? setup.robots : setup.quadrotors).push_back(v);
+    (s.vehicles[v].kind == VehicleKind::GroundRobot ? setup.robots : setup.quadrotors).push_back(v);
   if (!s.moving_obstacles.empty() && setup.robots.empty())
     throw InputError(s.file, "world.moving_obstacles",
                      "moving obstacles need ground robots (omni_base, diff_drive or a URDF): "

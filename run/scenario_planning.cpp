@@ -31,7 +31,7 @@ VehiclePlan planVehicle(const Scenario& scenario, const PlannerSection& section,
   PlanningProblem problem;
   problem.world = &scenario.world;
   problem.inflation = plan.inflation;
-  problem.planar = vehicle.ground;
+  problem.planar = vehicle.kind == VehicleKind::GroundRobot;
   problem.seed = scenario.sim.seed;
   const StopToken deadline(time_limit);
   Eigen::Vector3d from = vehicle.start;

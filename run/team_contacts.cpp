@@ -6,7 +6,7 @@ namespace cosim {
 
 namespace {
 
-void countContacts(const RunLog& log, const std::vector<bool>& ground, TeamContacts& t) {
+void countContacts(const RunLog& log, const std::vector<VehicleKind>& kinds, TeamContacts& t) {
   for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
     for (const ContactEvent& c : log.vehicles[v].collisions) {
       bool vehicle = false;
@@ -14,9 +14,9 @@ void countContacts(const RunLog& log, const std::vector<bool>& ground, TeamConta
         if (w == v || c.other.rfind(log.vehicles[w].name + "/", 0) != 0) continue;
         vehicle = true;
         if (w < v) continue;  // each touching pair is booked by both vehicles
-        int& count = ground[v] && ground[w]     ? t.robot_contacts
-                     : !ground[v] && !ground[w] ? t.uav_contacts
-                                                : t.robot_uav_contacts;
+        int& count = kinds[v] != kinds[w]                   ? t.robot_uav_contacts
+                     : kinds[v] == VehicleKind::GroundRobot ? t.robot_contacts
+                                                            : t.uav_contacts;
         ++count;
       }
       if (vehicle) continue;
@@ -28,14 +28,14 @@ void countContacts(const RunLog& log, const std::vector<bool>& ground, TeamConta
   }
 }
 
-void closestApproaches(const RunLog& log, const std::vector<bool>& ground, TeamContacts& t) {
+void closestApproaches(const RunLog& log, const std::vector<VehicleKind>& kinds, TeamContacts& t) {
   for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
-    if (!ground[v]) continue;
+    if (kinds[v] != VehicleKind::GroundRobot) continue;
     const auto& a = log.vehicles[v];
     for (std::size_t k = 0; k < a.samples.size(); ++k) {
       for (std::size_t w = v + 1; w < log.vehicles.size(); ++w) {
         const auto& b = log.vehicles[w];
-        if (ground[w] && k < b.samples.size())
+        if (kinds[w] == VehicleKind::GroundRobot && k < b.samples.size())
           t.min_robot_distance_m = std::min(
               t.min_robot_distance_m,
               (a.samples[k].pos - b.samples[k].pos).head<2>().norm() - a.radius - b.radius);
@@ -51,10 +51,10 @@ void closestApproaches(const RunLog& log, const std::vector<bool>& ground, TeamC
 
 }  // namespace
 
-TeamContacts teamContacts(const RunLog& log, const std::vector<bool>& ground) {
+TeamContacts teamContacts(const RunLog& log, const std::vector<VehicleKind>& kinds) {
   TeamContacts t;
-  countContacts(log, ground, t);
-  closestApproaches(log, ground, t);
+  countContacts(log, kinds, t);
+  closestApproaches(log, kinds, t);
   return t;
 }
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "sim/run_log.h"
+#include "sim/vehicle_kind.h"
 
 namespace cosim {
 
@@ -23,8 +24,7 @@ struct TeamContacts {
   }
 };
 
-// `ground[v]`: log.vehicles[v] is a ground robot (else a quadrotor). Vehicles and obstacles must
-// be logged at the same instants.
-TeamContacts teamContacts(const RunLog& log, const std::vector<bool>& ground);
+// `kinds[v]`: what log.vehicles[v] is. Vehicles and obstacles must be logged at the same instants.
+TeamContacts teamContacts(const RunLog& log, const std::vector<VehicleKind>& kinds);
 
 }  // namespace cosim

@@ -9,7 +9,7 @@ ContactMonitor::ContactMonitor(const mjModel* m, const WorldModel& world, const 
     : m_(m), floor_(world.floorGeom()), owner_(m->ngeom, -1) {
   for (std::size_t v = 0; v < world.vehicles().size(); ++v) {
     for (int g : world.vehicles()[v].geoms) owner_[g] = static_cast<int>(v);
-    ground_.push_back(world.vehicles()[v].ground);
+    kinds_.push_back(world.vehicles()[v].kind);
     starts_.push_back(scenario.vehicles[v].start);
     goals_.push_back(scenario.vehicles[v].goal());
   }
@@ -42,7 +42,7 @@ void ContactMonitor::note(int mine, int other, const mjContact& c, const mjData*
 }
 
 bool ContactMonitor::floorAllowed(int v, const Eigen::Vector3d& p) const {
-  if (ground_[v]) return true;
+  if (kinds_[v] == VehicleKind::GroundRobot) return true;
   const auto nearXY = [&p](const Eigen::Vector3d& spot) {
     return (p - spot).head<2>().norm() < 1.0;
   };

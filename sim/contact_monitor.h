@@ -29,7 +29,7 @@ class ContactMonitor {
   const mjModel* m_;
   int floor_;
   std::vector<int> owner_;  // geom -> vehicle index, -1 for the world
-  std::vector<bool> ground_;
+  std::vector<VehicleKind> kinds_;
   std::vector<Eigen::Vector3d> starts_, goals_;
   std::vector<long> previous_, current_;  // (vehicle, other geom) pairs in contact
 };

@@ -42,7 +42,7 @@ double horizontalReach(const mjModel* m, int g) {
 void readGroundVehicleHandles(const mjModel* m, const VehicleSpec& v, VehicleHandles& h) {
   const std::string p = v.name + "/";
   const std::string file = v.model_file.string();
-  h.ground = true;
+  h.kind = VehicleKind::GroundRobot;
   if (h.body < 0 || !readGroundDrive(m, v.name, h.drive))
     throw InputError(file, "<robot>", "the composed model lacks the ground robot's base or drive");
   const int root =

@@ -21,7 +21,7 @@ PhysicsStepper::PhysicsStepper(const WorldModel& world, const Scenario& scenario
       ground_effect_(scenario.disturbances.ground_effect) {
   const auto& vehicles = world.vehicles();
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
-    plants_.push_back(vehicles[v].ground
+    plants_.push_back(vehicles[v].kind == VehicleKind::GroundRobot
                           ? nullptr
                           : std::make_unique<QuadrotorPlant>(vehicles[v], scenario.sensors,
                                                              scenario.sim.seed, v));

@@ -8,13 +8,16 @@
 #include <string>
 #include <vector>
 
-#include "planning/grid/occupancy_grid.h"
 #include "core/param_set.h"
+#include "planning/grid/occupancy_grid.h"
 #include "planning/team/separation_ellipsoid.h"
 #include "planning/world/world.h"
+#include "sim/camera_kind.h"
 #include "sim/disturbance_settings.h"
 #include "sim/model_error.h"
 #include "sim/sensors/sensor_settings.h"
+#include "sim/trajectory_mode.h"
+#include "sim/vehicle_kind.h"
 
 namespace cosim {
 
@@ -24,7 +27,7 @@ struct VehicleSpec {
   std::string name;   // unique; prefixes every MuJoCo name of the vehicle ("uav1/base")
   std::string model;  // a model name from models/ (cf2, quad_1500g, ...) or a URDF path
   std::filesystem::path model_file;  // resolved
-  bool ground = false;               // a ground robot (URDF): plans in the plane, z = 0
+  VehicleKind kind = VehicleKind::Quadrotor;  // a ground robot (URDF) plans in the plane, z = 0
   Eigen::Vector3d start = Eigen::Vector3d::Zero();
   // Points to visit after the start; the last one is the goal.
   std::vector<Eigen::Vector3d> waypoints;
@@ -76,11 +79,10 @@ struct SimSettings {
   double goal_tolerance = 0.2;  // m: the goal is reached within this distance (seed 003: 0.2 m)
 };
 
-// Camera names: chase (follows the first vehicle), orbit (circles the world), top (straight
-// down, nearly orthographic), overview (the whole world at an angle), fixed (fixed_pos/lookat).
+// The cameras: sim/camera_kind.h (fixed looks from fixed_pos at fixed_lookat).
 struct RenderSettings {
-  std::string camera = "chase";      // the main video, video.mp4
-  std::vector<std::string> cameras;  // more videos, one per camera: video_<camera>.mp4
+  CameraKind camera = CameraKind::Chase;  // the main video, video.mp4
+  std::vector<CameraKind> cameras;        // more videos, one per camera: video_<camera>.mp4
   int width = 1280, height = 720, fps = 30;
   double speedup = 1.0;           // simulated seconds per second of video
   bool has_fixed_camera = false;  // render.fixed_camera: {pos: [x,y,z], lookat: [x,y,z]}
@@ -101,7 +103,7 @@ struct AerialSections {
   ParamSet planner_params;
   double planner_margin = 0.3;
   std::optional<SeparationEllipsoid> planner_separation;
-  std::string trajectory_mode = "waypoints";
+  TrajectoryMode trajectory_mode = TrajectoryMode::Waypoints;
   ParamSet trajectory_params;
   std::string controller_name = "cascade";
   bool controller_given = false;  // a controller section was written
@@ -125,7 +127,7 @@ struct Scenario {
   // planner.separation of a quadrotor team; absent: each model's own (its model file).
   std::optional<SeparationEllipsoid> planner_separation;
 
-  std::string trajectory_mode = "waypoints";  // waypoints | minimum_snap
+  TrajectoryMode trajectory_mode = TrajectoryMode::Waypoints;
   ParamSet trajectory_params;                 // max_speed, switch_radius, ...
 
   std::string controller_name = "cascade";  // cascade | geometric | indi | dsl_pid | crazyflie_*
@@ -158,8 +160,9 @@ std::filesystem::path modelsDirectory();
 
 // The file a vehicle's `model:` names: a path ending in .urdf (relative to the scenario's
 // folder), else models/<model>.xml (a quadrotor) or models/<model>.urdf (a bundled ground
-// robot). `ground` says which kind; the file may not exist.
+// robot). `kind` says which; the file may not exist.
 std::filesystem::path resolveModelFile(const std::string& model,
-                                       const std::filesystem::path& scenario_dir, bool& ground);
+                                       const std::filesystem::path& scenario_dir,
+                                       VehicleKind& kind);
 
 }  // namespace cosim

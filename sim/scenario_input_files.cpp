@@ -55,9 +55,9 @@ std::vector<std::filesystem::path> scenarioInputFiles(const std::string& text,
         files.push_back(relativeTo(dir, ref));
       const std::string model = scalarText(member(v, "model"));
       if (model.empty()) continue;
-      bool ground = false;
-      files.push_back(resolveModelFile(model, dir, ground));
-      if (ground)
+      VehicleKind kind = VehicleKind::Quadrotor;
+      files.push_back(resolveModelFile(model, dir, kind));
+      if (kind == VehicleKind::GroundRobot)
         for (const auto& m : urdfMeshFiles(files.back())) files.push_back(m);
     }
   // Without repeats (a team of one model lists it once), in first-seen order.

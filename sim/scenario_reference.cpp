@@ -52,7 +52,7 @@ void readVehicleReference(const YamlReader& r, const YAML::Node& vehicle, const 
   const std::string key = vkey + ".reference";
   r.requireMap(n, key);
   r.checkKeys(n, key, {"file", "timescale", "relative"});
-  if (v.ground)
+  if (v.kind == VehicleKind::GroundRobot)
     r.fail(n, key, "a given reference is flown by quadrotors; ground robots follow planned paths");
   for (const char* other : {"goal", "waypoints"})
     if (vehicle[other])

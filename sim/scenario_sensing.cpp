@@ -179,8 +179,9 @@ void readModelError(const YamlReader& r, const YAML::Node& n, Scenario& s) {
 }  // namespace
 
 void readSensingSections(const YamlReader& r, const YAML::Node& root, Scenario& s) {
-  const bool quadrotors = std::any_of(s.vehicles.begin(), s.vehicles.end(),
-                                      [](const VehicleSpec& v) { return !v.ground; });
+  const bool quadrotors =
+      std::any_of(s.vehicles.begin(), s.vehicles.end(),
+                  [](const VehicleSpec& v) { return v.kind == VehicleKind::Quadrotor; });
   for (const char* key : {"sensors", "estimator", "model_error"})
     if (root[key] && !quadrotors)
       r.fail(root[key], key,

@@ -20,7 +20,7 @@ std::vector<std::size_t> pilotIndices(const WorldModel& world, std::size_t robot
   std::vector<std::size_t> pilot(vehicles.size());
   std::size_t robot_count = 0, quadrotor_count = 0;
   for (std::size_t v = 0; v < vehicles.size(); ++v)
-    pilot[v] = vehicles[v].ground ? robot_count++ : quadrotor_count++;
+    pilot[v] = vehicles[v].kind == VehicleKind::GroundRobot ? robot_count++ : quadrotor_count++;
   if (robot_count != robots || quadrotor_count != quadrotors)
     throw std::invalid_argument("SimulationLoop: one pilot per ground robot and per quadrotor");
   return pilot;
@@ -99,7 +99,7 @@ void SimulationLoop::beginVehicles(const Scenario& scenario, std::vector<GroundP
       static_cast<std::size_t>(cfg.max_time / (controls_per_log_ * physics_.controlDt())) + 2;
   const auto& vehicles = world_.vehicles();
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
-    if (vehicles[v].ground) {
+    if (vehicles[v].kind == VehicleKind::GroundRobot) {
       GroundPilotStep& g = drives_.emplace_back(vehicles[v], v, robots[pilot_[v]],
                                                 cfg.goal_tolerance, options_.hold_after_arrival);
       log_.vehicles.push_back(g.begin());
@@ -215,7 +215,8 @@ std::optional<RunEnd> SimulationLoop::prepare() {
   const mjData* d = d_.get();
   const auto& vehicles = world_.vehicles();
   for (std::size_t v = 0; v < vehicles.size(); ++v)
-    if (vehicles[v].ground) states_[pilot_[v]] = readPlanarState(d, vehicles[v]);
+    if (vehicles[v].kind == VehicleKind::GroundRobot)
+      states_[pilot_[v]] = readPlanarState(d, vehicles[v]);
   if (options_.before_control && !options_.before_control(d->time, states_)) return RunEnd::GaveUp;
   return std::nullopt;
 }
@@ -229,7 +230,7 @@ std::optional<RunEnd> SimulationLoop::controlVehicles(const mjData* d) {
   bool all_done = true, diverged = false, saturated = false;
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
     VehicleLog& vl = log_.vehicles[v];
-    if (vehicles[v].ground) {
+    if (vehicles[v].kind == VehicleKind::GroundRobot) {
       const GroundPilotStep::Outcome o =
           drives_[pilot_[v]].step(d, states_[pilot_[v]], physics_, control_dt, vl, record);
       all_done = all_done && o.done;

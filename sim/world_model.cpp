@@ -12,6 +12,7 @@
 #include "sim/ground_vehicle_handles.h"
 #include "sim/moving_obstacle_motion.h"
 #include "sim/mujoco_messages.h"
+#include "sim/quadrotor_vehicle_handles.h"
 #include "sim/urdf_vehicle.h"
 #include "sim/world_fragment.h"
 
@@ -29,7 +30,9 @@ std::string fmt(double v) {
   s << v;
   return s.str();
 }
-std::string fmt(const Eigen::Vector3d& v) { return fmt(v.x()) + " " + fmt(v.y()) + " " + fmt(v.z()); }
+std::string fmt(const Eigen::Vector3d& v) {
+  return fmt(v.x()) + " " + fmt(v.y()) + " " + fmt(v.z());
+}
 
 // Attributes that name something (prefixed) or refer to a named thing (prefixed the same way).
 const char* const kNameAttributes[] = {"name",   "class",  "childclass", "site",   "joint",
@@ -134,20 +137,6 @@ void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* custom,
   }
 }
 
-// The value of the vehicle's <custom><numeric name="<prefix><name>"> (see models/quad_1500g.xml),
-// which must be one finite number within [lo, hi].
-double rotorConstant(const mjModel* m, const std::string& prefix, const char* name, double lo,
-                     double hi, const std::string& file) {
-  const int id = mj_name2id(m, mjOBJ_NUMERIC, (prefix + name).c_str());
-  if (id < 0)
-    throw InputError(file, "<custom>", std::string("needs <numeric name=\"") + name + "\">");
-  const double v = m->numeric_data[m->numeric_adr[id]];
-  if (m->numeric_size[id] != 1 || !std::isfinite(v) || v < lo || v > hi)
-    throw InputError(file, std::string("<numeric name=\"") + name + "\">",
-                     "must be one number in [" + fmt(lo) + ", " + fmt(hi) + "]");
-  return v;
-}
-
 // MuJoCo's message on one line (it separates its parts with line breaks).
 std::string oneLine(std::string text) {
   for (char& c : text)
@@ -179,23 +168,9 @@ InputError compileError(const Scenario& scenario, const std::string& error) {
                     "MuJoCo cannot compile the composed world: " + oneLine(error));
 }
 
-}  // namespace
-
-std::string composeWorldXml(const Scenario& s) {
-  XMLDocument doc;
-  XMLElement* mujoco = add(doc, &doc, "mujoco");
-  mujoco->SetAttribute("model", "cosim");
-  XMLElement* compiler = add(doc, mujoco, "compiler");
-  compiler->SetAttribute("autolimits", "true");  // MuJoCo 2.2.2 needs it for ctrlrange
-  compiler->SetAttribute("angle", "degree");
-  XMLElement* option = add(doc, mujoco, "option");
-  option->SetAttribute("timestep", fmt(s.sim.timestep).c_str());
-  option->SetAttribute("gravity", "0 0 -9.81");
-
-  const Eigen::Vector3d lo = s.world.bounds_min, hi = s.world.bounds_max;
-  const Eigen::Vector3d centre = 0.5 * (lo + hi);
-  const double extent = (hi - lo).norm();
-
+// Rendering settings: the off-screen buffer, the lens, the level of detail and the headlight.
+void addVisual(XMLDocument& doc, XMLElement* mujoco, const Scenario& s) {
+  const double extent = (s.world.bounds_max - s.world.bounds_min).norm();
   XMLElement* visual = add(doc, mujoco, "visual");
   XMLElement* global = add(doc, visual, "global");
   // The off-screen buffer size comes from the model; without this, frames are cut to 640x480.
@@ -219,7 +194,11 @@ std::string composeWorldXml(const Scenario& s) {
   XMLElement* headlight = add(doc, visual, "headlight");
   headlight->SetAttribute("ambient", "0.35 0.35 0.35");
   headlight->SetAttribute("diffuse", "0.5 0.5 0.5");
+}
 
+// The sky, the floor's checker texture and the materials of the floor and the obstacles.
+void addAssets(XMLDocument& doc, XMLElement* mujoco, const Scenario& s) {
+  const Eigen::Vector3d lo = s.world.bounds_min, hi = s.world.bounds_max;
   XMLElement* asset = add(doc, mujoco, "asset");
   XMLElement* sky = add(doc, asset, "texture");
   sky->SetAttribute("name", "sky");
@@ -246,12 +225,20 @@ std::string composeWorldXml(const Scenario& s) {
   floor_mat->SetAttribute("texture", "grid");
   floor_mat->SetAttribute("specular", "0");
   // One checker square per 2 m of world.
-  floor_mat->SetAttribute("texrepeat", (fmt((hi.x() - lo.x()) / 4.0) + " " + fmt((hi.y() - lo.y()) / 4.0)).c_str());
+  floor_mat->SetAttribute(
+      "texrepeat", (fmt((hi.x() - lo.x()) / 4.0) + " " + fmt((hi.y() - lo.y()) / 4.0)).c_str());
   XMLElement* obstacle_mat = add(doc, asset, "material");
   obstacle_mat->SetAttribute("name", "obstacle");
   obstacle_mat->SetAttribute("rgba", "0.55 0.6 0.68 1");
   obstacle_mat->SetAttribute("specular", "0.2");
+}
 
+// The worldbody with what does not move: the sun, the floor, the obstacles and the scenario's
+// MJCF fragment.
+XMLElement* addStaticWorld(XMLDocument& doc, XMLElement* mujoco, const Scenario& s) {
+  const Eigen::Vector3d lo = s.world.bounds_min, hi = s.world.bounds_max;
+  const Eigen::Vector3d centre = 0.5 * (lo + hi);
+  const double extent = (hi - lo).norm();
   XMLElement* worldbody = add(doc, mujoco, "worldbody");
   XMLElement* light = add(doc, worldbody, "light");
   light->SetAttribute("directional", "true");
@@ -263,16 +250,24 @@ std::string composeWorldXml(const Scenario& s) {
   floor->SetAttribute("name", "floor");
   floor->SetAttribute("type", "plane");
   floor->SetAttribute("pos", fmt(Eigen::Vector3d(centre.x(), centre.y(), lo.z())).c_str());
-  floor->SetAttribute("size", (fmt(0.5 * (hi.x() - lo.x())) + " " + fmt(0.5 * (hi.y() - lo.y())) + " 0.1").c_str());
+  floor->SetAttribute(
+      "size", (fmt(0.5 * (hi.x() - lo.x())) + " " + fmt(0.5 * (hi.y() - lo.y())) + " 0.1").c_str());
   floor->SetAttribute("material", "floor");
   for (std::size_t i = 0; i < s.world.obstacles.size(); ++i)
     addObstacleGeom(doc, worldbody, s.world.obstacles[i], i);
   if (!s.include_file.empty()) addWorldFragment(doc, mujoco, s.include_file);
+  return worldbody;
+}
 
+// The vehicles (their rotor constants in <custom>), the contact buffers they need (<size>, after
+// <option>) and the moving obstacles.
+void addVehicles(XMLDocument& doc, XMLElement* mujoco, XMLElement* option, XMLElement* worldbody,
+                 const Scenario& s) {
+  const Eigen::Vector3d lo = s.world.bounds_min;
   XMLElement* custom = doc.NewElement("custom");
   int on_floor = 0;  // robots whose wheels touch the floor at every step
   for (const VehicleSpec& v : s.vehicles) {
-    if (v.ground)
+    if (v.kind == VehicleKind::GroundRobot)
       on_floor += addUrdfVehicle(doc, worldbody, v, lo.z()) ? 1 : 0;
     else
       addVehicle(doc, worldbody, custom, v);
@@ -286,6 +281,24 @@ std::string composeWorldXml(const Scenario& s) {
   mujoco->InsertAfterChild(option, size);
   addMovingObstacleBodies(doc, worldbody, s);
   if (custom->FirstChildElement()) mujoco->InsertEndChild(custom);
+}
+
+}  // namespace
+
+std::string composeWorldXml(const Scenario& s) {
+  XMLDocument doc;
+  XMLElement* mujoco = add(doc, &doc, "mujoco");
+  mujoco->SetAttribute("model", "cosim");
+  XMLElement* compiler = add(doc, mujoco, "compiler");
+  compiler->SetAttribute("autolimits", "true");  // MuJoCo 2.2.2 needs it for ctrlrange
+  compiler->SetAttribute("angle", "degree");
+  XMLElement* option = add(doc, mujoco, "option");
+  option->SetAttribute("timestep", fmt(s.sim.timestep).c_str());
+  option->SetAttribute("gravity", "0 0 -9.81");
+  addVisual(doc, mujoco, s);
+  addAssets(doc, mujoco, s);
+  XMLElement* worldbody = addStaticWorld(doc, mujoco, s);
+  addVehicles(doc, mujoco, option, worldbody, s);
 
   tinyxml2::XMLPrinter printer;
   doc.Print(&printer);
@@ -318,71 +331,11 @@ WorldModel WorldModel::fromXml(const std::string& xml, const Scenario& scenario)
   for (const VehicleSpec& v : scenario.vehicles) {
     VehicleHandles h;
     h.name = v.name;
-    const std::string p = v.name + "/";
-    const std::string file = v.model_file.string();
-    h.body = mj_name2id(m, mjOBJ_BODY, (p + "base").c_str());
-    if (v.ground) {
+    h.body = mj_name2id(m, mjOBJ_BODY, (v.name + "/base").c_str());
+    if (v.kind == VehicleKind::GroundRobot)
       readGroundVehicleHandles(m, v, h);
-      wm.vehicles_.push_back(std::move(h));
-      continue;  // the quadrotor conventions below do not apply
-    }
-    const int joint = mj_name2id(m, mjOBJ_JOINT, (p + "root").c_str());
-    if (h.body < 0 || joint < 0 || m->jnt_type[joint] != mjJNT_FREE)
-      throw InputError(file, "<body name=\"base\">", "needs a free joint named \"root\"");
-    h.qpos_adr = m->jnt_qposadr[joint];
-    h.qvel_adr = m->jnt_dofadr[joint];
-    QuadrotorParams& q = h.params;
-    q.mass = m->body_subtreemass[h.body];
-    q.inertia = Eigen::Vector3d(m->body_inertia[3 * h.body], m->body_inertia[3 * h.body + 1],
-                                m->body_inertia[3 * h.body + 2]);
-    q.gravity = -m->opt.gravity[2];
-    // Rotor sites; spins and the moment constant from <custom> (no actuators: sim/ applies the
-    // rotors' wrench itself, see models/quad_1500g.xml).
-    const int spin_id = mj_name2id(m, mjOBJ_NUMERIC, (p + "rotor_spin").c_str());
-    if (spin_id < 0 || m->numeric_size[spin_id] != 4)
-      throw InputError(file, "<custom>", "needs <numeric name=\"rotor_spin\"> with 4 values (+1 or -1)");
-    for (int i = 0; i < 4; ++i) {
-      const int site = mj_name2id(m, mjOBJ_SITE, (p + "rotor" + std::to_string(i)).c_str());
-      if (site < 0 || m->site_bodyid[site] != h.body)
-        throw InputError(file, "<body name=\"base\">", "needs sites rotor0..3 on the base");
-      q.rotor_xy[i] = Eigen::Vector2d(m->site_pos[3 * site], m->site_pos[3 * site + 1]);
-      q.rotor_z = m->site_pos[3 * site + 2];
-      const double spin = m->numeric_data[m->numeric_adr[spin_id] + i];
-      if (spin != 1.0 && spin != -1.0)
-        throw InputError(file, "<numeric name=\"rotor_spin\">", "each value must be +1 or -1");
-      q.spin[i] = spin;
-    }
-    q.torque_per_thrust = rotorConstant(m, p, "moment_constant", 0.0, 1.0, file);
-    q.thrust_coefficient = rotorConstant(m, p, "thrust_coefficient", 1e-12, 1.0, file);
-    q.min_rotor_speed = rotorConstant(m, p, "min_rotor_speed", 0.0, 1e5, file);
-    q.max_rotor_speed = rotorConstant(m, p, "max_rotor_speed", 1.0, 1e5, file);
-    if (q.max_rotor_speed <= q.min_rotor_speed)
-      throw InputError(file, "<numeric name=\"max_rotor_speed\">",
-                       "must exceed min_rotor_speed");
-    q.time_constant_up = rotorConstant(m, p, "time_constant_up", 1e-4, 10.0, file);
-    q.time_constant_down = rotorConstant(m, p, "time_constant_down", 1e-4, 10.0, file);
-    q.rotor_drag_coefficient = rotorConstant(m, p, "rotor_drag_coefficient", 0.0, 1.0, file);
-    q.rolling_moment_coefficient =
-        rotorConstant(m, p, "rolling_moment_coefficient", 0.0, 1.0, file);
-    q.propeller_radius = rotorConstant(m, p, "propeller_radius", 1e-3, 10.0, file);
-    q.zero_thrust_inflow = rotorConstant(m, p, "zero_thrust_inflow", 0.1, 1000.0, file);
-    const int sep = mj_name2id(m, mjOBJ_NUMERIC, (p + "separation").c_str());
-    if (sep < 0 || m->numeric_size[sep] != 2 || !(m->numeric_data[m->numeric_adr[sep]] > 0) ||
-        !(m->numeric_data[m->numeric_adr[sep] + 1] > 0))
-      throw InputError(file, "<custom>",
-                       "needs <numeric name=\"separation\" data=\"RADIUS HEIGHT\"> (m, both > 0)");
-    q.separation_radius = m->numeric_data[m->numeric_adr[sep]];
-    q.separation_height = m->numeric_data[m->numeric_adr[sep] + 1];
-    q.min_thrust = q.thrust_coefficient * q.min_rotor_speed * q.min_rotor_speed;
-    q.max_thrust = q.thrust_coefficient * q.max_rotor_speed * q.max_rotor_speed;
-    // Bounding radius about the centre of mass, over every geom of the vehicle.
-    q.radius = 0.0;
-    for (int g = 0; g < m->ngeom; ++g) {
-      if (m->body_rootid[m->geom_bodyid[g]] != h.body) continue;
-      h.geoms.push_back(g);
-      const Eigen::Vector3d pos(m->geom_pos[3 * g], m->geom_pos[3 * g + 1], m->geom_pos[3 * g + 2]);
-      q.radius = std::max(q.radius, pos.norm() + m->geom_rbound[g]);
-    }
+    else
+      readQuadrotorHandles(m, v, h);
     wm.vehicles_.push_back(std::move(h));
   }
   return wm;

@@ -25,7 +25,7 @@ struct VehicleHandles {
   // Ground robots (sim/urdf_vehicle.h): drive has the drive's servos (x, y, yaw of a holonomic
   // base; left and right wheel of a differential one); with a planar root, qpos_adr and
   // qvel_adr point at root_x, root_y, root_yaw; params has mass, radius (horizontal) and gravity.
-  bool ground = false;
+  VehicleKind kind = VehicleKind::Quadrotor;
   GroundDrive drive;
 };
 

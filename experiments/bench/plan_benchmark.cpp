@@ -93,8 +93,8 @@ PlanBenchRun runOmpl(const std::string& name, const VehicleSpec& vehicle, double
     q.world = &world;
     q.start = path.back();
     q.goal = target;
-    if (vehicle.ground) q.goal.z() = q.start.z();
-    q.planar = vehicle.ground;
+    if (vehicle.kind == VehicleKind::GroundRobot) q.goal.z() = q.start.z();
+    q.planar = vehicle.kind == VehicleKind::GroundRobot;
     q.time_limit_s = std::max(1e-3, time_limit_s - r.time_ms / 1000.0);
     q.seed = static_cast<std::uint32_t>(seed);
     q.range = range;
@@ -174,7 +174,8 @@ int runPlanBenchmark(const PlanBenchSetup& setup) {
   ParamSet step_param = s.planner_params;
   const double range = step_param.getDouble("step", 2.0, 1e-3, 1e6);
   // The world our sampling planners build for each solve (SamplingContext), built once here.
-  const CollisionWorld world(s.world, inflation, inflation, vehicle.ground);
+  const CollisionWorld world(s.world, inflation, inflation,
+                             vehicle.kind == VehicleKind::GroundRobot);
 
   const auto started = std::chrono::system_clock::now();
   const auto t0 = std::chrono::steady_clock::now();

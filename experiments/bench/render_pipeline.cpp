@@ -49,7 +49,7 @@ Scenario benchScenario() {
   v.waypoints = {{36, 26, 3}};
   s.vehicles.push_back(v);
   s.planner_name = "theta_star";
-  s.trajectory_mode = "minimum_snap";
+  s.trajectory_mode = TrajectoryMode::MinimumSnap;
   return s;
 }
 

@@ -33,7 +33,7 @@ Scenario teamScenario(int n, double seconds) {
     v.name = "r" + std::to_string(i);
     v.model = "omni_base";
     v.model_file = modelsDirectory() / "omni_base.urdf";
-    v.ground = true;
+    v.kind = VehicleKind::GroundRobot;
     v.start = {1.0 + pitch * (i % side), 1.0 + pitch * (i / side), 0.0};
     v.waypoints = {v.start + Eigen::Vector3d(4.0, 0.0, 0.0)};
     s.vehicles.push_back(v);
@@ -66,7 +66,7 @@ std::string withActuators(const WorldModel& world) {
   std::string acts = "<actuator>";
   const mjModel* m = world.model();
   for (const VehicleHandles& v : world.vehicles()) {
-    if (v.ground) {
+    if (v.kind == VehicleKind::GroundRobot) {
       for (int i = 0; i < v.drive.servo_count; ++i) {
         const GroundDrive::Servo& s = v.drive.servos[i];
         const char* joint = mj_id2name(m, mjOBJ_JOINT, m->dof_jntid[s.dof]);
@@ -106,7 +106,7 @@ double bareRate(const mjModel* m, const WorldModel& world, long steps, bool actu
   mjData* d = mj_makeData(m);
   int a = 0;
   for (const VehicleHandles& v : world.vehicles()) {
-    if (v.ground) {
+    if (v.kind == VehicleKind::GroundRobot) {
       a += v.drive.servo_count;
       continue;
     }

@@ -23,7 +23,8 @@ std::vector<std::filesystem::path> quadrotorScenarios() {
     if (e.path().extension() != ".yaml") continue;
     try {
       const Scenario s = loadScenario(e.path().string());
-      if (s.vehicles.size() == 1 && !s.vehicles[0].ground && s.moving_obstacles.empty())
+      if (s.vehicles.size() == 1 && s.vehicles[0].kind == VehicleKind::Quadrotor &&
+          s.moving_obstacles.empty())
         out.push_back(e.path());
     } catch (const InputError&) {
       // Not a single-quadrotor scenario this table can fly.

@@ -29,7 +29,7 @@ inline void convertUrdfText(const std::string& urdf, const std::string& file_tag
   vehicle.name = "robot";
   vehicle.model = file.string();
   vehicle.model_file = file;
-  vehicle.ground = true;
+  vehicle.kind = VehicleKind::GroundRobot;
   vehicle.waypoints.push_back({1.0, 1.0, 0.0});
   try {
     addUrdfVehicle(doc, worldbody, vehicle, 0.0);

@@ -10,12 +10,12 @@ Scenario mixedScenario() {
   Scenario s;
   VehicleSpec robot;
   robot.name = "r0";
-  robot.ground = true;
+  robot.kind = VehicleKind::GroundRobot;
   VehicleSpec uav;
   uav.name = "uav1";
   s.vehicles = {robot, uav};
-  s.trajectory_mode = "waypoints";  // the robots' top-level section
-  s.aerial.trajectory_mode = "minimum_snap";
+  s.trajectory_mode = TrajectoryMode::Waypoints;  // the robots' top-level section
+  s.aerial.trajectory_mode = TrajectoryMode::MinimumSnap;
   return s;
 }
 }  // namespace

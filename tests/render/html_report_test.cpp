@@ -42,7 +42,7 @@ TEST(HtmlReport, RunReportLoadsEveryVideoAndFigureInHeadlessChromium) {
   const auto dir = makeFreshDir("report");
   Scenario s = renderTestScenario(320, 180);
   s.render.fps = 5;
-  s.render.cameras = {"top"};
+  s.render.cameras = {CameraKind::Top};
   const RunLog log = straightFlightLog(1.0);
   const WorldModel world = WorldModel::build(s);
   RunRenderRequest request;

@@ -32,8 +32,9 @@ TEST(RenderSettings, CamerasFixedCameraSpeedupAndAlphaAreRead) {
           "{camera: fixed, cameras: [chase, top, orbit], speedup: 2, obstacle_alpha: 0.5, "
           "png_frames: true, fixed_camera: {pos: [-5, 10, 8], lookat: [10, 10, 1]}}"),
       "r.yaml");
-  EXPECT_EQ(s.render.camera, "fixed");
-  EXPECT_EQ(s.render.cameras, (std::vector<std::string>{"chase", "top", "orbit"}));
+  EXPECT_EQ(s.render.camera, CameraKind::Fixed);
+  EXPECT_EQ(s.render.cameras,
+            (std::vector<CameraKind>{CameraKind::Chase, CameraKind::Top, CameraKind::Orbit}));
   EXPECT_DOUBLE_EQ(s.render.speedup, 2.0);
   EXPECT_DOUBLE_EQ(s.render.obstacle_alpha, 0.5);
   EXPECT_TRUE(s.render.png_frames);

@@ -13,7 +13,7 @@ std::vector<StateBoxVehicle> mixedTeam() {
     StateBoxVehicle r;
     r.name = "r";  // appended: GCC 12's -Wrestrict misfires on "r" + std::to_string
     r.name += std::to_string(i);
-    r.ground = true;
+    r.kind = VehicleKind::GroundRobot;
     r.speed = 0.4;
     r.error = i == 5 ? 0.052 : 0.01;
     r.reference = ErrorReference::TimedPlan;

@@ -47,7 +47,7 @@ TEST(VideoOutput, Mp4HasTheExpectedFramesDurationAndBrowserEncoding) {
   const WorldModel world = WorldModel::build(s);
   RunRenderer renderer(world, s, log, 320, 180);
   const int frames =
-      renderRunVideo(renderer, s.render, "chase", dir / "v.mp4", VideoFormat::Mp4, false);
+      renderRunVideo(renderer, s.render, CameraKind::Chase, dir / "v.mp4", VideoFormat::Mp4, false);
   EXPECT_EQ(frames, 21);
   const std::string info =
       probe(dir / "v.mp4",
@@ -60,7 +60,8 @@ TEST(VideoOutput, Mp4HasTheExpectedFramesDurationAndBrowserEncoding) {
   EXPECT_NEAR(field(info, "duration"), 2.1, 0.051) << info;  // 21 frames of 0.1 s
   // A 2x speed-up halves the video: 11 frames.
   s.render.speedup = 2.0;
-  EXPECT_EQ(renderRunVideo(renderer, s.render, "top", dir / "fast.mp4", VideoFormat::Mp4, false),
+  EXPECT_EQ(renderRunVideo(renderer, s.render, CameraKind::Top, dir / "fast.mp4", VideoFormat::Mp4,
+                           false),
             11);
   EXPECT_EQ(field(probe(dir / "fast.mp4", "stream=nb_read_frames"), "nb_read_frames"), 11.0);
   std::filesystem::remove_all(dir);
@@ -73,9 +74,9 @@ TEST(VideoOutput, PngSequenceHasOneNumberedFramePerVideoFrame) {
   const RunLog log = straightFlightLog(1.0);
   const WorldModel world = WorldModel::build(s);
   RunRenderer renderer(world, s, log, 320, 180);
-  EXPECT_EQ(
-      renderRunVideo(renderer, s.render, "orbit", dir / "frames", VideoFormat::PngSequence, false),
-      6);
+  EXPECT_EQ(renderRunVideo(renderer, s.render, CameraKind::Orbit, dir / "frames",
+                           VideoFormat::PngSequence, false),
+            6);
   int files = 0;
   for (const auto& e : std::filesystem::directory_iterator(dir / "frames")) {
     ++files;
@@ -93,9 +94,10 @@ TEST(VideoOutput, PngSequenceHasOneNumberedFramePerVideoFrame) {
 
 TEST(VideoOutput, VideoCamerasListTheMainCameraFirstWithoutRepeats) {
   RenderSettings r;
-  r.camera = "chase";
-  r.cameras = {"top", "chase", "orbit", "top"};
-  EXPECT_EQ(videoCameras(r), (std::vector<std::string>{"chase", "top", "orbit"}));
-  EXPECT_EQ(videoFileName(r, "chase"), "video.mp4");
-  EXPECT_EQ(videoFileName(r, "top"), "video_top.mp4");
+  r.camera = CameraKind::Chase;
+  r.cameras = {CameraKind::Top, CameraKind::Chase, CameraKind::Orbit, CameraKind::Top};
+  EXPECT_EQ(videoCameras(r),
+            (std::vector<CameraKind>{CameraKind::Chase, CameraKind::Top, CameraKind::Orbit}));
+  EXPECT_EQ(videoFileName(r, CameraKind::Chase), "video.mp4");
+  EXPECT_EQ(videoFileName(r, CameraKind::Top), "video_top.mp4");
 }

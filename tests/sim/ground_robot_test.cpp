@@ -29,10 +29,10 @@ TEST(GroundRobotModel, DiffDriveBecomesFreeBaseWithTurtleBot3WheelGeometry) {
   const Scenario s = parseScenario(
       scenarioText("  - {name: tb, model: diff_drive, start: [1, 1, 0], goal: [4, 4, 0]}\n"),
       "test.yaml");
-  ASSERT_TRUE(s.vehicles[0].ground);
+  ASSERT_EQ(s.vehicles[0].kind, VehicleKind::GroundRobot);
   const WorldModel w = WorldModel::build(s);
   const VehicleHandles& h = w.vehicles()[0];
-  EXPECT_TRUE(h.ground);
+  EXPECT_EQ(h.kind, VehicleKind::GroundRobot);
   EXPECT_EQ(h.drive.kind, GroundDrive::Kind::Differential);
   EXPECT_FALSE(h.drive.planar_root);
   EXPECT_NEAR(h.drive.wheel_radius, 0.033, 1e-9);

@@ -48,7 +48,7 @@ std::vector<std::string> convert(const std::string& urdf, std::string* error = n
   VehicleSpec v;
   v.name = "r";
   v.model_file = file;
-  v.ground = true;
+  v.kind = VehicleKind::GroundRobot;
   std::vector<std::string> bodies;
   try {
     addUrdfVehicle(doc, worldbody, v, 0.0);

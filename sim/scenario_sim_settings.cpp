@@ -1,0 +1,54 @@
+// Reading a scenario's `sim:` section (part of sim/scenario_loader.cpp): the physics timestep,
+// the control rate, the run's length, the seed and the goal tolerance, and the limits they set
+// on the rest of the scenario.
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include "control/crazyflie_control_rate.h"
+#include "sim/scenario_reference.h"
+#include "sim/scenario_sections.h"
+
+namespace cosim {
+
+namespace {
+
+// The flight log keeps one sample (about 250 bytes) per vehicle per control step, reserved up
+// front: 20 million samples is about 5 GB. More is a mistake (a day at 10 kHz), refused before
+// anything is allocated.
+constexpr double kMaxLogSamples = 2e7;
+
+}  // namespace
+
+void readSimSection(const YamlReader& r, const YAML::Node& root, Scenario& s) {
+  if (root["sim"]) {
+    const YAML::Node n = root["sim"];
+    r.checkKeys(n, "sim", {"timestep", "control_rate", "max_time", "seed", "goal_tolerance"});
+    if (n["timestep"]) s.sim.timestep = r.number(n["timestep"], "sim.timestep", 1e-5, 0.02);
+    if (n["control_rate"])
+      s.sim.control_rate = r.number(n["control_rate"], "sim.control_rate", 1.0, 10000.0);
+    if (n["max_time"]) s.sim.max_time = r.number(n["max_time"], "sim.max_time", 0.01, 86400.0);
+    if (n["seed"])
+      s.sim.seed = static_cast<std::uint64_t>(r.integer(n["seed"], "sim.seed", 0, 2147483647L));
+    if (n["goal_tolerance"])
+      s.sim.goal_tolerance = r.number(n["goal_tolerance"], "sim.goal_tolerance", 0.01, 100.0);
+    const double ratio = 1.0 / (s.sim.timestep * s.sim.control_rate);
+    if (ratio < 1.0 - 1e-9 || std::abs(ratio - std::round(ratio)) > 1e-6)
+      r.fail(n["control_rate"] ? n["control_rate"] : n, "sim.control_rate",
+             "the physics rate (1/timestep) must be a whole multiple of the control rate");
+  }
+  for (const std::string& name : {s.controller_name, s.aerial.controller_name})
+    if (const std::string why = crazyflieControlRateProblem(name, s.sim.control_rate); !why.empty())
+      r.fail(root["sim"] && root["sim"]["control_rate"] ? root["sim"]["control_rate"] : root,
+             "sim.control_rate", why);
+  if (const double samples =
+          s.sim.max_time * s.sim.control_rate * static_cast<double>(s.vehicles.size());
+      samples > kMaxLogSamples)
+    r.fail(
+        root["sim"] ? root["sim"] : root, "sim.max_time",
+        "max_time x control_rate x vehicles = " + std::to_string(static_cast<long long>(samples)) +
+            " log samples, more than 20 million: shorten sim.max_time or lower sim.control_rate");
+  checkReferenceStarts(r, root, s);
+}
+
+}  // namespace cosim
