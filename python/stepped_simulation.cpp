@@ -14,7 +14,7 @@ namespace {
 // The scenario as loaded, refused before any planning if it has ground robots.
 Scenario quadrotorScenario(const std::string& path, const std::vector<std::string>& overrides) {
   Scenario s = loadCheckedScenario(path, overrides, PlannerUse::Run);
-  if (resolveRun(s, false).ground())
+  if (resolveRun(s, false).primaryKind() == VehicleKind::GroundRobot)
     throw InputError(s.file, "key vehicles",
                      "cosim.Simulation steps quadrotor runs; this scenario has ground robots "
                      "(run it with cosim.run)");

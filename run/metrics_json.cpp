@@ -32,8 +32,9 @@ void addHeadline(JsonObject& j, const RunRecord& r) {
       .add("min_clearance_m", m.min_clearance_m)
       .add("sim_speed_x", m.sim_speed_x)
       // A robot's reference is its timed plan.
-      .add("error_reference",
-           r.setup.ground() ? std::string("timed_plan") : m.team.error_reference);
+      .add("error_reference", r.setup.primaryKind() == VehicleKind::GroundRobot
+                                  ? std::string("timed_plan")
+                                  : m.team.error_reference);
 }
 
 // A flight: its quadrotors' airframe figures and how they were flown.
@@ -104,13 +105,13 @@ void addRunFacts(JsonObject& j, const RunRecord& r) {
       .add("wall_time_s", r.log.wall_time)
       .add("end_reason", runEndName(r.log.end_reason))
       .add("mujoco_warnings", r.log.mujoco_warnings);
-  if (!r.setup.ground())
+  if (r.setup.primaryKind() != VehicleKind::GroundRobot)
     j.add("fault", faultName(r)).add("longest_saturation_s", m.longest_saturation_s);
   j.add("status", m.status)
       .add("message", m.message)
       .add("planner_counters", plan.counters)
       .add("planner_params", plan.params);
-  if (r.setup.ground()) return;
+  if (r.setup.primaryKind() == VehicleKind::GroundRobot) return;
   j.add("trajectory_counters", r.plan.quadrotors.trajectory_counters);
   if (m.separation)  // a team of quadrotors: how close they came to each other
     j.add("uav_contacts", m.contacts.uav_contacts)
@@ -126,7 +127,7 @@ JsonObject quadrotorEntry(const RunRecord& r, std::size_t v) {
     j.add("reference_file", r.scenario.vehicles[v].reference_file.string())
         .add("reference_duration_s", given->duration())
         .add("reference_timescale", given->placement().timescale);
-  if (r.setup.ground())
+  if (r.setup.primaryKind() == VehicleKind::GroundRobot)
     j.add("kind", "quadrotor").add("arrival_time_s", vl.arrival_time).add("radius_m", vl.radius);
   return j;
 }
@@ -156,7 +157,9 @@ JsonObject robotEntry(const RunRecord& r, std::size_t v, std::size_t k) {
 std::vector<JsonObject> vehicleEntries(const RunRecord& r) {
   std::vector<JsonObject> entries;
   for (std::size_t v = 0, k = 0; v < r.log.vehicles.size(); ++v)
-    entries.push_back(r.scenario.vehicles[v].kind == VehicleKind::GroundRobot ? robotEntry(r, v, k++) : quadrotorEntry(r, v));
+    entries.push_back(r.scenario.vehicles[v].kind == VehicleKind::GroundRobot
+                          ? robotEntry(r, v, k++)
+                          : quadrotorEntry(r, v));
   return entries;
 }
 
@@ -184,7 +187,7 @@ JsonObject flightMetricsJson(const FlightMetrics& m) {
 JsonObject runMetricsJson(const RunRecord& r) {
   JsonObject j;
   addHeadline(j, r);
-  if (r.setup.ground()) {
+  if (r.setup.primaryKind() == VehicleKind::GroundRobot) {
     addRobots(j, r);
     addQuadrotorsOverRobots(j, r);
   } else {

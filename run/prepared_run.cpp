@@ -23,7 +23,8 @@ Scenario describedScenario(const Scenario& scenario, const RunSetup& setup) {
   const MotionSections& primary = setup.primarySections();
   described.controller_name = primary.controller.name;
   described.trajectory_mode = primary.trajectory.mode;
-  if (setup.ground()) described.aerial.trajectory_mode = setup.quadrotor_sections.trajectory.mode;
+  if (setup.primaryKind() == VehicleKind::GroundRobot)
+    described.aerial.trajectory_mode = setup.quadrotor_sections.trajectory.mode;
   return described;
 }
 

@@ -17,12 +17,13 @@ namespace {
 // waypoints.
 std::vector<FlightMetrics> eachVehicle(const Scenario& s, const RunSetup& setup,
                                        const RunLog& log) {
-  const bool quadrotor_trajectory = setup.quadrotor_sections.trajectory.mode != TrajectoryMode::Waypoints;
+  const bool quadrotor_trajectory =
+      setup.quadrotor_sections.trajectory.mode != TrajectoryMode::Waypoints;
   std::vector<FlightMetrics> each;
   for (std::size_t v = 0; v < log.vehicles.size(); ++v)
-    each.push_back(computeFlightMetrics(
-        log.vehicles[v], s.world,
-        s.vehicles[v].kind == VehicleKind::GroundRobot || quadrotor_trajectory || s.vehicles[v].reference));
+    each.push_back(computeFlightMetrics(log.vehicles[v], s.world,
+                                        s.vehicles[v].kind == VehicleKind::GroundRobot ||
+                                            quadrotor_trajectory || s.vehicles[v].reference));
   return each;
 }
 
@@ -120,11 +121,11 @@ RunMetrics evaluateRun(const Scenario& scenario, const RunSetup& setup, const Wo
   RunMetrics m;
   m.sim_speed_x = log.wall_time > 0 ? log.sim_time / log.wall_time : 0.0;
   m.vehicles = eachVehicle(scenario, setup, log);
-  std::vector<bool> ground(log.vehicles.size());
-  for (std::size_t v = 0; v < ground.size(); ++v) ground[v] = scenario.vehicles[v].kind == VehicleKind::GroundRobot;
-  m.contacts = teamContacts(log, ground);
+  std::vector<VehicleKind> kinds(log.vehicles.size());
+  for (std::size_t v = 0; v < kinds.size(); ++v) kinds[v] = scenario.vehicles[v].kind;
+  m.contacts = teamContacts(log, kinds);
   m.team = poolFlightMetrics(m.vehicles, log, setup.primary());
-  if (setup.ground()) {
+  if (setup.primaryKind() == VehicleKind::GroundRobot) {
     m.uavs = poolFlightMetrics(m.vehicles, log, setup.quadrotors);
     m.schedule = robotSchedule(setup, plan, log);
   }

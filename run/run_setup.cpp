@@ -90,7 +90,7 @@ RunSetup resolveRun(const Scenario& s, bool plan_as_point_mass) {
     throw InputError(s.file, "world.moving_obstacles",
                      "moving obstacles need ground robots (omni_base, diff_drive or a URDF): "
                      "quadrotors do not sense them");
-  if (setup.ground())
+  if (setup.primaryKind() == VehicleKind::GroundRobot)
     resolveGroundRun(s, setup);
   else
     resolveQuadrotorRun(s, setup);

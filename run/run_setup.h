@@ -35,12 +35,15 @@ struct RunSetup {
 
   // A run with ground robots (moving obstacles need them) runs the ground loop; a run of
   // quadrotors alone the flight loop.
-  bool ground() const { return !robots.empty(); }
+  // Ground robots when there are any (the top-level sections are theirs), else quadrotors.
+  VehicleKind primaryKind() const {
+    return robots.empty() ? VehicleKind::Quadrotor : VehicleKind::GroundRobot;
+  }
   // The vehicles the top-level sections drive: metrics.json's top-level figures are theirs.
-  const std::vector<std::size_t>& primary() const { return ground() ? robots : quadrotors; }
+  const std::vector<std::size_t>& primary() const { return robots.empty() ? quadrotors : robots; }
   // The sections of the vehicles the top-level sections drive (primary()).
   const MotionSections& primarySections() const {
-    return ground() ? robot_sections : quadrotor_sections;
+    return robots.empty() ? quadrotor_sections : robot_sections;
   }
 };
 

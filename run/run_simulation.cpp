@@ -77,7 +77,7 @@ void recordNavigation(PreparedRun& run, RunLog& log) {
 }  // namespace
 
 SimulationOptions runLoopOptions(PreparedRun& run) {
-  if (run.setup.ground())
+  if (run.setup.primaryKind() == VehicleKind::GroundRobot)
     return groundOptions(run.scenario, run.plan.robots, run.request, run.report);
   return flightOptions(run.scenario, run.request);
 }
@@ -85,7 +85,7 @@ SimulationOptions runLoopOptions(PreparedRun& run) {
 std::unique_ptr<SimulationLoop> startRunLoop(PreparedRun& run) {
   run.report.stage(RunStage::Simulate);
   const RunSetup& setup = run.setup;
-  if (setup.ground())
+  if (setup.primaryKind() == VehicleKind::GroundRobot)
     run.report.message(
         "driving " + std::to_string(setup.robots.size()) + " ground robot(s)" +
         (setup.quadrotors.empty()
