@@ -92,7 +92,7 @@ std::string flightMap(const Options& options, const std::vector<MapPath>& planne
   const std::string file = writeReproductionMap(options.out_dir, "seed003-flight", 1, fig);
   return mapFiguresMarkdown({file}, {"3D map 3: an equivalent rebuilt from the thesis's figure "
                                      "only (size, start, goal and description from the text), "
-                                     "the boxes of experiments/scenarios/seed003_map3.yaml"});
+                                     "the boxes of experiments/scenarios/zigzag_walls.yaml"});
 }
 
 // How the run ended ("goal", "max_time", "saturated", ...): metrics.json's end_reason.
@@ -149,7 +149,7 @@ std::string flightIntroduction(const Options& options) {
   std::ostringstream md;
   md << "# Seed 003 revisited: flying the planned path on 3D map 3\n\n"
      << "Map 3 (50 x 50 x 5 m, start [3,2,2], goal [47,47,4]) as reconstructed in "
-     << "`experiments/scenarios/seed003_map3.yaml` (the thesis shows the layout only in a "
+     << "`experiments/scenarios/zigzag_walls.yaml` (the thesis shows the layout only in a "
      << "figure; the same boxes as seed003-discrete's map 3d-3). quad_1500g (its bounding "
         "sphere, the body clearance's, in each flight's metrics.json: vehicle_radius_m), "
      << "MuJoCo at 1 kHz, control at 500 Hz, seed " << options.seed << "."
@@ -205,7 +205,7 @@ struct FlightTally {
 // a line of the table, a JSON row and the tally's share.
 JsonObject flyOne(const Options& options, const PathSetting& path, const Pipeline& p, int index,
                   std::ostringstream& md, FlightTally& tally) {
-  const std::string scenario_file = std::string(COSIM_SCENARIOS_DIR) + "/seed003_map3.yaml";
+  const std::string scenario_file = std::string(COSIM_SCENARIOS_DIR) + "/zigzag_walls.yaml";
   std::vector<std::string> overrides = {p.point_mass ? path.thesis_planner : path.cosim_planner};
   overrides.insert(overrides.end(), p.overrides.begin(), p.overrides.end());
   overrides.push_back("sim.seed=" + std::to_string(options.seed));

@@ -15,7 +15,7 @@ FlightMetrics fly20s(const std::vector<std::string>& overrides, bool point_mass,
   std::vector<std::string> all = overrides;
   all.push_back("sim.max_time=20");
   Scenario s =
-      loadScenario(std::string(COSIM_SOURCE_DIR) + "/experiments/scenarios/seed003_map3.yaml", all);
+      loadScenario(std::string(COSIM_SOURCE_DIR) + "/experiments/scenarios/zigzag_walls.yaml", all);
   RunRequest request;
   request.out_dir = freshDir(name);
   std::filesystem::create_directories(request.out_dir);
