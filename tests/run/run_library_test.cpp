@@ -165,11 +165,11 @@ TEST(RunLibrary, ATeamsDefaultsAreResolvedBesideTheScenario) {
   const RunSetup setup = resolveRun(s, false);
   EXPECT_EQ(setup.quadrotor_planning, Planning::Team);
   EXPECT_EQ(setup.quadrotor_sections.controller.name, "indi");
-  EXPECT_EQ(setup.quadrotor_sections.trajectory.mode, "minimum_snap");
+  EXPECT_EQ(setup.quadrotor_sections.trajectory.mode, TrajectoryMode::MinimumSnap);
   EXPECT_EQ(&setup.primarySections(), &setup.quadrotor_sections);
   // The scenario keeps what its file said.
   EXPECT_EQ(s.controller_name, "cascade");
-  EXPECT_EQ(s.trajectory_mode, "waypoints");
+  EXPECT_EQ(s.trajectory_mode, TrajectoryMode::Waypoints);
 }
 
 TEST(RunLibrary, APointMassPlanKeepsNoMarginAndTheScenarioKeepsItsOwn) {

@@ -12,6 +12,11 @@
 #include "core/input_error.h"
 #include "sim/urdf_vehicle.h"
 
+// GCC 12 at -O3 warns falsely inside libstdc++ on "literal" + std::string (GCC bug 105329):
+// the strings built below are short and well formed.
+#pragma GCC diagnostic ignored "-Wstringop-overflow"
+#pragma GCC diagnostic ignored "-Warray-bounds"
+
 // GCC 12 warns -Wrestrict inside libstdc++ for string concatenations once inlined (GCC bug
 // 105329, a false positive); this file builds many such strings.
 #if defined(__GNUC__) && !defined(__clang__)

@@ -15,6 +15,11 @@
 #include "sim/scenario.h"
 #include "sim/world_model.h"
 
+// GCC 12 at -O3 warns falsely inside libstdc++ on "literal" + std::string (GCC bug 105329):
+// the strings built below are short and well formed.
+#pragma GCC diagnostic ignored "-Wstringop-overflow"
+#pragma GCC diagnostic ignored "-Warray-bounds"
+
 using namespace cosim;
 
 namespace {
