@@ -118,15 +118,24 @@ class FragmentChecker {
     if (name == "mesh" && e->Attribute("file")) spend(e, mesh_file_bytes_);
   }
 
-  // The texels MuJoCo makes of a <texture>. A cube or skybox has six faces: built in, each is
-  // width x width (MuJoCo's convention for them; height, if larger, is counted instead to stay
-  // on the safe side); from one image without a gridsize, the image is every face.
+  // The texels MuJoCo makes of a <texture>. A built-in one (any `builtin` but "none") is made
+  // from width and height even when it also names files: MuJoCo's compiler tries `builtin`
+  // first (user_objects.cc, mjCTexture::Compile), so the files' sizes say nothing then. A cube or
+  // skybox has six faces: built in, each is width x width (MuJoCo's convention for them;
+  // height, if larger, is counted instead to stay on the safe side); from one image without a
+  // gridsize, the image is every face.
   long textureTexels(const XMLElement* e, long width, long height, long file_texels) const {
     const char* type = e->Attribute("type");
     const bool cube = type && (std::strcmp(type, "cube") == 0 || std::strcmp(type, "skybox") == 0);
+    const char* builtin = e->Attribute("builtin");
+    const bool built_in = builtin && std::strcmp(builtin, "none") != 0;
     bool from_files = false;
     for (const char* attr : kFileAttributes) from_files = from_files || e->Attribute(attr);
-    if (!from_files) return cube ? 6 * width * std::max(width, height) : width * height;
+    if (built_in || !from_files) {
+      // Each face of a cube is width x width texels: bounded like one 2D texture.
+      if (cube) checkSize(e, width, width, kMaxTexturePixels, "cube face");
+      return cube ? 6 * width * std::max(width, height) : width * height;
+    }
     const bool one_image = e->Attribute("file") && !e->Attribute("gridsize");
     return cube && one_image ? 6 * file_texels : file_texels;
   }
@@ -201,11 +210,11 @@ class FragmentChecker {
       if (const auto size = pngSize(bytes); size[0] > 0) {
         w = size[0];
         h = size[1];
-      } else if (name == "texture") {
-        w = static_cast<long>(bytes.size()) / 3;  // another format: at most a texel per 3 bytes
-        h = 1;
-      } else if (name == "hfield" && bytes.size() >= 8) {
-        // MuJoCo's own height field format: int32 nrow, int32 ncol, then the floats.
+      } else if (bytes.size() >= 8) {
+        // MuJoCo's own formats: int32 nrow, int32 ncol, then the floats (height field), or
+        // int32 width, int32 height, then the RGB bytes (texture). The declared size is what
+        // counts: MuJoCo checks it against the file's length in 32-bit arithmetic, which a
+        // declared 65536 x 65536 texture wraps past.
         std::int32_t rows = 0, cols = 0;
         std::memcpy(&rows, bytes.data(), 4);
         std::memcpy(&cols, bytes.data() + 4, 4);

@@ -141,6 +141,31 @@ TEST_F(WorldFragment, HeightFieldsAndTexturesAreBoundedByWhatTheyDeclare) {
         "<mujoco><asset><texture name=\"t\" type=\"2d\" builtin=\"checker\" width=\"100000\" "
         "height=\"100000\"/></asset></mujoco>\n");
   EXPECT_NE(buildError().find("a texture of 100000 x 100000"), std::string::npos);
+  // MuJoCo's own texture format declaring 65536 x 65536 texels in 8 bytes: MuJoCo's 32-bit check
+  // of the file's length (8 + 3 x 65536 x 65536) wraps to 8 and passes.
+  write("parts/wrap.tex", std::string("\0\0\x01\0\0\0\x01\0", 8));
+  write("parts/frag.xml",
+        "<mujoco><asset><texture name=\"t\" type=\"2d\" file=\"wrap.tex\"/></asset></mujoco>\n");
+  EXPECT_NE(buildError().find("file=\"wrap.tex\" | the file holds 65536 x 65536 samples"),
+            std::string::npos)
+      << buildError();
+}
+
+// MuJoCo makes a texture that has a `builtin` from its width even when it also names a file, so
+// the file's size says nothing: a 1 x 1 PNG beside a built-in cube of width 21000 once let
+// MuJoCo ask for 3 x 21000 x 126000 bytes, a size that overflows its int.
+TEST_F(WorldFragment, ABuiltInTextureIsBoundedByItsWidthEvenWhenItAlsoNamesAFile) {
+  std::string png = "\x89PNG\r\n\x1a\n";
+  png += std::string("\0\0\0\x0dIHDR", 8);
+  png += std::string("\0\0\0\x01\0\0\0\x01", 8);
+  write("parts/dot.png", png);
+  write("parts/frag.xml",
+        "<mujoco><asset><texture name=\"t\" type=\"cube\" builtin=\"checker\" file=\"dot.png\" "
+        "width=\"21000\" height=\"1\"/></asset></mujoco>\n");
+  EXPECT_NE(buildError().find("line 1, <texture> | a cube face of 21000 x 21000 is more than the "
+                              "4194304 samples allowed"),
+            std::string::npos)
+      << buildError();
 }
 
 TEST_F(WorldFragment, AFileItNamesMustBeARegularFileBesideIt) {
