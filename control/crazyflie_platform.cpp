@@ -49,6 +49,7 @@ CrazyflieMotors::CrazyflieMotors(const CrazyfliePlatform& platform, double max_r
   }
   full_scale_volts_ = std::isfinite(max_rotor_thrust) ? voltageForThrust(max_rotor_thrust)
                                                       : std::numeric_limits<double>::infinity();
+  full_scale_thrust_ = max_rotor_thrust;
 }
 
 double CrazyflieMotors::thrustAtVoltage(double v) const {
@@ -88,20 +89,29 @@ double CrazyflieMotors::voltageForThrust(double thrust) const {
 }
 
 Eigen::Vector4d CrazyflieMotors::deliver(const Eigen::Vector4d& requested, bool* capped) const {
-  // Battery compensation (motors.c): the motor voltage for each force; off below THRUST_MIN. The
-  // duty cycle is that voltage over the supply, so an equal duty reduction is an equal voltage
-  // reduction, and full duty is full_scale_volts_.
-  Eigen::Vector4d volts;
-  for (int i = 0; i < 4; ++i)
-    volts[i] = requested[i] < p_.thrust_min ? 0.0 : voltageForThrust(requested[i]);
+  // Battery compensation (motors.c): the motor voltage for each force; off below THRUST_MIN (and
+  // at or below the curve's thrust at 0 V). The duty cycle is that voltage over the supply, so an
+  // equal duty reduction is an equal voltage reduction, and full duty is full_scale_volts_.
+  const Eigen::Vector4d& c = p_.vmotor2thrust;
+  Eigen::Vector4d thrust;
+  double strongest = 0.0;
+  for (int i = 0; i < 4; ++i) {
+    const bool off = requested[i] < p_.thrust_min || !(requested[i] > c[0]);
+    thrust[i] = off ? 0.0 : std::max(requested[i], 0.0);
+    if (!off) strongest = std::max(strongest, requested[i]);
+  }
+  // Uncapped, each motor makes what was asked of it (voltage then thrust is the identity), so
+  // the voltages are solved for only when the strongest request passes full scale (the curve
+  // rises: the strongest thrust has the highest voltage). This runs at every control step.
+  const bool cap = strongest > full_scale_thrust_;
+  if (capped) *capped = cap;
+  if (!cap) return thrust;
   // Capping (power_distribution_quadrotor.c, powerDistributionCap): every motor drops by the
   // highest one's excess over full scale, and none goes below zero (the idle thrust, 0).
-  const double excess = volts.maxCoeff() - full_scale_volts_;
-  const bool cap = excess > 0.0;
-  if (capped) *capped = cap;
-  Eigen::Vector4d thrust;
+  const double excess = voltageForThrust(strongest) - full_scale_volts_;
   for (int i = 0; i < 4; ++i) {
-    const double v = cap ? std::max(volts[i] - excess, 0.0) : volts[i];
+    if (thrust[i] == 0.0) continue;
+    const double v = std::max(voltageForThrust(requested[i]) - excess, 0.0);
     thrust[i] = v > 0.0 ? std::max(thrustAtVoltage(v), 0.0) : 0.0;
   }
   return thrust;

@@ -60,7 +60,8 @@ class CrazyflieMotors {
   double newtonFrom(double v, double thrust) const;
 
   CrazyfliePlatform p_;
-  double full_scale_volts_;  // motor volts at full duty (infinite: no cap)
+  double full_scale_volts_;   // motor volts at full duty (infinite: no cap)
+  double full_scale_thrust_;  // the thrust at full duty (infinite: no cap)
   // The curve's inverse at evenly spaced thrusts, the start of voltageForThrust's iteration.
   static constexpr int kTableSize = 257;
   double table_step_ = 0.0;

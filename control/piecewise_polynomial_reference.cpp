@@ -10,18 +10,32 @@ namespace {
 
 constexpr int kOrders = 5;  // position to snap
 
-// Row k: the k-th derivative of p(tau) = sum_i c_i tau^i, for x, y, z, yaw.
-Eigen::Matrix<double, kOrders, 4> derivatives(const ReferencePiece::Coefficients& c, double tau) {
-  double power[ReferencePiece::kCoefficients];
-  power[0] = 1.0;
-  for (int i = 1; i < ReferencePiece::kCoefficients; ++i) power[i] = power[i - 1] * tau;
-  Eigen::Matrix<double, kOrders, 4> d = Eigen::Matrix<double, kOrders, 4>::Zero();
+// kFalling.f[k][i] = i (i-1) ... (i-k+1): d^k/dtau^k of tau^i is that times tau^(i-k).
+struct FallingFactorials {
+  double f[kOrders][ReferencePiece::kCoefficients];
+};
+constexpr FallingFactorials fallingFactorials() {
+  FallingFactorials t{};
   for (int k = 0; k < kOrders; ++k)
-    for (int i = k; i < ReferencePiece::kCoefficients; ++i) {
-      double falling = 1.0;  // i (i-1) ... (i-k+1): d^k/dtau^k of tau^i is that times tau^(i-k)
-      for (int f = 0; f < k; ++f) falling *= i - f;
-      d.row(k) += falling * power[i - k] * c.row(i);
+    for (int i = 0; i < ReferencePiece::kCoefficients; ++i) {
+      double f = 1.0;
+      for (int j = 0; j < k; ++j) f *= i - j;
+      t.f[k][i] = f;
     }
+  return t;
+}
+constexpr FallingFactorials kFalling = fallingFactorials();
+
+// Row k: the k-th derivative of p(tau) = sum_i c_i tau^i, for x, y, z, yaw, each by Horner's
+// rule on the differentiated coefficients (this runs at every control step).
+Eigen::Matrix<double, kOrders, 4> derivatives(const ReferencePiece::Coefficients& c, double tau) {
+  constexpr int n = ReferencePiece::kCoefficients;
+  Eigen::Matrix<double, kOrders, 4> d;
+  for (int k = 0; k < kOrders; ++k) {
+    Eigen::RowVector4d row = kFalling.f[k][n - 1] * c.row(n - 1);
+    for (int i = n - 2; i >= k; --i) row = row * tau + kFalling.f[k][i] * c.row(i);
+    d.row(k) = row;
+  }
   return d;
 }
 

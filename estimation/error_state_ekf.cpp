@@ -155,12 +155,19 @@ void ErrorStateEkf::updateBlock(int block, const Eigen::Vector3d& r, double sigm
 
   // Joseph form, P <- (I - K H) P (I - K H)^T + K V K^T: symmetric and positive semi-definite
   // by construction, unlike (I - K H) P when K is not exactly optimal in floating point.
-  // With H selecting a block, (K H) P = K (rows of P) and X (K H)^T = (columns of X) K^T.
-  const Eigen::Matrix<double, 3, kDim> HP = P_.middleRows<3>(block);
-  P_ -= K.lazyProduct(HP);
-  const Eigen::Matrix<double, kDim, 3> XHt = P_.middleCols<3>(block);
-  P_ -= XHt.lazyProduct(K.transpose());
-  P_ += (var * K).lazyProduct(K.transpose());
+  // Expanded with H selecting a block (H P = rows of P, H P H^T + V = S), it is
+  // P - K (P H^T)^T - (P H^T) K^T + K S K^T = P - (K W^T + W K^T) with W = P H^T - K S / 2: a
+  // symmetric rank-6 update, done on the lower triangle and mirrored.
+  // (Transposed, so that each entry's two dot products read contiguous columns.)
+  const Eigen::Matrix<double, 3, kDim> Kt = K.transpose();
+  const Eigen::Matrix<double, 3, kDim> Wt = (PHt - 0.5 * K.lazyProduct(S)).transpose();
+  for (int j = 0; j < kDim; ++j) {
+    for (int i = j; i < kDim; ++i) {
+      const double v = P_(i, j) - Kt.col(i).dot(Wt.col(j)) - Wt.col(i).dot(Kt.col(j));
+      P_(i, j) = v;
+      P_(j, i) = v;
+    }
+  }
 
   // Injection (Sec. 6.2): x <- x (+) dx, the attitude error on the right (local).
   x_.position += dx.segment<3>(kPosition);
@@ -171,14 +178,15 @@ void ErrorStateEkf::updateBlock(int block, const Eigen::Vector3d& r, double sigm
   x_.gyro_bias += dx.segment<3>(kGyroBias);
 
   // Reset (Sec. 6.3): the error now has zero mean about the new nominal state; its covariance
-  // is P <- G P G^T with G = I except G_theta = I - [dtheta / 2]x on the attitude block.
+  // is P <- G P G^T with G = I except G_theta = I - [dtheta / 2]x on the attitude block: the
+  // attitude rows become G times themselves, the columns their transpose (P stays exactly
+  // symmetric), and the attitude block G P_theta G^T.
   const Eigen::Matrix3d G = Eigen::Matrix3d::Identity() - skew(0.5 * dtheta);
   const Eigen::Matrix<double, 3, kDim> rows = G.lazyProduct(P_.middleRows<3>(kAttitude));
   P_.middleRows<3>(kAttitude) = rows;
-  const Eigen::Matrix<double, kDim, 3> cols =
-      P_.middleCols<3>(kAttitude).lazyProduct(G.transpose());
-  P_.middleCols<3>(kAttitude) = cols;
-  symmetrise(P_);
+  P_.middleCols<3>(kAttitude) = rows.transpose();
+  const Eigen::Matrix3d block_theta = rows.middleCols<3>(kAttitude).lazyProduct(G.transpose());
+  P_.block<3, 3>(kAttitude, kAttitude) = 0.5 * (block_theta + block_theta.transpose());
 }
 
 }  // namespace cosim

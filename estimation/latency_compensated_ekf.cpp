@@ -8,8 +8,8 @@ namespace cosim {
 
 LatencyCompensatedEkf::LatencyCompensatedEkf(const ImuNoise& noise, double gravity,
                                              double max_latency, double imu_rate,
-                                             double predict_rate)
-    : ekf_(noise, gravity), averager_(predict_rate) {
+                                             double predict_rate, FixTiming timing)
+    : ekf_(noise, gravity), timing_(timing), averager_(predict_rate) {
   const double step_rate = std::min(imu_rate, predict_rate);
   if (!(max_latency >= 0.0) || !(imu_rate > 0.0) || !(max_latency * step_rate < 1e6)) {
     throw std::invalid_argument(
@@ -92,6 +92,11 @@ bool LatencyCompensatedEkf::addAttitude(const AttitudeMeasurement& z) {
 }
 
 bool LatencyCompensatedEkf::addFix(const Fix& fix) {
+  if (timing_ == FixTiming::OnArrival) {
+    if (!(fix.sigma > 0.0)) throw std::invalid_argument("LatencyCompensatedEkf: sigma must be > 0");
+    fuseNow(fix);
+    return true;
+  }
   if (!(fix.t > windowStart())) {
     ++dropped_;
     return false;
@@ -120,6 +125,21 @@ bool LatencyCompensatedEkf::addFix(const Fix& fix) {
     dirty_from_ = std::min(dirty_from_, lo);
   }
   return true;
+}
+
+void LatencyCompensatedEkf::fuseNow(const Fix& fix) {
+  replay();  // the latest prediction made (ekf_ then holds its posterior)
+  Step& latest = step(count_ - 1);
+  if (ekf_holds_ != count_ - 1) ekf_.initialise(latest.state, latest.P);
+  ekf_holds_ = count_ - 1;
+  const double t = latest.state.t;
+  if (fix.kind == Fix::kPosition) {
+    ekf_.updatePosition({t, fix.position, fix.sigma});
+  } else {
+    ekf_.updateAttitude({t, fix.attitude, fix.sigma});
+  }
+  latest.state = ekf_.state();
+  latest.P = ekf_.covariance();
 }
 
 void LatencyCompensatedEkf::replay() const {

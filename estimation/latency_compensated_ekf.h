@@ -21,6 +21,13 @@
 // estimator hands its controllers the state of its latest prediction and update; the body rates
 // and specific force come from the latest IMU sample itself (angularVelocity, specificForce).
 //
+// Fusing on arrival (FixTiming::OnArrival) is what the Crazyflie's Kalman estimator does
+// instead: crazyflie-firmware's estimator_kalman.c dequeues each external position or pose at
+// its next 1 kHz loop and applies it to the state of its latest prediction
+// (kalmanCoreUpdateWithPosition / kalmanCoreUpdateWithPose) with no regard for when it was
+// valid, so a motion capture fix's latency shows in the estimate as it does on the vehicle.
+// Then a fix updates the latest prediction's posterior directly and nothing is stored or re-run.
+//
 // The history holds ceil(max_latency * step_rate) + 2 steps (step_rate the lower of the
 // prediction and IMU rates); a fix no later than the oldest step is dropped and counted. A fix
 // valid after the latest prediction waits for the next. Re-running is done lazily, once for all
@@ -31,6 +38,7 @@
 #include <vector>
 
 #include "estimation/error_state_ekf.h"
+#include "estimation/fix_timing.h"
 #include "estimation/imu_averager.h"
 
 namespace cosim {
@@ -41,7 +49,7 @@ class LatencyCompensatedEkf {
   // sensor's latency plus however late the caller delivers); imu_rate: Hz, the IMU's;
   // predict_rate: Hz, the predictions' (at or above imu_rate: one per sample).
   LatencyCompensatedEkf(const ImuNoise& noise, double gravity, double max_latency, double imu_rate,
-                        double predict_rate);
+                        double predict_rate, FixTiming timing = FixTiming::AtValidity);
 
   // Starts from x (at x.t) with error covariance P0; forgets the history and every stored fix.
   void initialise(const NavigationState& x, const ErrorStateEkf::Covariance& P0);
@@ -49,7 +57,8 @@ class LatencyCompensatedEkf {
   // The next IMU sample; imu.t must exceed the latest one's (std::invalid_argument otherwise).
   // Predicts when a prediction is due.
   void addImu(const ImuMeasurement& imu);
-  // A fix valid at z.t. Returns false (and counts it) if it is too old for the history.
+  // A fix valid at z.t. Returns false (and counts it) if it is too old for the history. On
+  // arrival (FixTiming::OnArrival) z.t is not used: the fix is fused at once, never dropped.
   bool addPosition(const PositionMeasurement& z);
   bool addAttitude(const AttitudeMeasurement& z);
 
@@ -87,6 +96,8 @@ class LatencyCompensatedEkf {
   };
 
   bool addFix(const Fix& fix);
+  // Fuses `fix` into the latest prediction's posterior (FixTiming::OnArrival).
+  void fuseNow(const Fix& fix);
   // Appends a prediction step closed by the averaged sample `imu`.
   void addStep(const ImuMeasurement& imu);
   // Re-runs steps dirty_from_ .. last from the one before (a no-op when nothing is dirty).
@@ -105,6 +116,7 @@ class LatencyCompensatedEkf {
   std::vector<Fix> fixes_;  // ordered by (t, kind, arrival)
   std::uint64_t arrivals_ = 0;
   std::size_t dropped_ = 0;
+  FixTiming timing_;
   ImuAverager averager_;
   ImuMeasurement latest_imu_;  // the latest raw sample (valid when has_imu_)
   bool has_imu_ = false;

@@ -1,6 +1,7 @@
 #include "sim/scenario_sensing.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <tuple>
@@ -135,7 +136,7 @@ void readEstimator(const YamlReader& r, const YAML::Node& root, Scenario& s) {
   std::string name = s.sensors.ideal() ? "ground_truth" : "ekf";
   if (given) {
     r.requireMap(n, "estimator");
-    r.checkKeys(n, "estimator", {"name", "predict_rate"});
+    r.checkKeys(n, "estimator", {"name", "predict_rate", "fuse", "position_std", "attitude_std"});
     if (!n["name"]) r.fail(n, "estimator", "missing 'name' (ekf or ground_truth)");
     name = r.text(n["name"], "estimator.name");
     if (name != "ekf" && name != "ground_truth")
@@ -145,6 +146,22 @@ void readEstimator(const YamlReader& r, const YAML::Node& root, Scenario& s) {
         r.fail(n["predict_rate"], "estimator.predict_rate", "only the ekf predicts (name: ekf)");
       s.estimator.predict_rate = r.number(n["predict_rate"], "estimator.predict_rate", 0.1, 1e6);
     }
+    if (n["fuse"]) {
+      if (name != "ekf") r.fail(n["fuse"], "estimator.fuse", "only the ekf fuses (name: ekf)");
+      const std::string fuse = r.text(n["fuse"], "estimator.fuse");
+      if (fuse != "at_validity" && fuse != "on_arrival")
+        r.fail(n["fuse"], "estimator.fuse", "must be 'at_validity' or 'on_arrival'");
+      s.estimator.fix_timing = fuse == "on_arrival" ? FixTiming::OnArrival : FixTiming::AtValidity;
+    }
+    // The fixes' assumed standard deviations: m (position), rad (attitude, at most pi).
+    const auto fixStd = [&](const char* key, double most, double& out) {
+      if (!n[key]) return;
+      const std::string where = std::string("estimator.") + key;
+      if (name != "ekf") r.fail(n[key], where, "only the ekf weighs fixes (name: ekf)");
+      out = r.number(n[key], where, 1e-9, most);
+    };
+    fixStd("position_std", 1e3, s.estimator.position_std);
+    fixStd("attitude_std", M_PI, s.estimator.attitude_std);
   }
   s.estimator.name = name;
   if (name != "ekf") return;

@@ -55,13 +55,17 @@ VehicleState readVehicleState(const mjData* d, const VehicleHandles& v) {
 StateEstimator::StateEstimator(const EstimatorSettings& estimator, const SensorSettings& sensors,
                                const QuadrotorParams& airframe, std::uint64_t seed,
                                std::size_t vehicle_index)
-    : airframe_(airframe), sensors_(sensors), seed_(sensorSeed(seed, vehicle_index, 3)) {
+    : airframe_(airframe),
+      sensors_(sensors),
+      seed_(sensorSeed(seed, vehicle_index, 3)),
+      position_std_(estimator.position_std),
+      attitude_std_(estimator.attitude_std) {
   if (estimator.name == "ekf") {
     if (!sensors.imu.present || !sensors.position.present)
       throw std::invalid_argument("the EKF needs an IMU and a position sensor");
     ekf_ = std::make_unique<LatencyCompensatedEkf>(sensors.imu.noise, airframe.gravity,
                                                    maximumLatency(sensors), sensors.imu.rate,
-                                                   estimator.predict_rate);
+                                                   estimator.predict_rate, estimator.fix_timing);
   }
 }
 
@@ -106,8 +110,14 @@ VehicleState StateEstimator::estimate(const mjData* d, const VehicleHandles& v,
     plant.takeDelivered(d->time, in);
     for (const ImuMeasurement& z : in.imu) ekf_->addImu(z);
     imu_seen_ = imu_seen_ || !in.imu.empty();
-    for (const PositionMeasurement& z : in.position) ekf_->addPosition(z);
-    for (const AttitudeMeasurement& z : in.attitude) ekf_->addAttitude(z);
+    for (PositionMeasurement z : in.position) {
+      if (position_std_ > 0.0) z.sigma = position_std_;
+      ekf_->addPosition(z);
+    }
+    for (AttitudeMeasurement z : in.attitude) {
+      if (attitude_std_ > 0.0) z.sigma = attitude_std_;
+      ekf_->addAttitude(z);
+    }
     const NavigationState& x = ekf_->current();
     s.position = x.position;
     s.velocity = x.velocity;

@@ -44,6 +44,8 @@ class StateEstimator {
   QuadrotorParams airframe_;
   SensorSettings sensors_;
   std::uint64_t seed_;
+  double position_std_;  // the fixes' assumed standard deviations (0: the sensors' noise)
+  double attitude_std_;
   std::unique_ptr<LatencyCompensatedEkf> ekf_;
   bool imu_seen_ = false;
   SensorReadings readings_;  // one control step's hand-over, reused (no allocation per step)

@@ -12,6 +12,7 @@
 
 #include "core/ziggurat_normal.h"
 #include "estimation/measurements.h"
+#include "sim/sensors/sensor_noise_stream.h"
 #include "sim/sensors/sensor_settings.h"
 
 namespace cosim {
@@ -35,7 +36,7 @@ class ImuSensor {
   Eigen::Vector3d normal3();
 
   ImuSettings settings_;
-  std::mt19937_64 rng_;
+  SensorNoiseEngine rng_;
   ZigguratNormal normal_;  // N(0, 1), core/ziggurat_normal.h
   Eigen::Vector3d gyro_bias_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d accel_bias_ = Eigen::Vector3d::Zero();

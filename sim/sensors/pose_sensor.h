@@ -12,6 +12,7 @@
 
 #include "core/ziggurat_normal.h"
 #include "estimation/measurements.h"
+#include "sim/sensors/sensor_noise_stream.h"
 #include "sim/sensors/sensor_settings.h"
 
 namespace cosim {
@@ -25,7 +26,7 @@ class PositionSensor {
 
  private:
   PositionSensorSettings settings_;
-  std::mt19937_64 rng_;
+  SensorNoiseEngine rng_;
   ZigguratNormal normal_;  // N(0, 1), core/ziggurat_normal.h
 };
 
@@ -38,7 +39,7 @@ class AttitudeSensor {
 
  private:
   AttitudeSensorSettings settings_;
-  std::mt19937_64 rng_;
+  SensorNoiseEngine rng_;
   ZigguratNormal normal_;  // N(0, 1), core/ziggurat_normal.h
 };
 

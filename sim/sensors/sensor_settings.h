@@ -5,6 +5,7 @@
 // sim/sensors/pose_sensor.h.
 #include <string>
 
+#include "estimation/fix_timing.h"
 #include "estimation/measurements.h"
 
 namespace cosim {
@@ -45,15 +46,24 @@ struct SensorSettings {
   bool ideal() const { return !imu.present && !position.present && !attitude.present; }
 };
 
-// estimator: {name: ekf | ground_truth, predict_rate}. Absent: ground_truth with ideal sensing,
-// ekf otherwise.
+// estimator: {name: ekf | ground_truth, predict_rate, fuse, position_std, attitude_std}. Absent:
+// ground_truth with ideal sensing, ekf otherwise.
 struct EstimatorSettings {
   std::string name = "ground_truth";
+  // fuse: at_validity (default) fuses a late fix at the instant it was valid for, exactly;
+  // on_arrival at the latest prediction when it arrives, as the Crazyflie's Kalman estimator
+  // does (estimation/latency_compensated_ekf.h).
+  FixTiming fix_timing = FixTiming::AtValidity;
   // Hz, how often the EKF predicts, from the IMU samples averaged since its last prediction
   // (estimation/imu_averager.h); at or above the IMU's rate, at every sample. Default: the
   // Crazyflie's Kalman estimator, PREDICT_RATE = RATE_100_HZ (crazyflie-firmware
   // src/modules/src/estimator/estimator_kalman.c), for every EKF scenario.
   double predict_rate = 100.0;
+  // position_std (m) and attitude_std (rad, per axis): the standard deviation the EKF assumes
+  // for each position or attitude fix, as the Crazyflie's locSrv.extPosStdDev and
+  // extQuatStdDev; 0: the sensor's own noise (sensors.position.noise, sensors.attitude.noise_deg).
+  double position_std = 0.0;
+  double attitude_std = 0.0;
 };
 
 }  // namespace cosim
