@@ -29,6 +29,13 @@ class Xoshiro256pp {
     if ((s_[0] | s_[1] | s_[2] | s_[3]) == 0) s_[0] = 0x9e3779b97f4a7c15ULL;
   }
 
+  // The state itself (not all zero), e.g. to check the generator against the authors' outputs.
+  static Xoshiro256pp fromState(const std::array<std::uint64_t, 4>& state) {
+    Xoshiro256pp g;
+    for (int i = 0; i < 4; ++i) g.s_[i] = state[i];
+    return g;
+  }
+
   result_type operator()() {
     const std::uint64_t out = rotl(s_[0] + s_[3], 23) + s_[0];
     const std::uint64_t t = s_[1] << 17;
@@ -42,8 +49,9 @@ class Xoshiro256pp {
   }
 
  private:
+  Xoshiro256pp() = default;
   static std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
-  std::uint64_t s_[4];
+  std::uint64_t s_[4] = {};
 };
 
 }  // namespace cosim

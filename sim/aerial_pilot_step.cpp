@@ -27,7 +27,10 @@ VehicleLog AerialPilotStep::begin(const mjData* d, std::size_t expected_samples)
   vl.goal = pilot_->goal;
   vl.planned_path = pilot_->planned_path;
   vl.reference_end = pilot_->reference_end;
-  vl.samples.reserve(expected_samples);
+  // Reserved and written once here, so that the loop does not meet the first touch of each page
+  // of its log (a page fault, in a virtual machine often a trip to the host) while it flies.
+  vl.samples.resize(expected_samples);
+  vl.samples.clear();
   pilot_->controller->reset();
   estimator_.begin(d, *vehicle_);
   saturated_since_ = -1.0;

@@ -31,22 +31,28 @@ Section measureReferenceFlight(bool quick, const std::string& controller) {
   if (quick) sets.push_back("sim.max_time=2");
   const Scenario s = loadScenario(COSIM_SCENARIOS_DIR "/crazyflie_figure8.yaml", sets);
   const WorldModel world = WorldModel::build(s);
-  // Several flights (one in quick mode), each loop against its own bare replay right after it;
-  // the ratio is the median of the flights' ratios: a 12 s flight takes a few hundredths of a
-  // second here, and on a shared machine one flight in a few meets a burst of other work.
+  // Several flights (one in quick mode), each timed between two bare replays of it, A-B-A: on a
+  // shared machine the speed of the whole machine drifts by tens of per cent within a second,
+  // and the mean of the replays before and after cancels a drift that is steady over the
+  // flight. The ratio is the median of the flights' ratios: one flight in a few meets a burst of
+  // other work. Every flight of the scenario is the same flight (same seed, same result), so an
+  // untimed first flight gives the log the first replay follows.
   const int flights = quick ? 1 : 15;
   double loop_s = 0.0, bare_s = 0.0, sim_s = 0.0, rmse = 0.0;
   long steps = 0;
   std::vector<double> ratios;
+  RunLog log = flyOnce(s, world);
   for (int i = 0; i < flights; ++i) {
-    const RunLog log = flyOnce(s, world);
     // A fair bare side: the same compiled model (world.model(), so the same body, world and
     // opt.timestep), exactly log.physics_steps mj_step calls (the loop's count), on the same
     // motion (the logged thrusts, and the logged state put back at each control step), with only
     // the per-step wrench write any driver of the engine must make; both are timed over the
     // stepping alone (the loop's clock starts after its setup, bareReplaySeconds' after
     // mj_makeData).
-    const double bare = bareReplaySeconds(world, log, s.sim, true);
+    const double before = bareReplaySeconds(world, log, s.sim, true);
+    log = flyOnce(s, world);
+    const double after = bareReplaySeconds(world, log, s.sim, true);
+    const double bare = 0.5 * (before + after);
     ratios.push_back(bare / log.wall_time);  // same steps: the ratio of the step rates
     loop_s += log.wall_time;
     bare_s += bare;
