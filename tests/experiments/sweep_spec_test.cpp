@@ -7,9 +7,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/input_error.h"
 #include "experiments/sweep/sweep_jobs.h"
 #include "experiments/sweep/sweep_shard.h"
-#include "core/input_error.h"
 #include "tests/support/test_files.h"
 
 namespace cosim {
@@ -143,7 +143,8 @@ TEST_F(SweepSpecTest, AnUnknownPlannerParameterIsBadInputAtItsLine) {
 
 TEST_F(SweepSpecTest, VaryingThePlannerAcrossFamiliesKeepsTheOtherFamilysParameters) {
   // a.yaml sets planner.resolution, a grid parameter rrt_star does not take but another planner
-  // does: the contract's example (astar, theta_star, rrt_star over one scenario) must be valid.
+  // does: the documented sweep example (astar, theta_star, rrt_star over one scenario) must be
+  // valid.
   const SweepSpec s =
       parse("scenarios: [../scenarios/a.yaml]\nvary:\n  planner.name: [astar, rrt_star]\n");
   EXPECT_NO_THROW(validateSweepJobs(s, expandSweepJobs(s, root_ / "out")));
@@ -240,8 +241,8 @@ TEST_F(SweepSpecTest, TeamAndNavigatorPlannersOfGroundScenariosValidate) {
       parse("scenarios: [" + team + "]\nvary: {planner.name: [cbs, whca_star, astar]}\n");
   EXPECT_NO_THROW(validateSweepJobs(s, expandSweepJobs(s, root_ / "out")));
   EXPECT_EQ(errorOf("scenarios: [" + team + "]\nvary: {planner.window: [4]}\n"),
-            "line 2, key vary.planner.window | scenario " + team + " with planner.window=4: " +
-                team +
+            "line 2, key vary.planner.window | scenario " + team +
+                " with planner.window=4: " + team +
                 ": --set planner.window=4, key planner.window: unknown parameter 'window' for "
                 "planner 'cbs' (allowed: bypass, connectivity, max_expansions, max_nodes, "
                 "resolution, time_limit)");
