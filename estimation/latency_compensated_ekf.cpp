@@ -128,10 +128,11 @@ bool LatencyCompensatedEkf::addFix(const Fix& fix) {
 }
 
 void LatencyCompensatedEkf::fuseNow(const Fix& fix) {
-  replay();  // the latest prediction made (ekf_ then holds its posterior)
+  // After replay() ekf_ holds the latest prediction's posterior: on arrival nothing is ever
+  // re-run, so the filter itself is the latest step's covariance and the steps store only
+  // their states (covariance()).
+  replay();
   Step& latest = step(count_ - 1);
-  if (ekf_holds_ != count_ - 1) ekf_.initialise(latest.state, latest.P);
-  ekf_holds_ = count_ - 1;
   const double t = latest.state.t;
   if (fix.kind == Fix::kPosition) {
     ekf_.updatePosition({t, fix.position, fix.sigma});
@@ -139,12 +140,13 @@ void LatencyCompensatedEkf::fuseNow(const Fix& fix) {
     ekf_.updateAttitude({t, fix.attitude, fix.sigma});
   }
   latest.state = ekf_.state();
-  latest.P = ekf_.covariance();
 }
 
 void LatencyCompensatedEkf::replay() const {
   if (dirty_from_ >= count_) return;
   const Step& base = step(dirty_from_ - 1);
+  // (Only a fix fused at its validity, into a step before the latest, gets here with ekf_
+  // elsewhere: on arrival the filter always holds the latest step, whose P is not stored.)
   if (ekf_holds_ != dirty_from_ - 1) ekf_.initialise(base.state, base.P);
   auto fix = std::upper_bound(fixes_.begin(), fixes_.end(), base.imu.t,
                               [](double t, const Fix& f) { return t < f.t; });
@@ -160,7 +162,7 @@ void LatencyCompensatedEkf::replay() const {
     }
     ekf_.predict(s.imu);
     s.state = ekf_.state();
-    s.P = ekf_.covariance();
+    if (timing_ == FixTiming::AtValidity) s.P = ekf_.covariance();  // a base to re-run from
   }
   dirty_from_ = count_;
   ekf_holds_ = count_ - 1;
@@ -173,7 +175,7 @@ const NavigationState& LatencyCompensatedEkf::current() const {
 
 const ErrorStateEkf::Covariance& LatencyCompensatedEkf::covariance() const {
   replay();
-  return step(count_ - 1).P;
+  return timing_ == FixTiming::OnArrival ? ekf_.covariance() : step(count_ - 1).P;
 }
 
 Eigen::Vector3d LatencyCompensatedEkf::angularVelocity() const {

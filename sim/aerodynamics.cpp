@@ -100,7 +100,7 @@ void Aerodynamics::apply(const mjModel* m, mjData* d, const std::vector<Quadroto
     plants[v]->setAppliedThrusts(thrust);
     Eigen::Vector3d force_body, torque_body;
     rotorWrench(p, thrust, force_body, torque_body);
-    Wrench air;  // world frame
+    Wrench air;  // body frame
     if (s_.hasDrag()) {
       const mjtNum* u = d->qvel + h.qvel_adr;
       AirframeMotion motion;
@@ -108,10 +108,11 @@ void Aerodynamics::apply(const mjModel* m, mjData* d, const std::vector<Quadroto
       motion.velocity = {u[0], u[1], u[2]};
       motion.angular_velocity = {u[3], u[4], u[5]};
       motion.wind = wind_.velocity();
-      if (s_.rotor_drag) air = rotorDragWrench(p, motion, rotors.speeds());
-      air.force += -s_.drag_coefficient * (motion.velocity - motion.wind);
+      if (s_.rotor_drag) air = rotorDragWrenchBody(p, motion, rotors.speeds());
+      if (s_.drag_coefficient != 0.0)
+        air.force += R.transpose() * (-s_.drag_coefficient * (motion.velocity - motion.wind));
     }
-    setFreeJointWrench(d, h, R * force_body + air.force, torque_body + R.transpose() * air.torque);
+    setFreeJointWrench(d, h, R * (force_body + air.force), torque_body + air.torque);
   }
 }
 

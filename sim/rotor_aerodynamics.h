@@ -24,12 +24,16 @@ struct AirframeMotion {
 };
 
 struct Wrench {
-  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // world, at the centre of mass
-  Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // world, about the centre of mass
+  Eigen::Vector3d force = Eigen::Vector3d::Zero();   // at the centre of mass
+  Eigen::Vector3d torque = Eigen::Vector3d::Zero();  // about the centre of mass
 };
 
-// The sum over the four rotors of F_i (with its moment about the centre, r_i x F_i) and M_i.
+// The sum over the four rotors of F_i (with its moment about the centre, r_i x F_i) and M_i, in
+// the world frame.
 Wrench rotorDragWrench(const QuadrotorParams& airframe, const AirframeMotion& motion,
                        const Eigen::Vector4d& rotor_speeds);
+// The same sums in the body frame (force and torque both), as the physics step applies them.
+Wrench rotorDragWrenchBody(const QuadrotorParams& airframe, const AirframeMotion& motion,
+                           const Eigen::Vector4d& rotor_speeds);
 
 }  // namespace cosim
