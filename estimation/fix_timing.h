@@ -4,7 +4,7 @@ namespace cosim {
 
 enum class FixTiming {
   AtValidity,  // at the instant the fix was valid for, exactly, by re-running the steps since
-  OnArrival,   // at the latest prediction when it arrives, as the Crazyflie's Kalman estimator
+  OnArrival,   // at the latest prediction when it arrives, as the Crazyflie's estimator does
 };
 
 }  // namespace cosim
