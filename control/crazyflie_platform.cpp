@@ -108,10 +108,11 @@ Eigen::Vector4d CrazyflieMotors::deliver(const Eigen::Vector4d& requested, bool*
   if (!cap) return thrust;
   // Capping (power_distribution_quadrotor.c, powerDistributionCap): every motor drops by the
   // highest one's excess over full scale, and none goes below zero (the idle thrust, 0).
-  const double excess = voltageForThrust(strongest) - full_scale_volts_;
+  Eigen::Vector4d volts;
+  for (int i = 0; i < 4; ++i) volts[i] = thrust[i] == 0.0 ? 0.0 : voltageForThrust(requested[i]);
+  const double excess = volts.maxCoeff() - full_scale_volts_;
   for (int i = 0; i < 4; ++i) {
-    if (thrust[i] == 0.0) continue;
-    const double v = std::max(voltageForThrust(requested[i]) - excess, 0.0);
+    const double v = std::max(volts[i] - excess, 0.0);
     thrust[i] = v > 0.0 ? std::max(thrustAtVoltage(v), 0.0) : 0.0;
   }
   return thrust;

@@ -100,7 +100,8 @@ void Aerodynamics::apply(const mjModel* m, mjData* d, const std::vector<Quadroto
     plants[v]->setAppliedThrusts(thrust);
     Eigen::Vector3d force_body, torque_body;
     rotorWrench(p, thrust, force_body, torque_body);
-    Wrench air;  // body frame
+    Wrench air;                                             // rotor drag, body frame
+    Eigen::Vector3d linear_drag = Eigen::Vector3d::Zero();  // world frame
     if (s_.hasDrag()) {
       const mjtNum* u = d->qvel + h.qvel_adr;
       AirframeMotion motion;
@@ -109,10 +110,9 @@ void Aerodynamics::apply(const mjModel* m, mjData* d, const std::vector<Quadroto
       motion.angular_velocity = {u[3], u[4], u[5]};
       motion.wind = wind_.velocity();
       if (s_.rotor_drag) air = rotorDragWrenchBody(p, motion, rotors.speeds());
-      if (s_.drag_coefficient != 0.0)
-        air.force += R.transpose() * (-s_.drag_coefficient * (motion.velocity - motion.wind));
+      linear_drag = -s_.drag_coefficient * (motion.velocity - motion.wind);
     }
-    setFreeJointWrench(d, h, R * (force_body + air.force), torque_body + air.torque);
+    setFreeJointWrench(d, h, R * (force_body + air.force) + linear_drag, torque_body + air.torque);
   }
 }
 
