@@ -1,10 +1,14 @@
 // cosim compare-real RUN_DIR LOG: a real flight's log beside a cosim run of the same reference.
-// Reads the log (CSV or Crazyflie uSD binary), places it on the run's clock (and, for a relative
-// reference, in its frame) by least squares, and writes compare.json, compare.md and a figure.
+// Reads the run as render and export-mcap do (cli/run_folder.h) and the log (CSV or Crazyflie uSD
+// binary), places the log on the run's clock (and, as --align asks, in its frame) by least
+// squares, and writes compare.json, compare.md and a figure. SIGINT/SIGTERM stop it (exit 1,
+// nothing written).
 #include <iostream>
 
 #include "cli/command.h"
+#include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
+#include "cli/run_folder.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
 #include "experiments/compare/compare_report.h"
@@ -33,7 +37,7 @@ std::vector<std::string> threeNames(const std::string& text, const std::string& 
 
 struct CompareArgs {
   std::string run_dir, log, vehicle, out, position_vars, reference_vars;
-  std::string align_to = "flown", start_offset = "auto";
+  std::string align_to = "flown", align;
   double time_offset = 0.0;
   bool has_time_offset = false;
 };
@@ -41,33 +45,51 @@ struct CompareArgs {
 ComparisonOptions comparisonOptions(const CompareArgs& a) {
   ComparisonOptions o;
   o.align_to = a.align_to == "reference" ? AlignTo::Reference : AlignTo::Flown;
-  o.start_offset = a.start_offset == "fit"    ? StartOffset::Fit
-                   : a.start_offset == "none" ? StartOffset::None
-                                              : StartOffset::Auto;
+  if (!a.align.empty()) o.align = alignModeNamed(a.align);
   o.fixed_time_offset = a.has_time_offset;
   o.time_offset = a.time_offset;
   return o;
 }
 
-void compareReal(const CompareArgs& a) {
+// Exit status: 0 compared, 1 interrupted (nothing written).
+int compareReal(const CompareArgs& a) {
+  // Interruptible from here on, reading included.
+  const std::atomic<bool>& interrupt = installInterruptFlag();
+  const auto interrupted = [] {
+    std::cerr << "cosim: interrupted; nothing was written\n";
+    return 1;
+  };
   const std::string out_dir = a.out.empty() ? a.run_dir : a.out;
   checkOutputDir(out_dir);
   FlightLogOptions log_options;
   log_options.position_vars = threeNames(a.position_vars, "--position-vars");
   log_options.reference_vars = threeNames(a.reference_vars, "--reference-vars");
-  const RunFlight run = readRunFlight(a.run_dir, a.vehicle);
+  // The run as render and export-mcap read it: the rows run.json recorded, inside its time.
+  const Scenario scenario = cli::readRunScenario(a.run_dir);
+  const RunFlight run = runFlightOf(cli::readRunLog(a.run_dir, scenario), a.run_dir, a.vehicle);
   const FlightLog log = readFlightLog(a.log, log_options);
-  const FlightComparison c = compareFlights(run, log, comparisonOptions(a));
+  if (interrupt.load()) return interrupted();
+  std::cerr << "cosim: placing the log on the run's clock\n";
+  FlightComparison c;
+  try {
+    c = compareFlights(run, log, comparisonOptions(a), StopToken::untimed(&interrupt));
+  } catch (const AlignmentInterrupted&) {
+    return interrupted();
+  }
+  if (interrupt.load()) return interrupted();
   const std::filesystem::path dir = prepareOutputDir(out_dir, "compare");
   removeStaleResults(dir, {"compare.json", "compare.md", "compare.png", "compare.svg"});
   writeCompareReport(dir, CompareInputs{a.run_dir, &run, &log}, c);
+  for (const std::string& w : c.warnings) std::cerr << "cosim: warning: " << w << "\n";
   std::printf(
-      "real RMSE %.4f m, simulated %.4f m, ratio %.3f; time offset %.4f s (%s), start "
-      "offset [%.4f, %.4f, %.4f] m (%s)\nwritten: %s/compare.json, compare.md, "
-      "compare.png, compare.svg\n",
-      c.real_rmse_m, c.sim_rmse_m, c.real_rmse_m / c.sim_rmse_m, c.time_offset_s,
-      c.time_offset_fitted ? "fitted" : "given", c.start_offset_m.x(), c.start_offset_m.y(),
-      c.start_offset_m.z(), c.start_offset_fitted ? "fitted" : "not fitted", dir.string().c_str());
+      "alignment %s: real RMSE %.4f m, simulated %.4f m, ratio %.3f; time offset %.4f s (%s), "
+      "start offset [%.4f, %.4f, %.4f] m (%s); mean offset real - simulated [%.4f, %.4f, "
+      "%.4f] m\nwritten: %s/compare.json, compare.md, compare.png, compare.svg\n",
+      alignModeName(c.alignment), c.real_rmse_m, c.sim_rmse_m, c.ratio(), c.time_offset_s,
+      c.time_offset_fitted ? "fitted" : "not fitted", c.start_offset_m.x(), c.start_offset_m.y(),
+      c.start_offset_m.z(), c.start_offset_fitted ? "fitted" : "not fitted", c.mean_offset_m.x(),
+      c.mean_offset_m.y(), c.mean_offset_m.z(), dir.string().c_str());
+  return 0;
 }
 
 }  // namespace
@@ -77,9 +99,9 @@ void addCompareRealCommand(CLI::App& app, CommandContext& ctx) {
       "compare-real",
       "Compare a real flight's log with a cosim run of the same reference: the log (CSV with\n"
       "t,x,y,z and optional ref_x,ref_y,ref_z, or a Crazyflie uSD-card binary log) is placed on\n"
-      "the run's clock by least squares (and in its frame when the run's reference is relative),\n"
-      "then both flights' RMSE against the run's reference over the reference's duration. Writes\n"
-      "compare.json, compare.md, compare.png and compare.svg. See docs/compare_real.md.");
+      "the run's clock by least squares (and in its frame as --align says), then both flights'\n"
+      "RMSE against the run's reference over the reference's duration, at every alignment.\n"
+      "Writes compare.json, compare.md, compare.png and compare.svg. See docs/compare_real.md.");
   auto a = std::make_shared<CompareArgs>();
   cmd->add_option("run_dir", a->run_dir, "folder written by cosim run")->required();
   cmd->add_option("log", a->log, "real flight log: CSV or Crazyflie uSD binary")->required();
@@ -95,17 +117,17 @@ void addCompareRealCommand(CLI::App& app, CommandContext& ctx) {
                   "a log without reference is matched to the simulated flight (flown, default) "
                   "or to the run's reference")
       ->check(CLI::IsMember({"flown", "reference"}));
-  cmd->add_option("--start-offset", a->start_offset,
-                  "fit a start position offset: auto (when the run's reference is relative or "
-                  "the log has a reference), fit, none")
-      ->check(CLI::IsMember({"auto", "fit", "none"}));
+  cmd->add_option("--align", a->align,
+                  "what is fitted and taken out of the real error: none, time, time+xy (and a "
+                  "horizontal offset), time+xyz (and a 3D offset); default time, or time+xy for "
+                  "a log with a reference")
+      ->check(CLI::IsMember({"none", "time", "time+xy", "time+xyz"}));
   auto* time_offset = cmd->add_option("--time-offset", a->time_offset,
                                       "log time minus run time in s, instead of fitting it")
                           ->check(numberIn(-1e9, 1e9));
   cmd->callback([a, time_offset, &ctx] {
     a->has_time_offset = time_offset->count() > 0;
-    compareReal(*a);
-    ctx.status = 0;
+    ctx.status = compareReal(*a);
   });
 }
 

@@ -1,7 +1,9 @@
 #pragma once
 // What `cosim compare-real` writes into its output folder, each file atomically:
-//   compare.json  the figures (real_rmse_m, sim_rmse_m, ratio = real / sim, time_offset_s,
-//                 start_offset_m [x, y, z], max errors, samples, the window) and what was fitted;
+//   compare.json  the figures (real_rmse_m, sim_rmse_m, ratio = real / sim, alignment,
+//                 time_offset_s, start_offset_m and mean_offset_m [x, y, z], rmse_by_alignment,
+//                 axis_lag_s, amplitude_ratio, warnings, max errors, samples, the window) and
+//                 what was fitted;
 //   compare.md    the same as a short table, with how the log was placed;
 //   compare.png / compare.svg  the figure (experiments/compare/compare_figure.h).
 #include <filesystem>

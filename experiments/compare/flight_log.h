@@ -7,7 +7,8 @@
 //   a Crazyflie uSD-card binary log (experiments/compare/usd_log_reader.h), whose position
 //   variables are picked by name (FlightLogOptions).
 // Bad input is an InputError naming the file and the line or byte: a bad header, a value that is
-// not a finite number, times that do not increase, fewer than kMinFlightLogSamples samples.
+// not a finite number, a coordinate beyond kMaxFlightCoordinateM, times that do not increase, fewer
+// than kMinFlightLogSamples samples.
 #include <string>
 #include <vector>
 

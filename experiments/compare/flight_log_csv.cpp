@@ -55,6 +55,15 @@ double finiteNumber(const std::vector<std::string>& row, std::size_t i, const st
   return v;
 }
 
+double coordinate(const std::vector<std::string>& row, std::size_t i, const std::string& file,
+                  std::size_t line, const char* column) {
+  const double v = finiteNumber(row, i, file, line, column);
+  if (std::abs(v) > kMaxFlightCoordinateM)
+    throw InputError(file, "line " + std::to_string(line) + ", column " + column,
+                     "'" + row[i] + "' m is further than 1e6 m from the origin: not a flight");
+  return v;
+}
+
 }  // namespace
 
 FlightLog parseFlightLogCsv(const std::string& text, const std::string& file) {
@@ -90,14 +99,14 @@ FlightLog parseFlightLogCsv(const std::string& text, const std::string& file) {
       throw InputError(file, "line " + std::to_string(line_number) + ", column t",
                        "time does not increase (" + row[c.t] + " after the previous row)");
     log.position.t.push_back(t);
-    log.position.p.emplace_back(finiteNumber(row, c.x, file, line_number, "x"),
-                                finiteNumber(row, c.y, file, line_number, "y"),
-                                finiteNumber(row, c.z, file, line_number, "z"));
+    log.position.p.emplace_back(coordinate(row, c.x, file, line_number, "x"),
+                                coordinate(row, c.y, file, line_number, "y"),
+                                coordinate(row, c.z, file, line_number, "z"));
     if (c.ref) {
       log.reference.t.push_back(t);
-      log.reference.p.emplace_back(finiteNumber(row, c.rx, file, line_number, "ref_x"),
-                                   finiteNumber(row, c.ry, file, line_number, "ref_y"),
-                                   finiteNumber(row, c.rz, file, line_number, "ref_z"));
+      log.reference.p.emplace_back(coordinate(row, c.rx, file, line_number, "ref_x"),
+                                   coordinate(row, c.ry, file, line_number, "ref_y"),
+                                   coordinate(row, c.rz, file, line_number, "ref_z"));
     }
   }
   if (log.position.size() < kMinFlightLogSamples)

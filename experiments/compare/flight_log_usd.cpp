@@ -48,6 +48,9 @@ SampledPath readPath(const UsdLog& log, int type, const std::vector<std::string>
       throw InputError(file, place, "time goes back in event " + log.eventTypes()[type].name);
     const Eigen::Vector3d p(s.values[0][k], s.values[1][k], s.values[2][k]);
     if (!p.allFinite()) throw InputError(file, place, "not a finite number in " + joined(names));
+    if (p.cwiseAbs().maxCoeff() > kMaxFlightCoordinateM)
+      throw InputError(file, place,
+                       joined(names) + " further than 1e6 m from the origin: not a flight");
     if (!path.t.empty() && s.t[k] == path.t.back()) continue;
     path.t.push_back(s.t[k]);
     path.p.push_back(p);

@@ -2,9 +2,10 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <cstdio>
+
 #include "core/input_error.h"
 #include "core/input_file.h"
-#include "sim/run_log_io.h"
 #include "sim/yaml_document.h"
 
 namespace cosim {
@@ -14,12 +15,6 @@ namespace {
 // A reference sample differs from another when it is further apart than this (m): the time
 // series is written with 9 significant digits.
 constexpr double kStillTolerance = 1e-7;
-
-void requireFile(const std::filesystem::path& p) {
-  std::error_code ec;
-  if (!std::filesystem::exists(p, ec))
-    throw InputError(p.string(), "", "missing (is this a folder written by cosim run?)");
-}
 
 // vehicles[i].reference.relative of the vehicle named `name` in the scenario the run saved
 // (read as a document, not loaded: only this key matters here). A vehicle without a name is
@@ -55,24 +50,35 @@ void findWindow(RunFlight& f) {
     if (first == r.size()) first = k - 1;
     last = k;
   }
-  if (first == r.size()) {  // never moves
-    f.window_begin = 0;
-    f.window_end = r.size();
-  } else {
-    f.window_begin = first;
-    f.window_end = last + 1;
-  }
+  if (first == r.size())
+    throw InputError(f.timeseries_file, "vehicle " + f.vehicle,
+                     "the reference never moves (a hover): there is no flight along it to "
+                     "compare, and no motion by which to place a log in time");
+  f.window_begin = first;
+  f.window_end = last + 1;
+}
+
+void requireFlightPositions(const RunFlight& f) {
+  for (const SampledPath* path : {&f.reference, &f.flown})
+    for (std::size_t k = 0; k < path->size(); ++k)
+      if (!path->p[k].allFinite() || path->p[k].cwiseAbs().maxCoeff() > kMaxFlightCoordinateM) {
+        char place[96];
+        std::snprintf(place, sizeof place, "vehicle %s, t = %.6g s", f.vehicle.c_str(), path->t[k]);
+        char what[160];
+        std::snprintf(what, sizeof what,
+                      "%s position [%.6g, %.6g, %.6g] m is not finite or beyond %.0e m",
+                      path == &f.reference ? "reference" : "flown", path->p[k].x(), path->p[k].y(),
+                      path->p[k].z(), kMaxFlightCoordinateM);
+        throw InputError(f.timeseries_file, place, what);
+      }
 }
 
 }  // namespace
 
-RunFlight readRunFlight(const std::filesystem::path& run_dir, const std::string& vehicle) {
+RunFlight runFlightOf(const RunLog& log, const std::filesystem::path& run_dir,
+                      const std::string& vehicle) {
   const std::filesystem::path series = run_dir / "timeseries.csv",
                               scenario = run_dir / "scenario.yaml";
-  requireFile(scenario);
-  requireFile(series);
-  RunLog log;
-  readTimeseriesCsv(series.string(), log);
   if (log.vehicles.empty()) throw InputError(series.string(), "", "no samples");
   std::string names;
   std::size_t index = log.vehicles.size();
@@ -99,6 +105,7 @@ RunFlight readRunFlight(const std::filesystem::path& run_dir, const std::string&
     f.flown.t.push_back(s.t);
     f.flown.p.push_back(s.pos);
   }
+  requireFlightPositions(f);
   findWindow(f);
   f.relative_reference = relativeReference(scenario, v.name);
   return f;

@@ -14,4 +14,12 @@ Eigen::Vector3d SampledPath::at(double time) const {
   return (1.0 - w) * p[lo] + w * p[hi];
 }
 
+SampledPath SampledPath::shifted(double origin) const {
+  SampledPath out;
+  out.t.reserve(t.size());
+  for (const double time : t) out.t.push_back(time - origin);
+  out.p = p;
+  return out;
+}
+
 }  // namespace cosim

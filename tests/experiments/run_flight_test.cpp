@@ -8,7 +8,6 @@
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
-#include "sim/run_log_io.h"
 #include "tests/support/test_files.h"
 
 namespace cosim::test {
@@ -16,7 +15,7 @@ namespace {
 
 // Two vehicles at 10 Hz for 3 s; b's reference stands still for 0.5 s, moves along x until
 // 2.0 s, then stands still again; a's never moves.
-std::filesystem::path teamRunFolder() {
+RunLog teamLog() {
   RunLog log;
   for (const char* name : {"a", "b"}) {
     VehicleLog v;
@@ -31,9 +30,12 @@ std::filesystem::path teamRunFolder() {
     }
     log.vehicles.push_back(v);
   }
+  return log;
+}
+
+std::filesystem::path teamRunFolder() {
   const auto dir = freshDir("run-flight");
   std::filesystem::create_directories(dir);
-  writeFileAtomically(dir / "timeseries.csv", timeseriesCsv(log));
   writeFileAtomically(dir / "scenario.yaml",
                       "vehicles:\n  - {name: a, model: cf2, start: [0, 0, 1], goal: [1, 0, 1]}\n"
                       "  - name: b\n    model: cf2\n    start: [0, 1, 1]\n"
@@ -43,7 +45,8 @@ std::filesystem::path teamRunFolder() {
 
 TEST(RunFlight, PicksTheNamedVehicleItsWindowAndItsRelativeReference) {
   const auto dir = teamRunFolder();
-  const RunFlight b = readRunFlight(dir, "b");
+  const RunLog log = teamLog();
+  const RunFlight b = runFlightOf(log, dir, "b");
   EXPECT_EQ(b.vehicle, "b");
   EXPECT_TRUE(b.relative_reference);
   ASSERT_EQ(b.reference.size(), 31u);
@@ -51,16 +54,43 @@ TEST(RunFlight, PicksTheNamedVehicleItsWindowAndItsRelativeReference) {
   EXPECT_NEAR(b.windowStart(), 0.5, 1e-9);
   EXPECT_NEAR(b.windowEnd(), 2.0, 1e-9);
   EXPECT_NEAR(b.flown.p[3].y(), 0.01, 1e-9);
-  const RunFlight a = readRunFlight(dir, "a");
-  EXPECT_FALSE(a.relative_reference);
-  EXPECT_EQ(a.window_begin, 0u);  // a reference that never moves: the whole run
-  EXPECT_EQ(a.window_end, 31u);
   try {
-    readRunFlight(dir, "");
+    runFlightOf(log, dir, "");
     ADD_FAILURE() << "a team run without --vehicle";
   } catch (const InputError& e) {
     EXPECT_EQ(std::string(e.what()),
               "command line: --vehicle: the run has several vehicles (a, b): name one");
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(RunFlight, AReferenceThatNeverMovesIsRefused) {
+  // a hovers: no window, and nothing by which to place a log in time.
+  const auto dir = teamRunFolder();
+  try {
+    runFlightOf(teamLog(), dir, "a");
+    ADD_FAILURE() << "a hover was compared";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              (dir / "timeseries.csv").string() +
+                  ": vehicle a: the reference never moves (a hover): there is no flight along it "
+                  "to compare, and no motion by which to place a log in time");
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(RunFlight, APositionOf1e308MetresIsRefusedNamingItsTime) {
+  const auto dir = teamRunFolder();
+  RunLog log = teamLog();
+  log.vehicles[1].samples[12].pos.z() = 1e308;
+  try {
+    runFlightOf(log, dir, "b");
+    ADD_FAILURE() << "1e308 m was compared";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("timeseries.csv: vehicle b, t = 1.2 s: flown position "
+                                         "[0.7, 0.01, 1e+308] m is not finite or beyond 1e+06 m"),
+              std::string::npos)
+        << e.what();
   }
   std::filesystem::remove_all(dir);
 }
