@@ -56,8 +56,7 @@ TEST_F(CompareReal, AHorizontalOffsetIsReportedByDefaultAndFittedWhenAsked) {
                        "(x -0.2"),
             std::string::npos)
       << r.err;
-  EXPECT_NE(r.err.find("is above 0.02 m: it is in the real error"), std::string::npos)
-      << r.err;
+  EXPECT_NE(r.err.find("is above 0.02 m: it is in the real error"), std::string::npos) << r.err;
   r = compare(log, "--align time+xy");
   ASSERT_EQ(r.status, 0) << r.err;
   json = result();

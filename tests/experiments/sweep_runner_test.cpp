@@ -168,8 +168,7 @@ TEST_F(SweepRunnerTest, AMergeOfResultsFromTwoBuildsOfTheProgramSaysSo) {
   runSweepJobs(js, options(1));
   EXPECT_EQ(mergeSweepResults(spec_, js, root_ / "out").program_builds, 1u);
   // A rebuild (a new modification time), then job 1 runs again.
-  fs::last_write_time(root_ / "fake-cosim",
-                      fs::last_write_time(root_ / "fake-cosim") + std::chrono::seconds(10));
+  fs::last_write_time(root_ / "fake-cosim", fs::last_write_time(root_ / "fake-cosim") + std::chrono::seconds(10));
   fs::remove(sweepJobDir(root_ / "out", js[1], 2) / "result.json");
   runSweepJobs(js, options(1));
   EXPECT_EQ(mergeSweepResults(spec_, js, root_ / "out").program_builds, 2u);

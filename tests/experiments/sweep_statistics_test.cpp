@@ -69,7 +69,8 @@ TEST(SweepStatistics, GroupsPoolSeedsAndMetricsUseOkJobsOnly) {
   const std::string csv = sweepSummaryCsv(s);
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
             "scenario,planner.name,metric,jobs,n,mean,sd,median,ci95_low,ci95_high");
-  EXPECT_NE(csv.find("w.yaml,astar,planned_length_m,3,2,11,1.41421,11,10,12"), std::string::npos)
+  EXPECT_NE(csv.find("w.yaml,astar,planned_length_m,3,2,11,1.41421,11,10,12"),
+            std::string::npos)
       << csv;
 }
 
