@@ -8,16 +8,23 @@
 // vehicle; the effect rows fly crazyflie_lee with one effect switched off at a time: sensing and
 // estimation (mocap latency, EKF), the rotors' speed limit (and so the firmware's capping), rotor
 // drag, motor lag. RMSE and max error as `cosim run` reports them: the true position against the
-// reference over the reference's duration.
+// reference over the reference's duration. Beside them, how the flight follows the reference
+// from its true start (t = 0): its lag and amplitude ratio per axis
+// (experiments/compare/axis_tracking.h, as compare-real reports them), and its RMSE when the start
+// is fitted instead (the reference shifted in time by least squares,
+// experiments/compare/reference_alignment.h): the part of the error that is lag alone.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <limits>
 #include <sstream>
 
 #include "control/crazyflie_platform.h"
 #include "control/piecewise_polynomial_reference.h"
 #include "core/atomic_file.h"
 #include "core/json_writer.h"
+#include "experiments/compare/axis_tracking.h"
+#include "experiments/compare/reference_alignment.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "render/comparison_chart.h"
@@ -87,7 +94,39 @@ struct Row {
   std::string controller;
   double timescale = 1.0, peak_speed = 0.0, rmse = 0.0, max_error = 0.0;
   RunEnd end_reason = RunEnd::Running;
+  AxisTracking axes;  // against the reference from its true start
+  // The best start of the reference (s after the true one, >= 0: the flight begins at t = 0) and
+  // the RMSE there; NaN if the flight ended before the reference did.
+  double fitted_start = std::numeric_limits<double>::quiet_NaN();
+  double rmse_start_fitted = std::numeric_limits<double>::quiet_NaN();
 };
+
+// Lag and amplitude per axis, and the RMSE with the reference's start fitted, of `v`'s flight
+// over the reference's duration.
+void followTheReference(Row& row, const VehicleLog& v, double reference_end) {
+  std::vector<double> t;
+  std::vector<Eigen::Vector3d> reference;
+  SampledPath flown;
+  for (const LogSample& x : v.samples) {
+    if (!flown.t.empty() && x.t <= flown.t.back()) continue;
+    flown.t.push_back(x.t);
+    flown.p.push_back(x.pos);
+    if (x.t <= reference_end) {
+      t.push_back(x.t);
+      reference.push_back(x.ref_pos);
+    }
+  }
+  if (t.size() < kMinWindowLogSamples || flown.size() < 2) return;
+  row.axes = axisTracking(t, reference, flown);
+  AlignmentProblem start;
+  start.s = t;
+  start.target = reference;
+  start.log = &flown;
+  if (searchedOffsets(start).empty()) return;
+  const Alignment fitted = fitAlignment(start);
+  row.fitted_start = fitted.time_offset;
+  row.rmse_start_fitted = fitted.rms;
+}
 
 Row fly(const Variant& v, double timescale, const Options& options) {
   const Scenario s = studyScenario(v, timescale, options.seed);
@@ -112,6 +151,7 @@ Row fly(const Variant& v, double timescale, const Options& options) {
   row.max_error = m.max_error_m;
   for (const LogSample& x : log.vehicles[0].samples)
     if (x.t <= reference_end) row.peak_speed = std::max(row.peak_speed, x.ref_vel.norm());
+  followTheReference(row, log.vehicles[0], reference_end);
   return row;
 }
 
@@ -119,6 +159,45 @@ const Row& find(const std::vector<Row>& rows, const std::string& label, double t
   for (const Row& r : rows)
     if (r.controller == label && std::abs(r.timescale - ts) < 1e-9) return r;
   throw std::logic_error("no row " + label);
+}
+
+// [x, y, z], null where not a number.
+std::string xyzJson(const Eigen::Vector3d& v) {
+  std::string s = "[";
+  for (int a = 0; a < 3; ++a) {
+    if (a) s += ", ";
+    s += JsonObject::number(v[a]);
+  }
+  s += "]";
+  return s;
+}
+
+std::string orDash(double v, int decimals) {
+  return std::isfinite(v) ? fixed(v, decimals) : std::string("-");
+}
+
+// How each controller's flight follows the reference from its true start.
+std::string followingTable(const std::vector<Row>& rows, const std::vector<double>& scales,
+                           const std::vector<const Variant*>& controllers) {
+  std::ostringstream md;
+  md << "\nHow the flights follow the reference from its true start (t = 0): lag per axis "
+        "(best time shift of the flight against the reference, s; positive: late), amplitude "
+        "ratio per axis (least-squares gain of the lag-corrected flight on the reference; 1: "
+        "full size), and the RMSE with the reference's start fitted (shifted by least squares, "
+        "by the start shown; never before t = 0, where the flight begins, so 0 means the flight "
+        "is not late as a whole) beside the RMSE against its true start. The figure-eight is "
+        "flat: z has neither lag nor amplitude.\n\n| timescale | controller | lag x, y [s] | "
+        "amplitude x, y | fitted start [s] | RMSE start fitted / true start [m] |\n"
+        "|---|---|---|---|---|---|\n";
+  for (double ts : scales)
+    for (const Variant* c : controllers) {
+      const Row& r = find(rows, c->label, ts);
+      md << "| " << fixed(ts, 1) << " | " << c->label << " | " << orDash(r.axes.lag_s.x(), 3)
+         << ", " << orDash(r.axes.lag_s.y(), 3) << " | " << orDash(r.axes.amplitude_ratio.x(), 3)
+         << ", " << orDash(r.axes.amplitude_ratio.y(), 3) << " | " << orDash(r.fitted_start, 3)
+         << " | " << orDash(r.rmse_start_fitted, 4) << " / " << fixed(r.rmse, 4) << " |\n";
+    }
+  return md.str();
 }
 
 std::string markdown(const std::vector<Row>& rows, const std::vector<double>& scales,
@@ -161,6 +240,7 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<double>& sc
         "position integral (Kpos_I = 0) it holds up 2.3 g more than the vehicle weighs and settles "
         "(1 - 37/39.3) "
         "9.81 / 7 = 8.2 cm high, an offset that dominates the error at low speed.\n";
+  md << followingTable(rows, scales, controllers);
   if (effects.empty()) {
     md << "\nFigure: crazyflie-figure8.png (RMSE against peak speed per controller). Rows in "
           "crazyflie-figure8.json.\n";
@@ -217,7 +297,11 @@ Report crazyflieFigure8(const Options& options) {
         .add("peak_speed_mps", r.peak_speed)
         .add("rmse_m", r.rmse)
         .add("max_error_m", r.max_error)
-        .add("end_reason", runEndName(r.end_reason));
+        .add("end_reason", runEndName(r.end_reason))
+        .raw("lag_s", xyzJson(r.axes.lag_s))
+        .raw("amplitude_ratio", xyzJson(r.axes.amplitude_ratio))
+        .add("fitted_start_s", r.fitted_start)
+        .add("rmse_start_fitted_m", r.rmse_start_fitted);
     json_rows.push_back(j);
     csv += r.controller + "," + fixed(r.timescale, 2) + "," + JsonObject::number(r.peak_speed) +
            "," + JsonObject::number(r.rmse) + "," + JsonObject::number(r.max_error) + "\n";

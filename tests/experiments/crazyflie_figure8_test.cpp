@@ -3,7 +3,9 @@
 // CF_MASS adds a height offset.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <regex>
 
 #include "tests/support/cosim_command.h"
@@ -39,6 +41,22 @@ TEST(CrazyflieFigure8, QuickStudyWritesItsFilesAndErrorGrowsWithSpeed) {
   const double unconfigured = rmse(json, "lee/firmware_default_mass", "1");
   EXPECT_GT(unconfigured, 0.06) << json;
   EXPECT_GT(unconfigured, 2.0 * slow);
+  // How it follows the reference from its true start, per axis: a lag of a few hundredths of a
+  // second at most and nearly the reference's size in x and y; the flat figure's z has neither.
+  const nlohmann::json rows = nlohmann::json::parse(json)["rows"];
+  ASSERT_FALSE(rows.empty());
+  const nlohmann::json& lee = rows[0];
+  ASSERT_EQ(lee["controller"], "crazyflie_lee");
+  for (int a = 0; a < 2; ++a) {
+    ASSERT_TRUE(lee["lag_s"][a].is_number()) << lee;
+    EXPECT_LT(std::abs(lee["lag_s"][a].get<double>()), 0.1) << lee;
+    EXPECT_NEAR(lee["amplitude_ratio"][a].get<double>(), 1.0, 0.1) << lee;
+  }
+  EXPECT_TRUE(lee["lag_s"][2].is_null()) << lee;
+  EXPECT_TRUE(lee["amplitude_ratio"][2].is_null()) << lee;
+  // A fitted start can only lower the RMSE.
+  EXPECT_LE(lee["rmse_start_fitted_m"].get<double>(), lee["rmse_m"].get<double>() + 1e-12);
+  EXPECT_GE(lee["fitted_start_s"].get<double>(), 0.0);
   std::filesystem::remove_all(dir);
 }
 
