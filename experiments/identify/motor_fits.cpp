@@ -49,6 +49,40 @@ double steadyRotorSpeed(const IdentificationResult& r, double pwm, double vbat) 
 
 namespace {
 
+// The ARX rows of every timed motor log at delay d: X = [omega[k], 1, v, v^2], y = omega[k+1];
+// with `fig_v`, every tenth sample's (v, omega) for the figure too.
+void arxRows(const std::vector<IdentificationLog>& logs, std::size_t d, Eigen::MatrixXd& X,
+             Eigen::VectorXd& y, std::vector<double>* fig_v, std::vector<double>* fig_w) {
+  std::vector<std::array<double, 4>> rows;
+  for (const auto& log : logs) {
+    if (log.t.empty() || !hasMotorColumns(log)) continue;
+    const double dt = log.samplePeriod();
+    // In flight only: a motor starting on the ground is not yet the first-order lag.
+    const std::vector<bool> airborne = airborneRows(log);
+    for (int i = 0; i < 4; ++i) {
+      const auto& w = log.column(kOmega[i]);
+      const auto& pwm = log.column(kPwm[i]);
+      for (std::size_t k = d; k + 1 < log.rows; ++k) {
+        if (std::abs(log.t[k + 1] - log.t[k] - dt) > 0.2 * dt || !(pwm[k - d] > 0.0) ||
+            !(w[k] > 0.0) || !airborne[k] || !airborne[k + 1])
+          continue;
+        const double v = motorVoltage(pwm[k - d], log.column("vbat")[k - d]);
+        rows.push_back({w[k], v, v * v, w[k + 1]});
+        if (fig_v && k % 10 == 0) {
+          fig_v->push_back(v);
+          fig_w->push_back(w[k]);
+        }
+      }
+    }
+  }
+  X.resize(static_cast<Eigen::Index>(rows.size()), 4);
+  y.resize(static_cast<Eigen::Index>(rows.size()));
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    X.row(static_cast<Eigen::Index>(k)) << rows[k][0], 1.0, rows[k][1], rows[k][2];
+    y[static_cast<Eigen::Index>(k)] = rows[k][3];
+  }
+}
+
 // A flight's rotor speeds never settle for long: the map is fitted with the motor's lag, a
 // first-order ARX model per sample pair (one time constant, delay d samples):
 //   omega[k+1] = a omega[k] + b0 + b1 v[k-d] + b2 v[k-d]^2, and omega_ss = b / (1 - a)
@@ -58,36 +92,6 @@ bool fitFlightMap(const std::vector<IdentificationLog>& logs, const IdentifyOpti
                   IdentificationResult& r, std::vector<double>& fig_v, std::vector<double>& fig_w) {
   double best_mse = std::numeric_limits<double>::infinity();
   LinearFit best;
-  const auto rowsFor = [&](std::size_t d, Eigen::MatrixXd& X, Eigen::VectorXd& y, bool keep) {
-    std::vector<std::array<double, 5>> rows;
-    for (const auto& log : logs) {
-      if (log.t.empty() || !hasMotorColumns(log)) continue;
-      const double dt = log.samplePeriod();
-      // In flight only: a motor starting on the ground is not yet the first-order lag.
-      const std::vector<bool> airborne = airborneRows(log);
-      for (int i = 0; i < 4; ++i) {
-        const auto& w = log.column(kOmega[i]);
-        const auto& pwm = log.column(kPwm[i]);
-        for (std::size_t k = d; k + 1 < log.rows; ++k) {
-          if (std::abs(log.t[k + 1] - log.t[k] - dt) > 0.2 * dt || !(pwm[k - d] > 0.0) ||
-              !(w[k] > 0.0) || !airborne[k] || !airborne[k + 1])
-            continue;
-          const double v = motorVoltage(pwm[k - d], log.column("vbat")[k - d]);
-          rows.push_back({w[k], v, v * v, w[k + 1], w[k]});
-          if (keep && k % 10 == 0) {
-            fig_v.push_back(v);
-            fig_w.push_back(w[k]);
-          }
-        }
-      }
-    }
-    X.resize(static_cast<Eigen::Index>(rows.size()), 4);
-    y.resize(static_cast<Eigen::Index>(rows.size()));
-    for (std::size_t k = 0; k < rows.size(); ++k) {
-      X.row(k) << rows[k][0], 1.0, rows[k][1], rows[k][2];
-      y[k] = rows[k][3];
-    }
-  };
   std::size_t best_d = 0;
   double dt = 0.0;
   for (const auto& log : logs)
@@ -97,7 +101,7 @@ bool fitFlightMap(const std::vector<IdentificationLog>& logs, const IdentifyOpti
   for (std::size_t d = 0; d <= max_d; ++d) {
     Eigen::MatrixXd X;
     Eigen::VectorXd y;
-    rowsFor(d, X, y, false);
+    arxRows(logs, d, X, y, nullptr, nullptr);
     if (X.rows() < 50) continue;
     const LinearFit f = fitLinear(X, y);
     if (f.ssr / static_cast<double>(f.n) < best_mse) {
@@ -109,7 +113,7 @@ bool fitFlightMap(const std::vector<IdentificationLog>& logs, const IdentifyOpti
   if (!std::isfinite(best_mse) || !(best.beta[0] < 1.0)) return false;
   Eigen::MatrixXd X;
   Eigen::VectorXd y;
-  rowsFor(best_d, X, y, true);
+  arxRows(logs, best_d, X, y, &fig_v, &fig_w);
   const double a = best.beta[0], gain = 1.0 - a;
   const char* units[3] = {"rad/s", "rad/s/V", "rad/s/V^2"};
   for (int i = 0; i < 3; ++i) {
