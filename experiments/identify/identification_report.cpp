@@ -97,6 +97,17 @@ void checkIdentificationOutput(const std::filesystem::path& yaml_path) {
     throw InputError(yaml_path.string(), "--out", "the output must be a .yaml file");
   checkOurs(yaml_path, kIdentifiedYamlHeader);
   checkOurs(sibling(yaml_path, ".md"), kMarkdownHeader);
+  // The figures carry no mark of their own: they are ours to replace only beside our FILE.yaml.
+  std::error_code ec;
+  if (std::filesystem::exists(yaml_path, ec)) return;
+  for (const char* fit : {"motor_map", "thrust", "motor_lag", "mass", "rotor_drag", "imu_noise",
+                          "attitude_roll", "attitude_pitch"})
+    for (const char* ext : {".png", ".svg"})
+      if (const auto fig = sibling(yaml_path, std::string(".") + fit + ext);
+          std::filesystem::exists(fig, ec))
+        throw InputError(fig.string(), "--out",
+                         "exists beside no FILE.yaml of cosim identify's; remove it or choose "
+                         "another --out");
 }
 
 std::string identificationYaml(const IdentificationResult& r, const IdentifyOptions& o) {
