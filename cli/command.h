@@ -22,5 +22,6 @@ void addExportMjcfCommand(CLI::App& app, CommandContext& ctx);
 void addExportMcapCommand(CLI::App& app, CommandContext& ctx);
 void addPlanBenchCommand(CLI::App& app, CommandContext& ctx);
 void addCompareRealCommand(CLI::App& app, CommandContext& ctx);
+void addIdentifyCommand(CLI::App& app, CommandContext& ctx);
 
 }  // namespace cosim::cli

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   cosim::cli::addExportMcapCommand(app, ctx);
   cosim::cli::addPlanBenchCommand(app, ctx);
   cosim::cli::addCompareRealCommand(app, ctx);
+  cosim::cli::addIdentifyCommand(app, ctx);
 
   try {
     app.parse(argc, argv);

@@ -27,6 +27,9 @@ struct QuadrotorParams {
   double max_rotor_speed = 1100.0;      // rad/s
   double time_constant_up = 0.0125;     // s, spin-up
   double time_constant_down = 0.025;    // s, spin-down
+  // A pure delay between a rotor's command and the start of its lag (an ESC's processing and
+  // PWM period); 0 in models/ unless <numeric name="motor_delay">, or vehicles[i].airframe.
+  double motor_delay = 0.0;  // s
   // Rotor aerodynamics (sim/rotor_aerodynamics.h), RotorS / PX4 motor-model form: each rotor
   // adds a drag force -w c_d v_perp and a rolling moment -w c_r v_perp, with v_perp the rotor's
   // air-relative velocity perpendicular to its axis.

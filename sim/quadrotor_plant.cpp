@@ -16,7 +16,11 @@ QuadrotorPlant::QuadrotorPlant(const VehicleHandles& vehicle, const SensorSettin
                                std::uint64_t seed, std::size_t index)
     : vehicle_(&vehicle), gravity_(vehicle.params.gravity), rotors_(vehicle.params) {
   if (s.imu.present) {
-    imu_ = std::make_unique<ImuSensor>(s.imu, sensorSeed(seed, index, 0));
+    // The vehicle's airframe file may hold its own identified noise densities.
+    ImuSettings imu = s.imu;
+    if (vehicle.gyro_noise) imu.noise.gyro_noise = *vehicle.gyro_noise;
+    if (vehicle.accel_noise) imu.noise.accel_noise = *vehicle.accel_noise;
+    imu_ = std::make_unique<ImuSensor>(imu, sensorSeed(seed, index, 0));
     imu_due_.period = imu_due_.next = 1.0 / s.imu.rate;
   }
   if (s.position.present) {

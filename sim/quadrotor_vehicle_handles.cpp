@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/input_error.h"
+#include "sim/airframe_file.h"
 
 namespace cosim {
 
@@ -81,6 +82,12 @@ void readQuadrotorHandles(const mjModel* m, const VehicleSpec& v, VehicleHandles
       !(m->numeric_data[m->numeric_adr[sep] + 1] > 0))
     throw InputError(file, "<custom>",
                      "needs <numeric name=\"separation\" data=\"RADIUS HEIGHT\"> (m, both > 0)");
+  q.motor_delay = 0.0;
+  if (mj_name2id(m, mjOBJ_NUMERIC, (p + "motor_delay").c_str()) >= 0)
+    q.motor_delay = rotorConstant(m, p, "motor_delay", 0.0, 1.0, file);
+  applyAirframeFile(v.airframe, q);
+  if (v.airframe.gyro_noise) h.gyro_noise = *v.airframe.gyro_noise;
+  if (v.airframe.accel_noise) h.accel_noise = *v.airframe.accel_noise;
   q.separation_radius = m->numeric_data[m->numeric_adr[sep]];
   q.separation_height = m->numeric_data[m->numeric_adr[sep] + 1];
   q.min_thrust = q.thrust_coefficient * q.min_rotor_speed * q.min_rotor_speed;

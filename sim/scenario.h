@@ -12,6 +12,7 @@
 #include "planning/grid/occupancy_grid.h"
 #include "planning/team/separation_ellipsoid.h"
 #include "planning/world/world.h"
+#include "sim/airframe_file.h"
 #include "sim/camera_kind.h"
 #include "sim/disturbance_settings.h"
 #include "sim/model_error.h"
@@ -26,7 +27,7 @@ class PiecewisePolynomialReference;  // control/piecewise_polynomial_reference.h
 struct VehicleSpec {
   std::string name;   // unique; prefixes every MuJoCo name of the vehicle ("uav1/base")
   std::string model;  // a model name from models/ (cf2, quad_1500g, ...) or a URDF path
-  std::filesystem::path model_file;  // resolved
+  std::filesystem::path model_file;           // resolved
   VehicleKind kind = VehicleKind::Quadrotor;  // a ground robot (URDF) plans in the plane, z = 0
   Eigen::Vector3d start = Eigen::Vector3d::Zero();
   // Points to visit after the start; the last one is the goal.
@@ -36,6 +37,10 @@ struct VehicleSpec {
   // gets this mass and the model's inertia scaled by the same ratio (constant radii of
   // gyration); what a flight controller believes is its own business (docs/crazyflie.md).
   double mass = 0.0;
+  // vehicles[i].airframe (sim/airframe_file.h): identified airframe parameters that replace the
+  // model file's (empty file: none). Its motor_speed_coefficients [c0, c1, c2] are carried here
+  // for a motor model driven by PWM and battery voltage.
+  AirframeFile airframe;
   // vehicles[i].reference (sim/scenario_reference.h): a given reference flown instead of a
   // planned path, placed (its timescale, and the start added with `relative`); then `waypoints`
   // holds its last point alone, the goal. Null: the vehicle is planned.
@@ -128,7 +133,7 @@ struct Scenario {
   std::optional<SeparationEllipsoid> planner_separation;
 
   TrajectoryMode trajectory_mode = TrajectoryMode::Waypoints;
-  ParamSet trajectory_params;                 // max_speed, switch_radius, ...
+  ParamSet trajectory_params;  // max_speed, switch_radius, ...
 
   std::string controller_name = "cascade";  // cascade | geometric | indi | dsl_pid | crazyflie_*
   // A controller section was written; without one a quadrotor team flies indi (run_pipeline.cpp).
@@ -141,9 +146,9 @@ struct Scenario {
 
   SimSettings sim;
   DisturbanceSettings disturbances;
-  SensorSettings sensors;        // what each quadrotor measures (default: ideal)
-  EstimatorSettings estimator;   // what turns the measurements into the controller's state
-  ModelError model_error;        // the flight software's belief against the simulated truth
+  SensorSettings sensors;       // what each quadrotor measures (default: ideal)
+  EstimatorSettings estimator;  // what turns the measurements into the controller's state
+  ModelError model_error;       // the flight software's belief against the simulated truth
   RenderSettings render;
 };
 

@@ -53,6 +53,8 @@ std::vector<std::filesystem::path> scenarioInputFiles(const std::string& text,
     for (const auto& v : vehicles) {
       if (const std::string ref = scalarText(member(member(v, "reference"), "file")); !ref.empty())
         files.push_back(relativeTo(dir, ref));
+      if (const std::string airframe = scalarText(member(v, "airframe")); !airframe.empty())
+        files.push_back(relativeTo(dir, airframe));
       const std::string model = scalarText(member(v, "model"));
       if (model.empty()) continue;
       VehicleKind kind = VehicleKind::Quadrotor;

@@ -1,6 +1,6 @@
 // Reading a scenario's `vehicles:` list (part of sim/scenario_loader.cpp): each vehicle's name,
 // model (a quadrotor from models/ or a ground robot's URDF), start, goal or waypoints, given
-// reference and mass.
+// reference, mass and airframe file.
 #include <cstdlib>
 #include <string>
 
@@ -42,7 +42,9 @@ std::string vehicleNameProblem(const std::string& name) {
 
 void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& key,
                  const std::filesystem::path& scenario_dir, Scenario& s) {
-  r.checkKeys(n, key, {"name", "model", "start", "goal", "waypoints", "yaw", "reference", "mass"});
+  r.checkKeys(
+      n, key,
+      {"name", "model", "start", "goal", "waypoints", "yaw", "reference", "mass", "airframe"});
   VehicleSpec v;
   v.name =
       n["name"] ? r.text(n["name"], key + ".name") : "uav" + std::to_string(s.vehicles.size() + 1);
@@ -82,6 +84,14 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
     if (v.kind == VehicleKind::GroundRobot)
       r.fail(n["mass"], key + ".mass", "mass applies to quadrotor models, not URDFs");
     v.mass = r.number(n["mass"], key + ".mass", 1e-4, 1e4);
+  }
+  if (n["airframe"]) {
+    if (v.kind == VehicleKind::GroundRobot)
+      r.fail(n["airframe"], key + ".airframe", "an airframe file applies to quadrotor models");
+    const std::filesystem::path p(r.text(n["airframe"], key + ".airframe"));
+    v.airframe = readAirframeFile(p.is_absolute() ? p : scenario_dir / p);
+    // vehicles[i].mass, when given, is the flown mass; else the identified one.
+    if (!n["mass"] && v.airframe.mass) v.mass = *v.airframe.mass;
   }
   s.vehicles.push_back(std::move(v));
 }

@@ -5,6 +5,7 @@
 #include <mujoco/mujoco.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,11 +18,13 @@ namespace cosim {
 // Where a vehicle lives inside the composed model.
 struct VehicleHandles {
   std::string name;
-  int body = -1;        // the vehicle's root body ("<name>/base")
-  int qpos_adr = -1;    // its free joint's qpos (x y z qw qx qy qz)
-  int qvel_adr = -1;    // its free joint's qvel (world linear, body angular)
+  int body = -1;           // the vehicle's root body ("<name>/base")
+  int qpos_adr = -1;       // its free joint's qpos (x y z qw qx qy qz)
+  int qvel_adr = -1;       // its free joint's qvel (world linear, body angular)
   std::vector<int> geoms;  // every geom of the vehicle (for contacts)
   QuadrotorParams params;  // read off the model: mass, inertia, rotors, limits, radius
+  // vehicles[i].airframe's IMU noise densities for this vehicle (unset: sensors.imu's).
+  std::optional<double> gyro_noise, accel_noise;
   // Ground robots (sim/urdf_vehicle.h): drive has the drive's servos (x, y, yaw of a holonomic
   // base; left and right wheel of a differential one); with a planar root, qpos_adr and
   // qvel_adr point at root_x, root_y, root_yaw; params has mass, radius (horizontal) and gravity.

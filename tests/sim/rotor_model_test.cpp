@@ -53,3 +53,24 @@ TEST(RotorModel, ThrustIsTheCoefficientTimesSpeedSquaredAndSpeedsStayInRange) {
   for (int k = 0; k < 2000; ++k) r.advance(1e-3);
   EXPECT_NEAR(r.speeds()[0], 1100.0, 1e-9);
 }
+
+TEST(RotorModel, AMotorDelayHoldsTheOldCommandForExactlyThatLongThenLagsAsWithout) {
+  QuadrotorParams p = iris();
+  p.motor_delay = 0.008;
+  RotorModel delayed(p);
+  RotorModel immediate(iris());
+  delayed.reset(Eigen::Vector4d::Constant(400.0));
+  immediate.reset(Eigen::Vector4d::Constant(400.0));
+  delayed.command(Eigen::Vector4d::Constant(900.0));
+  // 8 steps of 1 ms: the delayed rotor has not moved yet.
+  for (int k = 0; k < 8; ++k) delayed.advance(1e-3);
+  EXPECT_DOUBLE_EQ(delayed.speeds()[0], 400.0);
+  immediate.command(Eigen::Vector4d::Constant(900.0));
+  // From then on both follow the same lag, step for step.
+  for (int k = 0; k < 30; ++k) {
+    delayed.advance(1e-3);
+    immediate.advance(1e-3);
+  }
+  EXPECT_NEAR(delayed.speeds()[0], immediate.speeds()[0], 1e-9);
+  EXPECT_GT(delayed.speeds()[0], 800.0);
+}
