@@ -15,10 +15,19 @@ void LongRenderWarning::update(int done) {
 }
 
 void LongRenderWarning::update(int done, double elapsed_s) {
-  if (decided_ || done <= 0 || elapsed_s < kMeasureSeconds || !warn_) return;
+  if (decided_ || done <= 0 || !warn_) return;
+  // The rate is measured from the first frame on: the first one also pays for setting up (the
+  // off-screen contexts, ffmpeg), which would inflate the estimate of a long video.
+  if (first_done_ == 0) {
+    first_done_ = done;
+    first_elapsed_s_ = elapsed_s;
+    return;
+  }
+  const double measured = elapsed_s - first_elapsed_s_;
+  if (measured < kMeasureSeconds || done <= first_done_) return;
   decided_ = true;
-  const double per_frame = elapsed_s / done;
-  const double estimate = per_frame * total_;
+  const double per_frame = measured / (done - first_done_);
+  const double estimate = elapsed_s + per_frame * (total_ - done);
   if (estimate <= kWarnAboveSeconds) return;
   char rate[32];
   std::snprintf(rate, sizeof rate, "%.3g", per_frame);

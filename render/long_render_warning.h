@@ -13,7 +13,7 @@ class LongRenderWarning {
  public:
   // Rendering estimated to take longer than this is announced.
   static constexpr double kWarnAboveSeconds = 600.0;
-  // The estimate waits for this much rendering, so that start-up costs do not dominate it.
+  // The estimate waits for this much rendering after the first frame.
   static constexpr double kMeasureSeconds = 2.0;
 
   // file: the video's name in the warning; total: its frames; warn: where the one line goes.
@@ -30,6 +30,8 @@ class LongRenderWarning {
   std::function<void(const std::string&)> warn_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   bool decided_ = false;  // warned, or found short enough
+  int first_done_ = 0;    // the frames done at the first update, and when
+  double first_elapsed_s_ = 0.0;
 };
 
 }  // namespace cosim

@@ -145,7 +145,7 @@ TEST_F(NamesAreData, EverySvgIsWellFormedXmlAndShowsTheNames) {
   int count = 0;
   for (const auto& f : fs::directory_iterator(run_ / "figures"))
     if (f.path().extension() == ".svg") {
-      files += " " + shellQuoted(f.path().string());
+      files.append(" ").append(shellQuoted(f.path().string()));
       ++count;
     }
   EXPECT_EQ(count, 3) << "error, top and side";

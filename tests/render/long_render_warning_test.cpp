@@ -18,13 +18,15 @@ struct Said {
   }
 };
 
-// The probe's settings: 198 817 frames at 0.21 s a frame are 41 752 s, 11 h 35 min.
+// The probe's settings: 198 817 frames at 0.21 s a frame are 41 752 s, 11 h 35 min. The rate
+// is measured from the first frame on (the first pays for setting up).
 TEST(LongRenderWarning, AVideoOfHoursIsAnnouncedOnceWithItsFramesAndTime) {
   Said said;
   LongRenderWarning w("video.mp4", 198817, said.sink());
-  w.update(5, 1.0);  // too early to estimate: nothing yet
+  w.update(1, 0.5);  // the first frame, slow: not part of the rate
+  w.update(5, 1.5);  // too early to estimate: nothing yet
   EXPECT_TRUE(said.lines.empty());
-  w.update(10, 2.1);
+  w.update(11, 2.6);  // 10 frames in 2.1 s since the first
   ASSERT_EQ(said.lines.size(), 1u);
   EXPECT_EQ(said.lines[0],
             "video.mp4 has 198817 frames: at the 0.21 s a frame measured so far, rendering it "
@@ -37,12 +39,14 @@ TEST(LongRenderWarning, AVideoOfHoursIsAnnouncedOnceWithItsFramesAndTime) {
 TEST(LongRenderWarning, AVideoOfMinutesSaysNothing) {
   Said said;
   LongRenderWarning w("video.mp4", 2000, said.sink());
-  w.update(20, 2.0);  // 0.1 s a frame: 200 s in all, under the 10 minutes
+  w.update(1, 0.1);
+  w.update(21, 2.1);  // 0.1 s a frame: 200 s in all, under the 10 minutes
   w.update(2000, 200.0);
   EXPECT_TRUE(said.lines.empty());
-  // Just over the limit: 601 s.
+  // Just over the limit: 2.1 s + 5989 frames x 0.1 s = 601 s.
   LongRenderWarning over("video_chase.mp4", 6010, said.sink());
-  over.update(20, 2.0);
+  over.update(1, 0.1);
+  over.update(21, 2.1);
   ASSERT_EQ(said.lines.size(), 1u);
   EXPECT_NE(said.lines[0].find("about 10 min 01 s"), std::string::npos) << said.lines[0];
 }
