@@ -9,6 +9,7 @@
 #include "planning/planner_registry.h"
 #include "run/navigation_driver.h"
 #include "run/quadrotor_team_planning.h"
+#include "run/run_pilots.h"
 #include "run/run_setup.h"
 #include "run/scenario_planning.h"
 #include "sim/yaml_document.h"
@@ -35,11 +36,13 @@ void checkPlanners(const Scenario& s, PlannerUse use) {
   makePlanner(s.planner_name, params, "key planner.name");
 }
 
-// The quadrotors' controller, built once with their gains as the run builds it after planning:
-// a misspelt or out-of-range gain is found before a planner spends its time limit (20 s of
-// rrt_star), not after. No gain's valid range depends on the airframe, so the default one serves.
-void checkQuadrotorController(const Scenario& s) {
+// The controllers' gains, read as the run reads them after planning: a misspelt or out-of-range
+// gain is found before a planner spends its time limit (20 s of rrt_star), not after. The
+// quadrotors' controller is built once (no gain's valid range depends on the airframe, so the
+// default one serves); the ground robots' gains are read as either drive reads them.
+void checkControllers(const Scenario& s) {
   const RunSetup setup = resolveRun(s, false);
+  if (!setup.robots.empty()) checkGroundControllerGains(setup.robot_sections.controller.gains);
   if (setup.quadrotors.empty()) return;
   const ControllerSection& c = setup.quadrotor_sections.controller;
   ParamSet gains = c.gains;
@@ -49,7 +52,7 @@ void checkQuadrotorController(const Scenario& s) {
 }  // namespace
 
 void checkRunPlanners(const Scenario& s) {
-  checkQuadrotorController(s);
+  checkControllers(s);
   const auto single = [&s](const std::string& name, ParamSet p, const std::string& key) {
     if (name.empty()) return;
     p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);  // read by planVehicle

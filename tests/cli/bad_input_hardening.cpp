@@ -273,6 +273,12 @@ std::vector<BadInput> hardeningBadInputs() {
        kWorld + kVehicle + "planner: {name: rrt_star, time_limit: 20}\n" +
            "controller: {name: cascade, gains: {pos_kp: 1000}}\n",
        "", 2, "line 5, key controller.gains.pos_kp: 'pos_kp' = 1000 is outside [0, 100]"},
+      {"ground_gain_misspelt_before_planning", "run {in} --no-video --out {dir}/new",
+       robotScenario("omni_base") + "planner: {name: astar, resolution: 0.5}\n" +
+           "controller: {gains: {k_positoin: 1}}\n",
+       "", 2,
+       "line 4, key controller.gains.k_positoin: unknown parameter 'k_positoin' for "
+       "controller.gains (ground robots) (did you mean 'k_position'?"},
       // A believed mass of 0 or below silently meant the airframe's; 1e-300 was taken.
       {"controller_mass_zero", "run {in} --no-video --out {dir}/new",
        withPlanner("controller: {name: crazyflie_lee, gains: {mass: 0}}\n"), "", 2,
