@@ -5,12 +5,12 @@
 #include "cli/interrupt_flag.h"
 #include "cli/planner_list.h"
 #include "core/atomic_file.h"
+#include "core/input_error.h"
+#include "core/json_writer.h"
 #include "core/output_files.h"
+#include "core/stop_request.h"
 #include "run/scenario_checks.h"
 #include "run/scenario_planning.h"
-#include "core/input_error.h"
-#include "core/stop_request.h"
-#include "core/json_writer.h"
 
 namespace cosim::cli {
 
@@ -38,7 +38,8 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
       std::cout << plannerListText();
       return;
     }
-    if (a->scenario.empty()) throw InputError("command line", "plan", "a scenario file is required");
+    if (a->scenario.empty())
+      throw InputError("command line", "plan", "a scenario file is required");
     installInterruptFlag();
     // An earlier plan goes first; a new folder only once the scenario and its planner passed
     // their checks (scenario_checks.h).
@@ -50,7 +51,7 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     // A planner ended by the stop request says so; a request that came after it returned is an
     // interrupt all the same.
     if (plan.status == PlannerStatus::Stopped || stopRequested()) {
-      std::cerr << "cosim: interrupted; " << dir.string() << " holds no plan\n";
+      std::cerr << "cosim: interrupted; " << printableText(dir.string()) << " holds no plan\n";
       ctx.status = 1;
       return;
     }
@@ -74,7 +75,7 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     for (const auto& [k, v] : plan.counters) j.add(k, v);
     writeFileAtomically(dir / "path.csv", csv);
     writeFileAtomically(dir / "plan.json", j.str() + "\n");
-    std::cout << "plan: " << dir.string() << "\n  " << s.planner_name << ": "
+    std::cout << "plan: " << printableText(dir.string()) << "\n  " << s.planner_name << ": "
               << (plan.success ? "path of " + std::to_string(plan.path.length()) + " m"
                                : "no path (" + plan.message + ")")
               << ", " << plan.time_ms << " ms\n";

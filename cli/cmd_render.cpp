@@ -59,7 +59,7 @@ void renderRun(const RenderArgs& a, CommandContext& ctx) {
   checkOutputPath(out, a.out.empty() ? "run folder" : "--out", a.frames);
   RunLog log = readRunLog(dir, s);
   if (interrupt.load()) {
-    std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
+    std::cerr << "cosim: interrupted; " << printableText(out.string()) << " was not written\n";
     ctx.status = 1;
     return;
   }
@@ -75,14 +75,14 @@ void renderRun(const RenderArgs& a, CommandContext& ctx) {
                                       a.frames ? VideoFormat::PngSequence : VideoFormat::Mp4,
                                       !a.quiet, &interrupt);
     if (frames == 0) {  // SIGINT/SIGTERM: ffmpeg was stopped and its partial output deleted
-      std::cerr << "cosim: interrupted; " << out.string() << " was not written\n";
+      std::cerr << "cosim: interrupted; " << printableText(out.string()) << " was not written\n";
       ctx.status = 1;
       return;
     }
     std::cout << "frames: " << frames << " at " << s.render.fps << " fps (" << s.render.speedup
               << "x simulated time)\n";
   }
-  std::cout << "rendered: " << out.string() << "\n";
+  std::cout << "rendered: " << printableText(out.string()) << "\n";
   ctx.status = 0;
 }
 

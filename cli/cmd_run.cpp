@@ -8,6 +8,7 @@
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
 #include "cli/run_console.h"
+#include "core/input_error.h"
 #include "core/output_dir_lock.h"
 #include "core/output_files.h"
 #include "run/run_files.h"
@@ -79,15 +80,18 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     const RunSummary s = executeRun(scenario, request);
     console.finish();
     if (s.outcome == RunOutcome::Interrupted) {
-      std::cerr << "cosim: interrupted; " << request.out_dir.string() << " holds no finished run\n";
+      std::cerr << "cosim: interrupted; " << printableText(request.out_dir.string())
+                << " holds no finished run\n";
       ctx.status = 1;
       return;
     }
     // metrics.json's top level: for a team, the whole team's figures.
-    std::cout << "run: " << request.out_dir.string() << "\n"
+    // The folder's name is the user's bytes: control characters escaped (core/input_error.h).
+    std::cout << "run: " << printableText(request.out_dir.string()) << "\n"
               << "  " << runSummaryLine(s.metrics_json.json()) << "\n";
-    if (s.outcome == RunOutcome::TaskFailed) std::cerr << "cosim: " << s.message << "\n";
-    std::cout << runPagesLine(request.out_dir) << "\n";
+    if (s.outcome == RunOutcome::TaskFailed)
+      std::cerr << "cosim: " << printableText(s.message) << "\n";
+    std::cout << printableText(runPagesLine(request.out_dir)) << "\n";
     ctx.status = s.exitStatus();
   });
 }

@@ -2,6 +2,8 @@
 
 #include <iostream>
 
+#include "core/input_error.h"
+
 namespace cosim::cli {
 
 RunObserver RunConsole::observer() {
@@ -21,9 +23,9 @@ void RunConsole::show(const RunEvent& e) {
   // Anything else ends the bar in progress first, so that its line is not run into.
   finish();
   if (e.kind == RunEventKind::Warning)
-    std::cerr << "cosim: warning: " << e.text << "\n";
+    std::cerr << "cosim: warning: " << printableText(e.text) << "\n";
   else if (e.kind == RunEventKind::Message && progress_)
-    std::cerr << "cosim: " << e.text << std::endl;
+    std::cerr << "cosim: " << printableText(e.text) << std::endl;
 }
 
 }  // namespace cosim::cli

@@ -4,9 +4,9 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
+#include "control/piecewise_polynomial_reference.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
-#include "control/piecewise_polynomial_reference.h"
 #include "core/json_reading.h"
 #include "sim/run_log_io.h"
 
@@ -64,8 +64,12 @@ LogBounds logBoundsFor(const Scenario& s) {
 }  // namespace
 
 Scenario readRunScenario(const std::filesystem::path& dir) {
-  const std::string yaml = readText(dir / "scenario.yaml");
-  return parseScenario(yaml, recordedRun(dir).scenario_file);
+  const std::filesystem::path file = dir / "scenario.yaml";
+  const std::string yaml = readText(file);
+  // Its errors name this file, whose lines they count; its relative paths were written for the
+  // original's folder; its references are the copies the run kept here.
+  const std::filesystem::path original = recordedRun(dir).scenario_file;
+  return parseRunFolderScenario(yaml, file.string(), original.parent_path(), dir);
 }
 
 RunLog readRunLog(const std::filesystem::path& dir, const Scenario& scenario) {

@@ -9,8 +9,10 @@
 
 namespace cosim::cli {
 
-// dir/scenario.yaml, its relative paths resolved where the original scenario file was (run.json).
-// Throws InputError naming the file when one is missing or malformed.
+// dir/scenario.yaml, its relative paths resolved where the original scenario file was (run.json),
+// each vehicle's reference read from the copy the run kept in `dir` (runReferenceCopyName).
+// Throws InputError naming the file (dir/scenario.yaml for its own defects) when one is missing
+// or malformed.
 Scenario readRunScenario(const std::filesystem::path& dir);
 
 // dir/timeseries.csv, path.csv and, if the scenario has moving obstacles and the file exists,

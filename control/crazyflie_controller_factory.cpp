@@ -11,6 +11,14 @@ namespace cosim {
 
 namespace {
 
+// controller.gains.mass (ctrlLee.mass, ctrlMel.mass), kg; absent: -1, the airframe's mass. A given
+// mass is a real vehicle's: from 10 g (a third of the 27 g Crazyflie 2.1, the lightest model) to
+// 100 kg. Zero or a negative value used to mean "the airframe's" silently, and 1e-300 was taken.
+double readBelievedMass(ParamSet& p) {
+  if (!p.has("mass")) return p.getDouble("mass", -1.0, -1.0, 100.0);
+  return p.getDouble("mass", 0.0393, 0.01, 100.0);
+}
+
 // x and y share one gain; z has its own (the firmware's defaults are symmetric in x and y).
 CrazyflieLeeGains readLee(ParamSet& p) {
   CrazyflieLeeGains g;
@@ -22,13 +30,13 @@ CrazyflieLeeGains readLee(ParamSet& p) {
   g.k_r = readHorizontalAndZ(p, "kr", g.k_r, 10.0);
   g.k_omega = readHorizontalAndZ(p, "komega", g.k_omega, 10.0);
   g.k_i = readHorizontalAndZ(p, "ki", g.k_i, 10.0);
-  g.mass = p.getDouble("mass", -1.0, -1.0, 100.0);
+  g.mass = readBelievedMass(p);
   return g;
 }
 
 CrazyflieMellingerGains readMellinger(ParamSet& p) {
   CrazyflieMellingerGains g;
-  g.mass = p.getDouble("mass", -1.0, -1.0, 100.0);
+  g.mass = readBelievedMass(p);
   g.mass_thrust = p.getDouble("mass_thrust", g.mass_thrust, 0.0, 1e7);
   g.kp_xy = p.getDouble("kp_xy", g.kp_xy, 0.0, 1e3);
   g.kd_xy = p.getDouble("kd_xy", g.kd_xy, 0.0, 1e3);

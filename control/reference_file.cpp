@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "control/sampled_reference.h"
+#include "core/decimal_text.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
 
@@ -45,9 +46,10 @@ std::vector<std::string> polynomialHeader() {
   return h;
 }
 
-// A user's field in a message: quoted, at most 40 characters.
+// A user's field in a message: quoted, at most 40 characters, control and non-ASCII bytes
+// escaped (the file named may be any readable file, binary or not).
 std::string shown(const std::string& field) {
-  return "'" + (field.size() > 40 ? field.substr(0, 40) + "..." : field) + "'";
+  return quotedExcerpt(field, 40);
 }
 
 std::string numberText(double v) {
@@ -63,10 +65,11 @@ std::string place(std::size_t line, const std::string& column = "") {
 double number(const std::string& field, const std::string& file, std::size_t line,
               const std::string& column) {
   if (field.empty()) throw InputError(file, place(line, column), "empty value");
-  char* end = nullptr;
-  const double v = std::strtod(field.c_str(), &end);
-  if (end != field.c_str() + field.size())
-    throw InputError(file, place(line, column), shown(field) + " is not a number");
+  // strtod alone would take "0x10" as 16 and "inf" or "nan" as numbers.
+  if (!isDecimalNumberText(field))
+    throw InputError(file, place(line, column),
+                     shown(field) + " is not a decimal number (such as 1.5 or -2e-3)");
+  const double v = std::strtod(field.c_str(), nullptr);
   if (!std::isfinite(v))  // an overflow is inf; an underflow (ERANGE too) is a fine 0
     throw InputError(file, place(line, column), shown(field) + " is not a finite number");
   if (std::abs(v) > kMaxMagnitude)

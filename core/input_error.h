@@ -37,4 +37,14 @@ class InputError : public std::runtime_error {
 // over several lines nor drive the terminal. Other bytes (UTF-8 file names) stay as they are.
 std::string printableText(const std::string& text);
 
+// A short excerpt of a user's bytes for a message: at most `max_chars` of them, then "..." if
+// there were more, in single quotes, with control bytes and bytes from 0x80 up shown as \xNN
+// (a binary file's first line quoted whole would be a screenful of noise and could drive the
+// terminal; a 1 MB value given on the command line would be a megabyte of message).
+std::string quotedExcerpt(const std::string& text, std::size_t max_chars = 40);
+
+// The place of a `--set KEY=VALUE` assignment in a message: "--set " and the assignment, cut
+// after 80 characters ("..." then): an error must not echo a megabyte given as a value.
+std::string setAssignmentPlace(const std::string& assignment);
+
 }  // namespace cosim

@@ -64,7 +64,7 @@ double ParamSet::getDouble(const std::string& name, double fallback, double lo, 
     char* end = nullptr;
     v = std::strtod(e->value.c_str(), &end);
     if (e->value.empty() || end == e->value.c_str() || *end != '\0' || !std::isfinite(v))
-      fail(name, "'" + name + "' must be a number, got '" + e->value + "'");
+      fail(name, "'" + name + "' must be a number, got " + quotedExcerpt(e->value, 80));
   }
   if (v < lo || v > hi)
     fail(name, "'" + name + "' = " + formatNumber(v) + " is outside [" + formatNumber(lo) + ", " +
@@ -81,7 +81,7 @@ int ParamSet::getInt(const std::string& name, int fallback, int lo, int hi) {
     char* end = nullptr;
     v = std::strtol(e->value.c_str(), &end, 10);
     if (e->value.empty() || *end != '\0' || v > 2147483647L || v < -2147483647L)
-      fail(name, "'" + name + "' must be a whole number, got '" + e->value + "'");
+      fail(name, "'" + name + "' must be a whole number, got " + quotedExcerpt(e->value, 80));
   }
   if (v < lo || v > hi)
     fail(name, "'" + name + "' = " + std::to_string(v) + " is outside [" + std::to_string(lo) +
@@ -101,7 +101,7 @@ bool ParamSet::getBool(const std::string& name, bool fallback) {
     else if (s == "false" || s == "0" || s == "no" || s == "off")
       v = false;
     else
-      fail(name, "'" + name + "' must be true or false, got '" + e->value + "'");
+      fail(name, "'" + name + "' must be true or false, got " + quotedExcerpt(e->value, 80));
   }
   effective_[name] = v ? "true" : "false";
   return v;
@@ -117,7 +117,7 @@ std::string ParamSet::getString(const std::string& name, const std::string& fall
   if (!allowed.empty() && std::find(allowed.begin(), allowed.end(), v) == allowed.end()) {
     std::string list;
     for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-    fail(name, "'" + name + "' = '" + v + "' is not one of: " + list);
+    fail(name, "'" + name + "' = " + quotedExcerpt(v, 80) + " is not one of: " + list);
   }
   effective_[name] = v;
   return v;

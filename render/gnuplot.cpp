@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "core/atomic_file.h"
+#include "core/display_text.h"
 #include "core/temporary_name.h"
 #include "render/video_encoder.h"
 
@@ -47,8 +48,30 @@ std::string gnuplotNumber(double v) {
 
 std::string gnuplotString(const std::string& s) {
   std::string q = "'";
-  for (char c : s) q += (c == '\'') ? std::string("''") : std::string(1, c);
+  for (char c : displayText(s)) q += (c == '\'') ? std::string("''") : std::string(1, c);
   return q + "'";
+}
+
+std::string wellFormedSvgText(const std::string& svg) {
+  static const std::string kCdataOpen = "<![CDATA[", kCdataClose = "]]>";
+  std::string out;
+  out.reserve(svg.size());
+  for (std::size_t at = 0; at < svg.size();) {
+    const std::size_t cdata = svg.find(kCdataOpen, at), close = svg.find(kCdataClose, at);
+    if (close == std::string::npos) {
+      out.append(svg, at, std::string::npos);
+      break;
+    }
+    if (cdata < close) {  // a CDATA section is copied whole: its "]]>" ends it
+      const std::size_t end = close + kCdataClose.size();
+      out.append(svg, at, end - at);
+      at = end;
+      continue;
+    }
+    out.append(svg, at, close - at).append("]]&gt;");
+    at = close + kCdataClose.size();
+  }
+  return out;
 }
 
 std::string plotBoth(const std::string& base, int width, int height, const std::string& body) {
@@ -80,6 +103,19 @@ void runGnuplot(const std::string& script, const std::filesystem::path& work_dir
     msg << in.rdbuf();
     throw std::runtime_error("gnuplot failed (is gnuplot-nox installed?): " +
                              msg.str().substr(0, 600));
+  }
+  // Every SVG the script made, its text made well-formed before anyone publishes it.
+  for (const auto& entry : std::filesystem::directory_iterator(work_dir)) {
+    if (entry.path().extension() != ".svg" || !entry.is_regular_file()) continue;
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    const std::string fixed = wellFormedSvgText(text.str());
+    if (fixed.size() == text.str().size()) continue;
+    in.close();
+    std::ofstream out(entry.path(), std::ios::binary | std::ios::trunc);
+    out << fixed;
+    if (!out) throw std::runtime_error("cannot write " + entry.path().string());
   }
 }
 

@@ -7,7 +7,8 @@
 namespace cosim {
 
 // Runs gnuplot on `script` with `work_dir` as its working directory (data files referenced by
-// relative names live there). Throws std::runtime_error with gnuplot's messages on failure.
+// relative names live there); the SVG files it made there are then made well-formed
+// (wellFormedSvgText). Throws std::runtime_error with gnuplot's messages on failure.
 void runGnuplot(const std::string& script, const std::filesystem::path& work_dir);
 
 // A scratch folder for one figure, beside its outputs (`out_base`'s folder): gnuplot runs in it,
@@ -33,8 +34,18 @@ class GnuplotScratch {
 // A number for a gnuplot script or data file: six significant digits (printf's %.6g).
 std::string gnuplotNumber(double v);
 
-// A string literal for a gnuplot script (single-quoted; gnuplot doubles inner quotes).
+// A string literal for a gnuplot script: single-quoted, in which gnuplot reads every character
+// as itself but the quote (doubled); the terminals are noenhanced, so '@', '^', '_', '{', '}' and
+// '&' are plain text too. Control bytes and bytes that are not UTF-8 (a file name may hold any)
+// are written as the text \xNN: a line break would end the script's line, and neither is
+// allowed in the SVG's XML.
 std::string gnuplotString(const std::string& s);
+
+// gnuplot's SVG with its text made well-formed XML: the svg terminal escapes '<' and '&' in
+// labels but not '>', and "]]>" may not stand in XML character data (a vehicle named q"x'y]]>
+// made error.svg unreadable); outside CDATA sections it becomes "]]&gt;". runGnuplot applies it
+// to every SVG its script writes.
+std::string wellFormedSvgText(const std::string& svg);
 
 // The terminal lines that make `base`.png and `base`.svg from the same plot commands:
 // `plotBoth(base, width, height, body)` is body run once per terminal.

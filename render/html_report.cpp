@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/atomic_file.h"
+#include "core/display_text.h"
 #include "core/json_flatten.h"
 #include "render/metric_card.h"
 #include "render/metric_groups.h"
@@ -12,7 +13,9 @@ namespace cosim {
 
 std::string htmlEscape(const std::string& s) {
   std::string r;
-  for (char c : s) {
+  // A scenario's file name may hold control bytes and bytes that are not UTF-8 (the page says
+  // utf-8): shown as \xNN.
+  for (char c : displayText(s)) {
     switch (c) {
       case '&':
         r += "&amp;";

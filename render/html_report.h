@@ -23,7 +23,8 @@ struct HtmlReport {
 // Writes dir/index.html atomically. Throws std::runtime_error if metrics_json is malformed.
 void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& report);
 
-// Escapes &, <, >, " and ' for HTML text and attributes.
+// Escapes &, <, >, " and ' for HTML text and attributes; control bytes and bytes that are not
+// UTF-8 become the text \xNN (core/display_text.h).
 std::string htmlEscape(const std::string& s);
 
 }  // namespace cosim

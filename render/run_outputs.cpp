@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <memory>
 #include <optional>
 
 #include "core/input_error.h"
 #include "render/figures.h"
 #include "render/html_report.h"
 #include "render/log_lookup.h"
+#include "render/long_render_warning.h"
 #include "render/ordered_frame_workers.h"
 #include "render/progress_bar.h"
 
@@ -39,9 +42,17 @@ int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, Camera
                    const std::filesystem::path& out, VideoFormat format, bool progress,
                    const std::atomic<bool>* interrupt, int workers) {
   std::optional<ProgressBar> bar;
+  std::optional<LongRenderWarning> warning;
   const FrameProgress show = [&](int done, int total) {
     if (!bar) bar.emplace("rendering " + out.filename().string(), total, progress);
     bar->update(done);
+    // Said even without progress (--quiet): it is a warning.
+    if (!warning)
+      warning.emplace(out.filename().string(), total, [&bar](const std::string& text) {
+        bar.reset();  // ends the bar's line first
+        std::cerr << "cosim: warning: " << text << std::endl;
+      });
+    warning->update(done);
   };
   return renderRunVideo(renderer, settings, camera, out, format, show, interrupt, workers);
 }
@@ -99,10 +110,14 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
   const auto say = [&](const std::string& what) {
     if (request.on_message) request.on_message(what);
   };
+  // The progress of a video's frames, and the warning if it will take long (LongRenderWarning).
   const auto frames_of = [&request](const std::filesystem::path& file) -> FrameProgress {
-    if (!request.on_progress) return nullptr;
-    return [&request, what = "rendering " + file.filename().string()](int done, int total) {
-      request.on_progress(what, done, total);
+    if (!request.on_progress && !request.on_warning) return nullptr;
+    std::shared_ptr<LongRenderWarning> warning;
+    return [&request, warning, name = file.filename().string()](int done, int total) mutable {
+      if (request.on_progress) request.on_progress("rendering " + name, done, total);
+      if (!warning) warning = std::make_shared<LongRenderWarning>(name, total, request.on_warning);
+      warning->update(done);
     };
   };
   const RenderSettings& rs = scenario.render;

@@ -37,7 +37,8 @@ int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, Camera
                    const std::filesystem::path& out, VideoFormat format,
                    const FrameProgress& progress, const std::atomic<bool>* interrupt = nullptr,
                    int workers = 0);
-// The same with, if `progress`, a progress bar with the time left on stderr (render/progress_bar.h).
+// The same with, if `progress`, a progress bar with the time left on stderr
+// (render/progress_bar.h).
 int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, CameraKind camera,
                    const std::filesystem::path& out, VideoFormat format, bool progress,
                    const std::atomic<bool>* interrupt = nullptr, int workers = 0);
@@ -55,6 +56,9 @@ struct RunRenderRequest {
   // video.mp4"). Rendering itself prints nothing.
   std::function<void(const std::string& line)> on_message;
   std::function<void(const std::string& what, int done, int total)> on_progress;
+  // A warning for someone not following the progress: a video that will take long to render
+  // (render/long_render_warning.h). May be empty.
+  std::function<void(const std::string& text)> on_warning;
   // Polled between outputs and before every video frame (SIGINT/SIGTERM): once set, rendering
   // stops, the video being written is deleted and the rest is skipped.
   const std::atomic<bool>* interrupt = nullptr;
@@ -72,7 +76,8 @@ struct RenderedRun {
 RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, const RunLog& log,
                              const std::filesystem::path& dir, const RunRenderRequest& request);
 
-// "cosim run: <scenario> (<planner>, <controller> controller)": index.html's and viewer.html's title.
+// "cosim run: <scenario> (<planner>, <controller> controller)": index.html's and viewer.html's
+// title.
 std::string runReportTitle(const Scenario& scenario);
 
 // dir/index.html: the rendered files and the metrics table. failure: why the run failed its

@@ -27,12 +27,32 @@ void fill(std::string& page, const std::string& key, const std::string& value) {
   if (at != std::string::npos) page.replace(at, key.size(), value);
 }
 
-// Text inside <script> must not close it early: "</" becomes "<\/", the same in JSON strings
-// and in JavaScript string literals.
-std::string scriptSafe(std::string s) {
-  for (auto at = s.find("</"); at != std::string::npos; at = s.find("</", at + 3))
-    s.replace(at, 2, "<\\/");
-  return s;
+// JSON text made safe inside <script type="application/json">: the HTML parser reads a script's
+// text looking for "</script" and, after "<!--", for "<script" (which enters its double-escaped
+// state, where "</script>" no longer ends the element: the page went dead). "<", ">" and "&"
+// written as \u003c, \u003e and \u0026 leave it nothing to find; U+2028 and U+2029 (line
+// separators to older JavaScript) as \u2028 and \u2029. JSON's own syntax uses none of these
+// characters, so they occur only inside strings, where the escapes mean the same characters.
+std::string scriptSafeJson(const std::string& json) {
+  std::string out;
+  out.reserve(json.size());
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (c == '<')
+      out += "\\u003c";
+    else if (c == '>')
+      out += "\\u003e";
+    else if (c == '&')
+      out += "\\u0026";
+    else if (c == '\xe2' && i + 2 < json.size() && json[i + 1] == '\x80' &&
+             (json[i + 2] == '\xa8' || json[i + 2] == '\xa9')) {
+      out += json[i + 2] == '\xa8' ? "\\u2028" : "\\u2029";
+      i += 2;
+    } else {
+      out += c;
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -68,7 +88,7 @@ std::string viewerPage(const std::string& data_json, const ThreeJs& three) {
   fill(page, "/*@VIEWER_SCENE@*/", viewerSceneScript());
   fill(page, "/*@VIEWER@*/", viewerScript());
   fill(page, "/*@VIEWER_CONTROLS@*/", viewerControlsScript());
-  fill(page, "/*@RUN_DATA@*/", scriptSafe(data_json));
+  fill(page, "/*@RUN_DATA@*/", scriptSafeJson(data_json));
   return page;
 }
 

@@ -10,8 +10,10 @@
 namespace cosim {
 
 const std::vector<std::string> kRunResultNames = {
-    "metrics.json",         "index.html", "viewer.html", "timeseries.csv", "path.csv",
-    "moving_obstacles.csv", "final.png",  "video*.mp4",  "figures",        "frames_*",
+    "metrics.json", "index.html", "viewer.html", "timeseries.csv", "path.csv",
+    "moving_obstacles.csv", "final.png", "video*.mp4", "figures", "frames_*",
+    // The copies of the references flown (runReferenceCopyName).
+    "reference_*.csv",
     // A comparison with a real flight (cosim compare-real) was of the run this one replaces.
     "compare.*"};
 
@@ -24,6 +26,10 @@ void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario
   std::filesystem::remove(dir / "index.html", ignored);
 
   writeFileAtomically(dir / "scenario.yaml", scenario.effective_yaml);
+  // The references flown, as read: the run renders again after their files moved.
+  for (std::size_t i = 0; i < scenario.vehicles.size(); ++i)
+    if (const auto& text = scenario.vehicles[i].reference_text)
+      writeFileAtomically(dir / runReferenceCopyName(i), *text);
   // The rows of the logs, for cosim render to tell a complete log from one cut at a line
   // boundary, and how the run ended (only a run that diverged logs numbers that are not finite).
   long timeseries_rows = 0, path_rows = 0;
@@ -56,6 +62,7 @@ RenderedRun renderRunFiles(const WorldModel& world, const Scenario& scenario, co
   r.on_progress = [&report](const std::string& what, int done, int total) {
     report.progress(what, done, total);
   };
+  r.on_warning = [&report](const std::string& text) { report.warning(text); };
   return renderRunOutputs(world, scenario, log, request.out_dir, r);
 }
 

@@ -2,32 +2,46 @@
 
 #include <cmath>
 
+#include "control/controller_factory.h"
 #include "control/ground_feedback_linearization.h"
 #include "control/ground_velocity_tracker.h"
-#include "control/controller_factory.h"
 #include "control/piecewise_polynomial_reference.h"
 
 namespace cosim {
 
 namespace {
 
-// A holonomic base tracks its timed path with the velocity tracker; a differential drive with
-// feedback linearization about a point ahead of its axle.
-std::unique_ptr<GroundController> makeGroundController(ParamSet& gains, const VehicleHandles& h) {
+// The gains of each ground controller, as controller.gains gives them.
+GroundMotionLimits readGroundLimits(ParamSet& gains) {
   GroundMotionLimits limits;
-  limits.max_speed = h.drive.max_speed;
-  limits.max_yaw_rate = h.drive.max_yaw_rate;
   limits.max_acceleration = gains.getDouble("max_acceleration", 1.0, 1e-3, 100.0);
   limits.max_yaw_acceleration = gains.getDouble("max_yaw_acceleration", 4.0, 1e-3, 1000.0);
-  if (h.drive.kind == GroundDrive::Kind::Holonomic) {
-    GroundVelocityTrackerGains g;
-    g.k_position = gains.getDouble("k_position", g.k_position, 1e-3, 100.0);
-    g.k_yaw = gains.getDouble("k_yaw", g.k_yaw, 1e-3, 100.0);
-    return std::make_unique<GroundVelocityTracker>(limits, g);
-  }
+  return limits;
+}
+
+GroundVelocityTrackerGains readTrackerGains(ParamSet& gains) {
+  GroundVelocityTrackerGains g;
+  g.k_position = gains.getDouble("k_position", g.k_position, 1e-3, 100.0);
+  g.k_yaw = gains.getDouble("k_yaw", g.k_yaw, 1e-3, 100.0);
+  return g;
+}
+
+GroundFeedbackLinearizationParams readLinearizationGains(ParamSet& gains) {
   GroundFeedbackLinearizationParams p;
   p.b = gains.getDouble("b", p.b, 1e-3, 10.0);
   p.k = gains.getDouble("k", p.k, 1e-3, 100.0);
+  return p;
+}
+
+// A holonomic base tracks its timed path with the velocity tracker; a differential drive with
+// feedback linearization about a point ahead of its axle.
+std::unique_ptr<GroundController> makeGroundController(ParamSet& gains, const VehicleHandles& h) {
+  GroundMotionLimits limits = readGroundLimits(gains);
+  limits.max_speed = h.drive.max_speed;
+  limits.max_yaw_rate = h.drive.max_yaw_rate;
+  if (h.drive.kind == GroundDrive::Kind::Holonomic)
+    return std::make_unique<GroundVelocityTracker>(limits, readTrackerGains(gains));
+  GroundFeedbackLinearizationParams p = readLinearizationGains(gains);
   p.wheel_separation = h.drive.wheel_separation;
   return std::make_unique<GroundFeedbackLinearization>(limits, p);
 }
@@ -70,6 +84,13 @@ void buildQuadrotorPilots(const Scenario& s, const RunSetup& setup, QuadrotorPla
 }
 
 }  // namespace
+
+void checkGroundControllerGains(ParamSet gains) {
+  readGroundLimits(gains);
+  readTrackerGains(gains);
+  readLinearizationGains(gains);
+  gains.requireAllUsed("controller.gains (ground robots)");
+}
 
 RunPilots buildPilots(const Scenario& scenario, const RunSetup& setup, const WorldModel& world,
                       RunPlan& plan) {

@@ -7,6 +7,7 @@
 
 #include "control/flight_controller.h"
 #include "control/ground_controller.h"
+#include "core/param_set.h"
 #include "run/run_plan.h"
 #include "sim/aerial_pilot_step.h"
 #include "sim/ground_simulation.h"
@@ -20,6 +21,11 @@ struct RunPilots {
   std::vector<GroundPilot> robots;
   std::vector<VehiclePilot> quadrotors;
 };
+
+// The ground robots' controller.gains read as both drives read them (holonomic and differential:
+// which one a robot has is known once its model is built), so a gain neither takes, or a value
+// out of range, is bad input before planning. Throws InputError.
+void checkGroundControllerGains(ParamSet gains);
 
 // Controllers are built even when the plan cannot be driven, so that bad gains are bad input
 // whatever the planners found. Throws InputError for bad controller parameters. The pilots

@@ -2,12 +2,14 @@
 
 #include <sstream>
 
+#include "control/controller_factory.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/planner_registry.h"
 #include "run/navigation_driver.h"
 #include "run/quadrotor_team_planning.h"
+#include "run/run_pilots.h"
 #include "run/run_setup.h"
 #include "run/scenario_planning.h"
 #include "sim/yaml_document.h"
@@ -34,9 +36,23 @@ void checkPlanners(const Scenario& s, PlannerUse use) {
   makePlanner(s.planner_name, params, "key planner.name");
 }
 
+// The controllers' gains, read as the run reads them after planning: a misspelt or out-of-range
+// gain is found before a planner spends its time limit (20 s of rrt_star), not after. The
+// quadrotors' controller is built once (no gain's valid range depends on the airframe, so the
+// default one serves); the ground robots' gains are read as either drive reads them.
+void checkControllers(const Scenario& s) {
+  const RunSetup setup = resolveRun(s, false);
+  if (!setup.robots.empty()) checkGroundControllerGains(setup.robot_sections.controller.gains);
+  if (setup.quadrotors.empty()) return;
+  const ControllerSection& c = setup.quadrotor_sections.controller;
+  ParamSet gains = c.gains;
+  makeFlightController(c.name, gains, QuadrotorParams{}, c.drag_compensation);
+}
+
 }  // namespace
 
 void checkRunPlanners(const Scenario& s) {
+  checkControllers(s);
   const auto single = [&s](const std::string& name, ParamSet p, const std::string& key) {
     if (name.empty()) return;
     p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);  // read by planVehicle
@@ -75,7 +91,7 @@ std::string scenarioKeyPlace(const std::string& path, const std::vector<std::str
     if (key.compare(0, assigned.size(), assigned) == 0 &&
         (key.size() == assigned.size() || key[assigned.size()] == '.' ||
          key[assigned.size()] == '['))
-      return "--set " + *o + ", key " + key;
+      return setAssignmentPlace(*o) + ", key " + key;
   }
   // The file was loaded a moment ago: read it again to find the key's line.
   // (yaml-cpp's assignment would rebind the nodes, so the walk collects them instead.)
@@ -111,7 +127,7 @@ Scenario loadScenarioForPlan(const std::string& path, std::vector<std::string> o
   try {
     return loadCheckedScenario(path, overrides, PlannerUse::FirstVehicle);
   } catch (const InputError& e) {
-    if (e.place() != "--set " + assignment + ", key planner.name") throw;
+    if (e.place() != setAssignmentPlace(assignment) + ", key planner.name") throw;
     throw InputError(e.file(), "--planner " + planner, e.problem());
   }
 }

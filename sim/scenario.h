@@ -46,6 +46,9 @@ struct VehicleSpec {
   // holds its last point alone, the goal. Null: the vehicle is planned.
   std::shared_ptr<const PiecewisePolynomialReference> reference;
   std::filesystem::path reference_file;  // resolved
+  // The reference file's bytes as read: a run keeps a copy in its folder (runReferenceCopyName),
+  // so the run renders again after the original moved. Null without a reference.
+  std::shared_ptr<const std::string> reference_text;
   const Eigen::Vector3d& goal() const { return waypoints.back(); }
 };
 
@@ -117,7 +120,10 @@ struct AerialSections {
 };
 
 struct Scenario {
-  std::string file;            // as given, for messages
+  std::string file;  // as given, for messages
+  // Set for a run folder's scenario.yaml alone (parseRunFolderScenario): the folder, whose copy
+  // of each vehicle's reference file (runReferenceCopyName) is read instead of the original.
+  std::filesystem::path reference_copies_dir;
   std::string effective_yaml;  // the document after --set overrides (saved with each run)
   World world;
   GridMapSpec grid_map;                // world.grid_map; then world.bounds/obstacles come from it
@@ -159,6 +165,16 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
 // paths.
 Scenario parseScenario(const std::string& text, const std::string& file,
                        const std::vector<std::string>& overrides = {});
+
+// A run folder's scenario.yaml: `text`, read from `file` (the file messages name, with its
+// lines); relative paths resolve in `base_dir`, the folder of the scenario the run read, and
+// each vehicle's reference is the copy the run kept in `run_dir` when there is one.
+Scenario parseRunFolderScenario(const std::string& text, const std::string& file,
+                                const std::filesystem::path& base_dir,
+                                const std::filesystem::path& run_dir);
+
+// "reference_<i>.csv": the file in which a run keeps vehicle i's reference file.
+std::string runReferenceCopyName(std::size_t vehicle);
 
 // Where the bundled models live (COSIM_MODELS_DIR env var, else the source tree's models/).
 std::filesystem::path modelsDirectory();

@@ -18,8 +18,11 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
 }
 
 // parseScenario without placing errors at their --set assignments.
+// `dir`: where relative paths resolve; `reference_copies_dir`: see Scenario.
 static Scenario parseScenarioText(const std::string& text, const std::string& file,
-                                  const std::vector<std::string>& overrides) {
+                                  const std::vector<std::string>& overrides,
+                                  const std::filesystem::path& dir,
+                                  const std::filesystem::path& reference_copies_dir) {
   const YamlReader r(file);
   YAML::Node root = loadYamlDocument(text, file);
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
@@ -31,7 +34,7 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
   Scenario s;
   s.file = file;
   s.effective_yaml = YAML::Dump(root) + "\n";
-  const std::filesystem::path dir = std::filesystem::path(file).parent_path();
+  s.reference_copies_dir = reference_copies_dir;
   s.planner_params = ParamSet(file);
   s.trajectory_params = ParamSet(file);
   s.controller_gains = ParamSet(file);
@@ -52,10 +55,20 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
 Scenario parseScenario(const std::string& text, const std::string& file,
                        const std::vector<std::string>& overrides) {
   try {
-    return parseScenarioText(text, file, overrides);
+    return parseScenarioText(text, file, overrides, std::filesystem::path(file).parent_path(), {});
   } catch (const InputError& e) {
     throw placedAtOverride(e, file, overrides);
   }
+}
+
+Scenario parseRunFolderScenario(const std::string& text, const std::string& file,
+                                const std::filesystem::path& base_dir,
+                                const std::filesystem::path& run_dir) {
+  return parseScenarioText(text, file, {}, base_dir, run_dir);
+}
+
+std::string runReferenceCopyName(std::size_t vehicle) {
+  return "reference_" + std::to_string(vehicle) + ".csv";
 }
 
 }  // namespace cosim

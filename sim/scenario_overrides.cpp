@@ -22,7 +22,7 @@ std::string overrideBehind(const std::vector<std::string>& overrides, const std:
 }
 
 std::string overridePlace(const std::string& assignment, const std::string& key) {
-  return "--set " + assignment + ", key " + key;
+  return setAssignmentPlace(assignment) + ", key " + key;
 }
 
 InputError placedAtOverride(const InputError& e, const std::string& file,

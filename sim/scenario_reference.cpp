@@ -65,13 +65,21 @@ void readVehicleReference(const YamlReader& r, const YAML::Node& vehicle, const 
   ReferencePlacement placement;
   if (n["timescale"]) placement.timescale = r.number(n["timescale"], key + ".timescale", 1e-3, 1e3);
   if (n["relative"] && r.boolean(n["relative"], key + ".relative")) placement.offset = v.start;
+  // A run folder's scenario reads the copy its run kept (the original may have moved since).
+  if (!s.reference_copies_dir.empty()) {
+    const auto copy = s.reference_copies_dir / runReferenceCopyName(s.vehicles.size());
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(copy, ec)) v.reference_file = copy;
+  }
+  std::string text;
   try {
-    checkInputFile(v.reference_file.string(), kMaxReferenceFileBytes, "reference file");
+    text = readInputFile(v.reference_file.string(), kMaxReferenceFileBytes, "reference file");
   } catch (const InputError& e) {
     r.fail(n["file"], key + ".file", v.reference_file.string() + ": " + e.problem());
   }
   // A defect inside the file is reported at its own line.
-  const ReferenceFile read = readReferenceFile(v.reference_file.string());
+  const ReferenceFile read = parseReferenceText(text, v.reference_file.string());
+  v.reference_text = std::make_shared<const std::string>(std::move(text));
   auto placed =
       std::make_shared<const PiecewisePolynomialReference>(read.reference.placed(placement));
   if (placed->duration() > kMaxReferenceDuration)

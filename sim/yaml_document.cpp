@@ -78,6 +78,26 @@ class ValueCounter : public YAML::EventHandler {
   std::size_t values_ = 0;
 };
 
+// Stops the parser at the start of a second document ("---" after the first), building nothing.
+class SecondDocument : public YAML::EventHandler {
+ public:
+  struct Found {
+    YAML::Mark mark;
+  };
+  void OnDocumentStart(const YAML::Mark& m) override { throw Found{m}; }
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                       YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t,
+                  YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
 std::string tooManyValues() {
   return "the document holds more than " + std::to_string(kMaxYamlValues) +
          " values once its aliases are expanded (each use of an alias counts)";
@@ -93,12 +113,19 @@ YAML::Node loadYamlDocument(const std::string& text, const std::string& file) {
       YAML::Parser parser(in);
       ValueCounter counter;
       parser.HandleNextDocument(counter);
+      // yaml-cpp's Load reads the first document only: a second one would be silently ignored.
+      SecondDocument second;
+      parser.HandleNextDocument(second);
     }
     root = YAML::Load(text);
   } catch (const YAML::ParserException& e) {
     throw InputError(file, "line " + std::to_string(e.mark.line + 1), "malformed YAML: " + e.msg);
   } catch (const ValueCounter::TooMany& e) {
     throw InputError(file, "line " + std::to_string(e.mark.line + 1), tooManyValues());
+  } catch (const SecondDocument::Found& e) {
+    throw InputError(file, "line " + std::to_string(e.mark.line + 1),
+                     "a second YAML document (after '---'): a file holds one document; its "
+                     "contents would be ignored");
   }
   checkYamlStructure(root, file);
   return root;

@@ -52,8 +52,8 @@ double YamlReader::number(const YAML::Node& node, const std::string& key, double
   const std::string s = scalar(node, key);
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
-  if (s.empty() || *end != '\0') fail(node, key, "must be a number, got '" + s + "'");
-  if (!std::isfinite(v)) fail(node, key, "must be a finite number, got '" + s + "'");
+  if (s.empty() || *end != '\0') fail(node, key, "must be a number, got " + quotedExcerpt(s, 80));
+  if (!std::isfinite(v)) fail(node, key, "must be a finite number, got " + quotedExcerpt(s, 80));
   if (v < lo || v > hi) {
     std::ostringstream msg;
     msg << "= " << v << " is outside [" << lo << ", " << hi << "]";
@@ -66,7 +66,8 @@ long YamlReader::integer(const YAML::Node& node, const std::string& key, long lo
   const std::string s = scalar(node, key);
   char* end = nullptr;
   const long v = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || *end != '\0') fail(node, key, "must be a whole number, got '" + s + "'");
+  if (s.empty() || *end != '\0')
+    fail(node, key, "must be a whole number, got " + quotedExcerpt(s, 80));
   if (v < lo || v > hi)
     fail(node, key,
          "= " + s + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
@@ -77,7 +78,7 @@ bool YamlReader::boolean(const YAML::Node& node, const std::string& key) const {
   const std::string s = scalar(node, key);
   if (s == "true" || s == "yes" || s == "on") return true;
   if (s == "false" || s == "no" || s == "off") return false;
-  fail(node, key, "must be true or false, got '" + s + "'");
+  fail(node, key, "must be true or false, got " + quotedExcerpt(s, 80));
 }
 
 std::string YamlReader::text(const YAML::Node& node, const std::string& key) const {
@@ -87,7 +88,8 @@ std::string YamlReader::text(const YAML::Node& node, const std::string& key) con
 }
 
 Eigen::Vector3d YamlReader::vec3(const YAML::Node& node, const std::string& key) const {
-  if (!node.IsSequence() || node.size() != 3) fail(node, key, "must be a list of 3 numbers [x, y, z]");
+  if (!node.IsSequence() || node.size() != 3)
+    fail(node, key, "must be a list of 3 numbers [x, y, z]");
   Eigen::Vector3d v;
   for (int i = 0; i < 3; ++i) v[i] = number(node[i], key + "[" + std::to_string(i) + "]");
   return v;
@@ -105,8 +107,10 @@ struct PathStep {
 // "vehicles[0].goal" -> vehicles, [0], goal.
 std::vector<PathStep> parseOverridePath(const std::string& path, const std::string& assignment) {
   const auto bad = [&](const std::string& problem) {
-    return InputError("command line", "--set " + assignment, problem);
+    return InputError("command line", setAssignmentPlace(assignment), problem);
   };
+  // getline yields no empty field after a last '.': "vehicles[0].name." would set name.
+  if (!path.empty() && path.back() == '.') throw bad("empty key in path '" + path + "'");
   std::vector<PathStep> steps;
   std::stringstream parts(path);
   std::string shown;
@@ -144,25 +148,35 @@ std::string elementCount(std::size_t n) {
 
 }  // namespace
 
+std::string overridePathProblem(const std::string& path) {
+  try {
+    parseOverridePath(path, path);
+  } catch (const InputError& e) {
+    return e.problem();
+  }
+  return "";
+}
+
 void applyYamlOverride(YAML::Node& root, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
-    throw InputError("command line", "--set " + assignment, "expected key=value, e.g. planner.name=astar");
+    throw InputError("command line", setAssignmentPlace(assignment),
+                     "expected key=value, e.g. planner.name=astar");
   const std::string path = assignment.substr(0, eq);
   YAML::Node value;
   try {
     value = YAML::Load(assignment.substr(eq + 1));
   } catch (const YAML::Exception& e) {
-    throw InputError("command line", "--set " + path, "value is not valid YAML: " + e.msg);
+    throw InputError("command line", setAssignmentPlace(path), "value is not valid YAML: " + e.msg);
   }
   try {
     checkYamlStructure(value, "command line");
   } catch (const InputError& e) {
-    throw InputError("command line", "--set " + assignment, e.problem());
+    throw InputError("command line", setAssignmentPlace(assignment), e.problem());
   }
   const std::vector<PathStep> steps = parseOverridePath(path, assignment);
   const auto fail = [&](const std::string& problem) {
-    throw InputError("command line", "--set " + assignment, problem);
+    throw InputError("command line", setAssignmentPlace(assignment), problem);
   };
   // Walk the path, creating mappings for missing keys; list elements must exist. yaml-cpp nodes
   // are handles, so reassigning a child handle would rebind rather than write: collect the

@@ -42,4 +42,9 @@ class YamlReader {
 // Throws InputError naming the override if it is malformed.
 void applyYamlOverride(YAML::Node& root, const std::string& assignment);
 
+// Why `path` cannot be the key of an override ("a.b", "vehicles[0].goal"), or "" if it can:
+// the same rules applyYamlOverride applies, for keys checked before any scenario is read (a
+// sweep's `vary:`).
+std::string overridePathProblem(const std::string& path);
+
 }  // namespace cosim

@@ -4,8 +4,8 @@
 #include <map>
 #include <memory>
 
-#include "core/input_error.h"
 #include "core/atomic_file.h"
+#include "core/input_error.h"
 #include "core/output_files.h"
 #include "core/peak_memory.h"
 #include "core/stop_request.h"
@@ -26,18 +26,18 @@ ParamSet plannerParams(const std::vector<std::string>& sets, const std::string& 
   for (const std::string& s : sets) {
     const auto eq = s.find('=');
     if (eq == std::string::npos || eq == 0)
-      throw InputError("command line", "--set " + s, "expected key=value");
+      throw InputError("command line", setAssignmentPlace(s), "expected key=value");
     std::string key = s.substr(0, eq);
     const auto dot = key.find('.');
     if (dot != std::string::npos) {
       const std::string owner = key.substr(0, dot);
       if (std::find(planners.begin(), planners.end(), owner) == planners.end())
-        throw InputError("command line", "--set " + s,
+        throw InputError("command line", setAssignmentPlace(s),
                          "'" + owner + "' is not one of the planners given with --planner");
       if (owner != planner) continue;
       key = key.substr(dot + 1);
     }
-    p.set(key, s.substr(eq + 1), "--set " + s);
+    p.set(key, s.substr(eq + 1), setAssignmentPlace(s));
   }
   return p;
 }

@@ -6,13 +6,13 @@
 #include <map>
 #include <sstream>
 
-#include "run/scenario_checks.h"
 #include "core/atomic_file.h"
-#include "core/output_files.h"
-#include "experiments/sweep/generated_scenario.h"
 #include "core/input_error.h"
-#include "planning/planner_registry.h"
+#include "core/output_files.h"
 #include "core/stop_request.h"
+#include "experiments/sweep/generated_scenario.h"
+#include "planning/planner_registry.h"
+#include "run/scenario_checks.h"
 #include "sim/scenario.h"
 #include "sim/scenario_input_files.h"
 
@@ -87,6 +87,8 @@ std::string fingerprint(const std::string& scenario_text, const std::filesystem:
 
 // "line 3, key planner.step" names planner.step and planner, not planner.s.
 bool placeNamesKey(const std::string& place, const std::string& key) {
+  // An override refused before it reached a key: "--set vehicles[3].goal=...".
+  if (place.rfind("--set " + key + "=", 0) == 0) return true;
   const auto at = place.find("key " + key);
   if (at == std::string::npos) return false;
   const std::size_t end = at + 4 + key.size();

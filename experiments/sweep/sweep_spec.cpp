@@ -24,11 +24,15 @@ std::string overrideValue(const YAML::Node& n) {
   return e.c_str();
 }
 
-bool isScenarioKey(const std::string& key) {
+// Letters, digits, '_' and '.' (and, with `indexed`, the brackets of vehicles[0]); the form of
+// the brackets is overridePathProblem's to check.
+bool isScenarioKey(const std::string& key, bool indexed = false) {
   if (key.empty() || key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos)
     return false;
   for (char c : key)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.')) return false;
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.' ||
+          (indexed && (c == '[' || c == ']'))))
+      return false;
   return true;
 }
 
@@ -144,7 +148,11 @@ void readVariables(const YamlReader& r, const YAML::Node& vary, std::size_t jobs
     v.key = kv.first.Scalar();
     const std::string key = "vary." + v.key;
     v.place = r.place(kv.first, key);
-    if (!isScenarioKey(v.key)) r.fail(kv.first, key, "not a scenario key (e.g. planner.name)");
+    // The keys --set takes: a.b.c, with list elements as vehicles[0].goal.
+    if (!isScenarioKey(v.key, true))
+      r.fail(kv.first, key, "not a scenario key (e.g. planner.name, vehicles[0].goal)");
+    if (const std::string problem = overridePathProblem(v.key); !problem.empty())
+      r.fail(kv.first, key, problem);
     if (!seen.insert(v.key).second) r.fail(kv.first, key, "listed twice");
     const YAML::Node values = kv.second;
     if (values.IsSequence()) {

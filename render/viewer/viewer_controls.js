@@ -91,7 +91,9 @@
   function fromAddress() {
     var arg = function (key) {
       var m = new RegExp('(?:^|[#&])' + key + '=([^&]*)').exec(window.location.hash);
-      return m ? decodeURIComponent(m[1]) : null;
+      if (!m) return null;
+      // A malformed escape (#vehicle=%ZZ) throws URIError: such a part is ignored, not fatal.
+      try { return decodeURIComponent(m[1]); } catch (e) { return null; }
     };
     var named = D.vehicles.map(function (v) { return v.name; }).indexOf(arg('vehicle'));
     if (named >= 0) { T.follow = T.selected = named; pick.value = named; }

@@ -261,6 +261,47 @@ std::vector<BadInput> hardeningBadInputs() {
       {"render_log_row_at_1e9_s", "render {dir}/run --out {dir}/v.mp4 --quiet", "", "", 2,
        "timeseries.csv: line 3, column t: time 1000000000.000000 s is outside the run",
        runFolder("0,2,2,1,2,2,1,0,0,0,1,0,0,0,uav1\n1e9,3,3,1,3,3,1,0,0,0,1,0,0,0,uav1\n")},
+      // Small items of the third probe. Controller gains are checked before planning (they were
+      // read after a 20 s rrt_star search): bad input before the output folder is made.
+      {"controller_gain_misspelt_before_planning", "run {in} --no-video --out {dir}/new",
+       kWorld + kVehicle + "planner: {name: rrt_star, time_limit: 20}\n" +
+           "controller: {name: cascade, gains: {pos_kpp: 1}}\n",
+       "", 2,
+       "line 5, key controller.gains.pos_kpp: unknown parameter 'pos_kpp' for controller "
+       "'cascade' (did you mean 'pos_kp'?"},
+      {"controller_gain_out_of_range_before_planning", "run {in} --no-video --out {dir}/new",
+       kWorld + kVehicle + "planner: {name: rrt_star, time_limit: 20}\n" +
+           "controller: {name: cascade, gains: {pos_kp: 1000}}\n",
+       "", 2, "line 5, key controller.gains.pos_kp: 'pos_kp' = 1000 is outside [0, 100]"},
+      {"ground_gain_misspelt_before_planning", "run {in} --no-video --out {dir}/new",
+       robotScenario("omni_base") + "planner: {name: astar, resolution: 0.5}\n" +
+           "controller: {gains: {k_positoin: 1}}\n",
+       "", 2,
+       "line 4, key controller.gains.k_positoin: unknown parameter 'k_positoin' for "
+       "controller.gains (ground robots) (did you mean 'k_position'?"},
+      // A believed mass of 0 or below silently meant the airframe's; 1e-300 was taken.
+      {"controller_mass_zero", "run {in} --no-video --out {dir}/new",
+       withPlanner("controller: {name: crazyflie_lee, gains: {mass: 0}}\n"), "", 2,
+       "key controller.gains.mass: 'mass' = 0 is outside [0.01, 100]"},
+      {"controller_mass_negative", "run {in} --no-video --out {dir}/new",
+       withPlanner("controller: {name: crazyflie_mellinger, gains: {mass: -0.5}}\n"), "", 2,
+       "key controller.gains.mass: 'mass' = -0.5 is outside [0.01, 100]"},
+      {"controller_mass_1e_minus_300", "run {in} --no-video --out {dir}/new",
+       withPlanner("controller: {name: crazyflie_lee, gains: {mass: 1e-300}}\n"), "", 2,
+       "'mass' = 1e-300 is outside [0.01, 100]"},
+      // `..` was refused but a trailing dot set the key before it.
+      {"set_trailing_dot", "plan {in} --set 'vehicles[0].name.=x' --out {dir}/new", kValid, "", 2,
+       "--set vehicles[0].name.=x: empty key in path 'vehicles[0].name.'"},
+      // A value of 100 kB echoed whole in the message: the place and the value are cut short.
+      {"set_value_of_100_kb_not_echoed",
+       "plan {in} --set planner.resolution=" + std::string(100000, 'x') + " --out {dir}/new",
+       kValid, "", 2,
+       "--set planner.resolution=" + std::string(61, 'x') +
+           "..., key planner.resolution: 'resolution' must be a number, got '" +
+           std::string(80, 'x') + "...'"},
+      // yaml-cpp reads the first document: what followed '---' was silently ignored.
+      {"second_yaml_document", plan, kValid + "---\nvehicles: []\n", "", 2,
+       "scenario.yaml: line 5: a second YAML document (after '---')"},
       {"out_file_name_of_254_bytes",
        "grid-bench {in} {in2} --planner astar --out {dir}/" + std::string(250, 'x') + ".csv", map8,
        scen8, 0, "written:"},

@@ -134,6 +134,24 @@ TEST_F(SweepSpecTest, AnUnknownScenarioKeyInVaryIsBadInputAtItsLine) {
   EXPECT_NE(e.find("unknown key 'sed'"), std::string::npos) << e;
 }
 
+// --set takes vehicles[0].goal; vary: refused it as "not a scenario key".
+TEST_F(SweepSpecTest, VaryTakesTheIndexedKeysThatSetTakes) {
+  const SweepSpec s = parse(
+      "scenarios: [../scenarios/a.yaml]\nvary:\n  vehicles[0].goal: [[18, 18, 2], [18, 2, 2]]\n");
+  const auto jobs = expandSweepJobs(s, root_ / "out");
+  ASSERT_EQ(jobs.size(), 2u);
+  EXPECT_EQ(jobs[1].overrides, (std::vector<std::string>{"vehicles[0].goal=[18, 2, 2]"}));
+  EXPECT_NO_THROW(validateSweepJobs(s, jobs));
+  EXPECT_EQ(errorOf("scenarios: [../scenarios/a.yaml]\nvary:\n  vehicles[00].goal: [[1, 1, 1]]\n"),
+            "line 3, key vary.vehicles[00].goal | 'vehicles[00]': write the index without leading "
+            "zeros (vehicles[0])");
+  const std::string out_of_range =
+      errorOf("scenarios: [../scenarios/a.yaml]\nvary:\n  vehicles[3].goal: [[1, 1, 1]]\n");
+  EXPECT_EQ(out_of_range.substr(0, out_of_range.find(" | ")), "line 3, key vary.vehicles[3].goal")
+      << out_of_range;
+  EXPECT_NE(out_of_range.find("index 3 is out of range"), std::string::npos) << out_of_range;
+}
+
 TEST_F(SweepSpecTest, AnUnknownPlannerParameterIsBadInputAtItsLine) {
   const std::string e =
       errorOf("scenarios: [../scenarios/a.yaml]\nvary:\n  planner.stepp: [1, 2]\n");

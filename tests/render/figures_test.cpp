@@ -7,6 +7,7 @@
 
 #include "core/input_error.h"
 #include "render/comparison_chart.h"
+#include "render/gnuplot.h"
 #include "render_test_scene.h"
 
 using namespace cosim;
@@ -122,4 +123,21 @@ TEST(Figures, TeamPathFiguresShowFlownPathsAndTheirPlansOnlyWhenAsked) {
   EXPECT_NE(plans.find(">reference trajectory<"), std::string::npos);
   EXPECT_NE(plans.find("Top view: planned vs flown path"), std::string::npos);
   std::filesystem::remove_all(dir);
+}
+
+// gnuplot's svg terminal escapes '<' and '&' in text but not '>': a vehicle named q"x'y]]> made
+// "]]>" in character data, which XML forbids. CDATA sections keep their own "]]>".
+TEST(Figures, SvgTextIsMadeWellFormedAroundCdataSections) {
+  EXPECT_EQ(wellFormedSvgText("<text>q\"x'y]]> a&amp;b</text>"),
+            "<text>q\"x'y]]&gt; a&amp;b</text>");
+  EXPECT_EQ(wellFormedSvgText("<script><![CDATA[ if (a[0] > 1) {} ]]></script><text>]]></text>"),
+            "<script><![CDATA[ if (a[0] > 1) {} ]]></script><text>]]&gt;</text>");
+  EXPECT_EQ(wellFormedSvgText("<svg>no specials</svg>"), "<svg>no specials</svg>");
+}
+
+// A gnuplot string literal: single quotes doubled, everything else as itself but control bytes
+// and bytes that are not UTF-8 (a line break would end the script's line).
+TEST(Figures, GnuplotStringsQuoteAndEscapeTheUsersBytes) {
+  EXPECT_EQ(gnuplotString("q\"x'y \\ @^_{}&"), "'q\"x''y \\ @^_{}&'");
+  EXPECT_EQ(gnuplotString("a\nb\xff"), "'a\\x0ab\\xff'");
 }

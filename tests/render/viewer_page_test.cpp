@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 #include <set>
 
 #include "render_test_scene.h"
@@ -139,4 +140,23 @@ TEST(ViewerPage, WithoutThreeJsNothingIsWrittenAndTheReasonIsGiven) {
       << why;
   EXPECT_FALSE(std::filesystem::exists(dir / "viewer.html"));
   std::filesystem::remove_all(dir);
+}
+
+// The run's data sits in <script type="application/json">: a vehicle named <!--<script> put the
+// HTML parser in its double-escaped state and the page's scripts never ran. Every '<', '>', '&'
+// and line separator of the data is a JSON escape; the data still parses to the same names.
+TEST(ViewerPage, TheDataGivesTheHtmlParserNothingToFindAndParsesToTheSameNames) {
+  const ThreeJs three{"/*three*/", "/*orbit*/", ""};
+  const nlohmann::json data = {
+      {"names", {"<!--<script>", "q\"x'y]]>", "a&b</script>", "\xe2\x80\xa8|\xe2\x80\xa9"}}};
+  const std::string page = viewerPage(data.dump(), three);
+  const auto from = page.find("<script id=\"run-data\" type=\"application/json\">");
+  ASSERT_NE(from, std::string::npos);
+  const auto start = page.find('>', from) + 1;
+  const auto end = page.find("</script>", start);
+  const std::string text = page.substr(start, end - start);
+  for (const char* absent : {"<", ">", "&", "\xe2\x80\xa8", "\xe2\x80\xa9"})
+    EXPECT_EQ(text.find(absent), std::string::npos) << absent << " in " << text;
+  EXPECT_EQ(nlohmann::json::parse(text), data);
+  EXPECT_NE(text.find("\\u003c!--\\u003cscript\\u003e"), std::string::npos) << text;
 }

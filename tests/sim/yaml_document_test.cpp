@@ -83,6 +83,15 @@ TEST(YamlDocument, AKeyThatIsAListOrMappingIsRefused) {
   EXPECT_NE(refusal("? [a, b]\n: 1\n").find("a key must be a plain name"), std::string::npos);
 }
 
+// yaml-cpp's Load reads the first document: the keys after '---' were silently ignored.
+TEST(YamlDocument, ASecondDocumentIsRefusedAtItsLine) {
+  const std::string why = refusal("world: {}\n# the rest\n---\nvehicles: []\n");
+  EXPECT_EQ(why.substr(0, why.find(" | ")), "line 3") << why;
+  EXPECT_NE(why.find("a second YAML document"), std::string::npos) << why;
+  // A document that starts with '---' or ends with '...' is one document.
+  EXPECT_NO_THROW(loadYamlDocument("---\na: 1\n...\n", "doc.yaml"));
+}
+
 TEST(YamlDocument, MalformedTextNamesItsLine) {
   EXPECT_NE(refusal("a: 1\nb: [2\n").find("malformed YAML"), std::string::npos);
 }
