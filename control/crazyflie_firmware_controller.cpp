@@ -1,6 +1,8 @@
 #include "control/crazyflie_firmware_controller.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace cosim {
 
@@ -32,14 +34,40 @@ ControlOutput CrazyflieFirmwareController::update(const VehicleState& state,
   // RATE_HL_COMMANDER = 100 Hz; the stabilizer reads its latest setpoint.
   if (clock_.due(100.0)) setpoint_ = ref;
   if (!clock_.due(kCrazyflieAttitudeRate)) return output_;
-  const Eigen::Vector4d forces = lawStep(state, setpoint_, clock_);
+  deliver(lawStep(state, setpoint_, clock_), state.battery_voltage);
+  return output_;
+}
+
+void CrazyflieFirmwareController::setThrustPath(const CrazyflieThrustPath& path) {
+  path_ = path;
+  platform_ = crazyflieMixerConstants(platform_, path.platform);
+  // Without a battery the idle PWM's duty makes the thrust of that fraction of full-scale volts
+  // (the supply at which full duty is the rotors' maximum, crazyflie_platform.h).
+  const double idle_volts = path.idleThrust() / 65535.0 * motors_.fullScaleVolts();
+  idle_force_ = path.idleThrust() > 0.0 && std::isfinite(idle_volts)
+                    ? std::max(motors_.thrustAtVoltage(idle_volts), 0.0)
+                    : 0.0;
+}
+
+void CrazyflieFirmwareController::deliver(const Eigen::Vector4d& forces, double battery_voltage) {
   bool capped = false;
-  output_.rotor_thrusts = crazyflieToRotorOrder(motors_.deliver(forces, &capped));
+  if (battery_voltage > 0.0) {
+    // The firmware's PWM goes to the motors as duty cycles; the thrust they make is the
+    // simulated motors' business. rotor_thrusts keeps the forces the law asked for (the log).
+    output_.motor_duty = crazyflieToRotorOrder(
+        crazyflieMotorDuties(path_, motors_, forces, battery_voltage, &capped));
+    output_.drives_duty = true;
+    output_.rotor_thrusts = crazyflieToRotorOrder(forces.cwiseMax(0.0));
+  } else if (path_.needsBattery()) {
+    throw std::logic_error("crazyflie thrust map pwm_quadratic flown without a battery");
+  } else {
+    output_.rotor_thrusts =
+        crazyflieToRotorOrder(motors_.deliver(forces, &capped).cwiseMax(idle_force_));
+  }
   const Eigen::Vector4d wrench = mixer_.wrench(output_.rotor_thrusts);
   output_.collective_thrust = wrench[0];
   output_.torque = wrench.tail<3>();
   output_.saturated = capped;
-  return output_;
 }
 
 }  // namespace cosim

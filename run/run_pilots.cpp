@@ -2,9 +2,9 @@
 
 #include <cmath>
 
+#include "control/controller_factory.h"
 #include "control/ground_feedback_linearization.h"
 #include "control/ground_velocity_tracker.h"
-#include "control/controller_factory.h"
 #include "control/piecewise_polynomial_reference.h"
 
 namespace cosim {
@@ -55,8 +55,9 @@ void buildQuadrotorPilots(const Scenario& s, const RunSetup& setup, QuadrotorPla
   const ControllerSection& controller = setup.quadrotor_sections.controller;
   for (std::size_t k = 0; k < setup.quadrotors.size(); ++k) {
     ParamSet gains = controller.gains;
-    pilots.quadrotor_controllers.push_back(makeFlightController(
-        controller.name, gains, plans.airframes[k], controller.drag_compensation));
+    pilots.quadrotor_controllers.push_back(
+        makeFlightController(controller.name, gains, plans.airframes[k],
+                             controller.drag_compensation, controller.thrust_path));
     if (!drivable) continue;
     VehiclePilot& pilot = pilots.quadrotors.emplace_back();
     pilot.believed_airframe = &plans.airframes[k];

@@ -8,10 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "control/crazyflie_thrust_path.h"
 #include "core/param_set.h"
 #include "planning/grid/occupancy_grid.h"
 #include "planning/team/separation_ellipsoid.h"
 #include "planning/world/world.h"
+#include "sim/battery.h"
 #include "sim/camera_kind.h"
 #include "sim/disturbance_settings.h"
 #include "sim/model_error.h"
@@ -26,7 +28,7 @@ class PiecewisePolynomialReference;  // control/piecewise_polynomial_reference.h
 struct VehicleSpec {
   std::string name;   // unique; prefixes every MuJoCo name of the vehicle ("uav1/base")
   std::string model;  // a model name from models/ (cf2, quad_1500g, ...) or a URDF path
-  std::filesystem::path model_file;  // resolved
+  std::filesystem::path model_file;           // resolved
   VehicleKind kind = VehicleKind::Quadrotor;  // a ground robot (URDF) plans in the plane, z = 0
   Eigen::Vector3d start = Eigen::Vector3d::Zero();
   // Points to visit after the start; the last one is the goal.
@@ -41,6 +43,12 @@ struct VehicleSpec {
   // holds its last point alone, the goal. Null: the vehicle is planned.
   std::shared_ptr<const PiecewisePolynomialReference> reference;
   std::filesystem::path reference_file;  // resolved
+  // vehicles[i].battery (sim/battery.h): the vehicle flies on a simulated battery, its
+  // crazyflie_* controller driving the motors by duty cycle; empty: an ideal supply.
+  std::optional<BatterySettings> battery;
+  // vehicles[i].motor_speed_map: [c0, c1, c2] in place of the model file's
+  // (QuadrotorParams::motor_speed_map).
+  std::optional<Eigen::Vector3d> motor_speed_map;
   const Eigen::Vector3d& goal() const { return waypoints.back(); }
 };
 
@@ -109,6 +117,7 @@ struct AerialSections {
   bool controller_given = false;  // a controller section was written
   bool controller_drag_compensation = false;
   ParamSet controller_gains;
+  CrazyflieThrustPath controller_thrust_path;
 };
 
 struct Scenario {
@@ -128,7 +137,7 @@ struct Scenario {
   std::optional<SeparationEllipsoid> planner_separation;
 
   TrajectoryMode trajectory_mode = TrajectoryMode::Waypoints;
-  ParamSet trajectory_params;                 // max_speed, switch_radius, ...
+  ParamSet trajectory_params;  // max_speed, switch_radius, ...
 
   std::string controller_name = "cascade";  // cascade | geometric | indi | dsl_pid | crazyflie_*
   // A controller section was written; without one a quadrotor team flies indi (run_pipeline.cpp).
@@ -136,14 +145,16 @@ struct Scenario {
   // controller.drag_compensation: rotor drag in the flatness feed-forward (geometric, indi).
   bool controller_drag_compensation = false;
   ParamSet controller_gains;
+  // controller.thrust_map, thrust_map_coefficients, idle_thrust, platform (crazyflie_* only).
+  CrazyflieThrustPath controller_thrust_path;
 
   AerialSections aerial;  // for the quadrotors when there are ground robots too
 
   SimSettings sim;
   DisturbanceSettings disturbances;
-  SensorSettings sensors;        // what each quadrotor measures (default: ideal)
-  EstimatorSettings estimator;   // what turns the measurements into the controller's state
-  ModelError model_error;        // the flight software's belief against the simulated truth
+  SensorSettings sensors;       // what each quadrotor measures (default: ideal)
+  EstimatorSettings estimator;  // what turns the measurements into the controller's state
+  ModelError model_error;       // the flight software's belief against the simulated truth
   RenderSettings render;
 };
 

@@ -42,7 +42,9 @@ std::string vehicleNameProblem(const std::string& name) {
 
 void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& key,
                  const std::filesystem::path& scenario_dir, Scenario& s) {
-  r.checkKeys(n, key, {"name", "model", "start", "goal", "waypoints", "yaw", "reference", "mass"});
+  r.checkKeys(n, key,
+              {"name", "model", "start", "goal", "waypoints", "yaw", "reference", "mass", "battery",
+               "motor_speed_map"});
   VehicleSpec v;
   v.name =
       n["name"] ? r.text(n["name"], key + ".name") : "uav" + std::to_string(s.vehicles.size() + 1);
@@ -83,6 +85,7 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
       r.fail(n["mass"], key + ".mass", "mass applies to quadrotor models, not URDFs");
     v.mass = r.number(n["mass"], key + ".mass", 1e-4, 1e4);
   }
+  readVehiclePower(r, n, key, v);
   s.vehicles.push_back(std::move(v));
 }
 
