@@ -49,13 +49,23 @@ void CrazyflieFirmwareController::setThrustPath(const CrazyflieThrustPath& path)
                     : 0.0;
 }
 
+Eigen::Vector4d CrazyflieFirmwareController::motorDuties(const Eigen::Vector4d& forces,
+                                                         double battery_voltage,
+                                                         bool* capped) const {
+  if (path_.map != CrazyflieThrustMap::PwmQuadratic || !legacyMode())
+    return crazyflieMotorDuties(path_, motors_, forces, battery_voltage, capped);
+  // The fork's powerDistributionLegacy has no thrustToPWM: the legacy mix's 16-bit values
+  // (u, read here as u / 65535 THRUST_MAX newtons) are the PWM as they are.
+  const Eigen::Vector4d duty = forces.cwiseMax(0.0) / platform_.thrust_max;
+  return capCrazyflieDuties(duty, path_.idleThrust() / 65535.0, capped);
+}
+
 void CrazyflieFirmwareController::deliver(const Eigen::Vector4d& forces, double battery_voltage) {
   bool capped = false;
   if (battery_voltage > 0.0) {
     // The firmware's PWM goes to the motors as duty cycles; the thrust they make is the
     // simulated motors' business. rotor_thrusts keeps the forces the law asked for (the log).
-    output_.motor_duty = crazyflieToRotorOrder(
-        crazyflieMotorDuties(path_, motors_, forces, battery_voltage, &capped));
+    output_.motor_duty = crazyflieToRotorOrder(motorDuties(forces, battery_voltage, &capped));
     output_.drives_duty = true;
     output_.rotor_thrusts = crazyflieToRotorOrder(forces.cwiseMax(0.0));
   } else if (path_.needsBattery()) {

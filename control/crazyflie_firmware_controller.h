@@ -37,12 +37,18 @@ class CrazyflieFirmwareController : public FlightController {
   virtual Eigen::Vector4d lawStep(const VehicleState& state, const FlatReference& setpoint,
                                   const CrazyflieClock& clock) = 0;
   virtual void resetLaw() = 0;
+  // True for a law in the firmware's legacy control mode (thrust, roll, pitch, yaw on the 16-bit
+  // scale: Mellinger, PID), false in force/torque mode (Lee).
+  virtual bool legacyMode() const = 0;
 
   CrazyfliePlatform platform_;  // the build's, with the power distribution's platform constants
 
  private:
   // The motors' forces from the law's (firmware order), delivered into output_.
   void deliver(const Eigen::Vector4d& forces, double battery_voltage);
+  // On a battery: each motor's duty cycle (firmware order) for the law's forces.
+  Eigen::Vector4d motorDuties(const Eigen::Vector4d& forces, double battery_voltage,
+                              bool* capped) const;
 
   CrazyflieThrustPath path_;
   CrazyflieMotors motors_;

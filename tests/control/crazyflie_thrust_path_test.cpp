@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "control/crazyflie_lee_controller.h"
+#include "control/crazyflie_pid_controller.h"
 #include "control/quadrotor_params.h"
 
 namespace cosim {
@@ -134,6 +135,31 @@ TEST(CrazyflieThrustPath, ControllerOnABatteryOutputsDutiesAndWithoutOneThrusts)
   s.battery_voltage = 0.0;  // pwm_quadratic cannot fly on an ideal supply
   lee.reset();
   EXPECT_THROW(lee.update(s, ref, 0.002), std::logic_error);
+}
+
+TEST(CrazyflieThrustPath, ForkSendsTheLegacyModesSixteenBitValuesAsThePwm) {
+  // crazyflie_pid mixes on the 16-bit scale; at rest on its reference, level, its thrust is
+  // THRUST_BASE 30000 on every motor. The fork's powerDistributionLegacy hands that to the motors
+  // unchanged (no thrustToPWM): duty 30000 / 65535 = 0.457771.
+  QuadrotorParams q = brushlessMotor();
+  q.mass = 0.037;
+  q.gravity = 9.81;
+  q.max_thrust = 3.86e-8 * 2590.0 * 2590.0;
+  q.rotor_xy = QuadrotorParams::xLayout(0.05);
+  q.torque_per_thrust = 0.00569278844371417;
+  CrazyfliePidController pid(q, CrazyfliePidGains{});
+  CrazyflieThrustPath path;
+  path.map = CrazyflieThrustMap::PwmQuadratic;
+  pid.setThrustPath(path);
+  pid.reset();
+  VehicleState s;
+  s.position = {0, 0, 1};
+  s.battery_voltage = 3.9;
+  FlatReference ref;
+  ref.position = {0, 0, 1};
+  const ControlOutput out = pid.update(s, ref, 0.002);
+  ASSERT_TRUE(out.drives_duty);
+  for (int i = 0; i < 4; ++i) EXPECT_NEAR(out.motor_duty[i], 30000.0 / 65535.0, 1e-9) << i;
 }
 
 }  // namespace
