@@ -18,7 +18,10 @@ Eigen::Vector3d highLevelCommanderRates(const FlatReference& ref, double gravity
 
 CrazyflieFirmwareController::CrazyflieFirmwareController(const QuadrotorParams& airframe,
                                                          const CrazyfliePlatform& platform)
-    : platform_(platform), motors_(platform, airframe.max_thrust), mixer_(airframe) {}
+    : platform_(platform),
+      build_platform_(platform),
+      motors_(platform, airframe.max_thrust),
+      mixer_(airframe) {}
 
 void CrazyflieFirmwareController::reset() {
   clock_.reset();
@@ -40,7 +43,7 @@ ControlOutput CrazyflieFirmwareController::update(const VehicleState& state,
 
 void CrazyflieFirmwareController::setThrustPath(const CrazyflieThrustPath& path) {
   path_ = path;
-  platform_ = crazyflieMixerConstants(platform_, path.platform);
+  platform_ = crazyflieMixerConstants(build_platform_, path.platform);
   // Without a battery the idle PWM's duty makes the thrust of that fraction of full-scale volts
   // (the supply at which full duty is the rotors' maximum, crazyflie_platform.h).
   const double idle_volts = path.idleThrust() / 65535.0 * motors_.fullScaleVolts();

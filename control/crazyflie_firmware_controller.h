@@ -50,6 +50,7 @@ class CrazyflieFirmwareController : public FlightController {
   Eigen::Vector4d motorDuties(const Eigen::Vector4d& forces, double battery_voltage,
                               bool* capped) const;
 
+  CrazyfliePlatform build_platform_;  // as given, before the thrust path's mixer constants
   CrazyflieThrustPath path_;
   CrazyflieMotors motors_;
   double idle_force_ = 0.0;  // without a battery: the thrust of the idle PWM at full-scale volts
