@@ -75,7 +75,8 @@ DslPidGains readDslPidGains(ParamSet& p) {
 
 std::unique_ptr<FlightController> makeFlightController(const std::string& name, ParamSet& gains,
                                                        const QuadrotorParams& params,
-                                                       bool drag_compensation) {
+                                                       bool drag_compensation,
+                                                       const CrazyflieThrustPath& thrust_path) {
   std::unique_ptr<FlightController> c;
   if (name == "cascade") {
     c = std::make_unique<CascadeController>(params, readCascadeGains(gains));
@@ -85,7 +86,7 @@ std::unique_ptr<FlightController> makeFlightController(const std::string& name, 
     c = std::make_unique<IndiController>(params, readIndiGains(gains), drag_compensation);
   } else if (name == "dsl_pid") {
     c = std::make_unique<DslPidController>(params, readDslPidGains(gains));
-  } else if (auto cf = makeCrazyflieController(name, gains, params)) {
+  } else if (auto cf = makeCrazyflieController(name, gains, params, thrust_path)) {
     c = std::move(cf);
   } else {
     throw InputError(gains.file(), "key controller.name", "unknown controller '" + name + "'");

@@ -77,14 +77,19 @@ CrazyfliePidGains readPid(ParamSet& p) {
 }  // namespace
 
 std::unique_ptr<FlightController> makeCrazyflieController(const std::string& name, ParamSet& gains,
-                                                          const QuadrotorParams& params) {
+                                                          const QuadrotorParams& params,
+                                                          const CrazyflieThrustPath& thrust_path) {
+  std::unique_ptr<CrazyflieFirmwareController> c;
   if (name == "crazyflie_lee")
-    return std::make_unique<CrazyflieLeeController>(params, readLee(gains));
-  if (name == "crazyflie_mellinger")
-    return std::make_unique<CrazyflieMellingerController>(params, readMellinger(gains));
-  if (name == "crazyflie_pid")
-    return std::make_unique<CrazyfliePidController>(params, readPid(gains));
-  return nullptr;
+    c = std::make_unique<CrazyflieLeeController>(params, readLee(gains));
+  else if (name == "crazyflie_mellinger")
+    c = std::make_unique<CrazyflieMellingerController>(params, readMellinger(gains));
+  else if (name == "crazyflie_pid")
+    c = std::make_unique<CrazyfliePidController>(params, readPid(gains));
+  else
+    return nullptr;
+  c->setThrustPath(thrust_path);
+  return c;
 }
 
 }  // namespace cosim

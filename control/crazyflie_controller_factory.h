@@ -4,14 +4,17 @@
 // caller's requireAllUsed). Defaults are the firmware's (docs/crazyflie.md).
 #include <memory>
 
+#include "control/crazyflie_thrust_path.h"
 #include "control/flight_controller.h"
 #include "control/quadrotor_params.h"
 #include "core/param_set.h"
 
 namespace cosim {
 
-// nullptr if `name` is none of the three.
-std::unique_ptr<FlightController> makeCrazyflieController(const std::string& name, ParamSet& gains,
-                                                          const QuadrotorParams& params);
+// nullptr if `name` is none of the three. `thrust_path`: the build's thrust path (controller
+// thrust_map, thrust_map_coefficients, idle_thrust, platform).
+std::unique_ptr<FlightController> makeCrazyflieController(
+    const std::string& name, ParamSet& gains, const QuadrotorParams& params,
+    const CrazyflieThrustPath& thrust_path = CrazyflieThrustPath{});
 
 }  // namespace cosim

@@ -9,8 +9,12 @@
 //    (POSITION_RATE) inside it;
 //  - its output goes through the platform's power distribution, battery compensation and
 //    capping (control/crazyflie_platform.h) to the thrust each motor makes, held until the next
-//    law step.
+//    law step; on a vehicle that carries a battery (VehicleState::battery_voltage > 0), or with
+//    the fork's pwm_quadratic thrust map, to each motor's duty cycle instead
+//    (control/crazyflie_thrust_path.h), which the simulated motors turn into rotor speed on the
+//    battery's voltage.
 #include "control/crazyflie_platform.h"
+#include "control/crazyflie_thrust_path.h"
 #include "control/flight_controller.h"
 #include "control/mixer.h"
 
@@ -23,6 +27,9 @@ class CrazyflieFirmwareController : public FlightController {
   CrazyflieFirmwareController(const QuadrotorParams& airframe, const CrazyfliePlatform& platform);
   void reset() override;
   ControlOutput update(const VehicleState& state, const FlatReference& ref, double dt) override;
+  // The build's thrust path (thrust map, idle thrust, the power distribution's platform
+  // constants); the default is upstream's Brushless build. Call before flying.
+  void setThrustPath(const CrazyflieThrustPath& path);
 
  protected:
   // Per-motor forces, N, firmware order (M1..M4), from the law's 500 Hz step. `clock` says
@@ -30,11 +37,23 @@ class CrazyflieFirmwareController : public FlightController {
   virtual Eigen::Vector4d lawStep(const VehicleState& state, const FlatReference& setpoint,
                                   const CrazyflieClock& clock) = 0;
   virtual void resetLaw() = 0;
+  // True for a law in the firmware's legacy control mode (thrust, roll, pitch, yaw on the 16-bit
+  // scale: Mellinger, PID), false in force/torque mode (Lee).
+  virtual bool legacyMode() const = 0;
 
-  const CrazyfliePlatform platform_;
+  CrazyfliePlatform platform_;  // the build's, with the power distribution's platform constants
 
  private:
+  // The motors' forces from the law's (firmware order), delivered into output_.
+  void deliver(const Eigen::Vector4d& forces, double battery_voltage);
+  // On a battery: each motor's duty cycle (firmware order) for the law's forces.
+  Eigen::Vector4d motorDuties(const Eigen::Vector4d& forces, double battery_voltage,
+                              bool* capped) const;
+
+  CrazyfliePlatform build_platform_;  // as given, before the thrust path's mixer constants
+  CrazyflieThrustPath path_;
   CrazyflieMotors motors_;
+  double idle_force_ = 0.0;  // without a battery: the thrust of the idle PWM at full-scale volts
   Mixer mixer_;  // the airframe's geometry, for the wrench the delivered thrusts make (logging)
   CrazyflieClock clock_;
   FlatReference setpoint_;

@@ -56,6 +56,7 @@ class CrazyflieLeeController : public CrazyflieMassBasedController<CrazyflieLeeG
   Eigen::Vector4d lawStep(const VehicleState& state, const FlatReference& setpoint,
                           const CrazyflieClock& clock) override;
   void resetLaw() override;
+  bool legacyMode() const override { return false; }
 
  private:
   Eigen::Vector3d i_error_pos_ = Eigen::Vector3d::Zero();

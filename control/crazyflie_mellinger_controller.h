@@ -52,6 +52,7 @@ class CrazyflieMellingerController : public CrazyflieMassBasedController<Crazyfl
   Eigen::Vector4d lawStep(const VehicleState& state, const FlatReference& setpoint,
                           const CrazyflieClock& clock) override;
   void resetLaw() override;
+  bool legacyMode() const override { return true; }
 
  private:
   Eigen::Vector3d i_error_ = Eigen::Vector3d::Zero();    // of e_p, m s

@@ -71,6 +71,7 @@ class CrazyfliePidController : public CrazyflieFirmwareController {
   Eigen::Vector4d lawStep(const VehicleState& state, const FlatReference& setpoint,
                           const CrazyflieClock& clock) override;
   void resetLaw() override;
+  bool legacyMode() const override { return true; }
 
  private:
   void positionStep(const VehicleState& s, const FlatReference& sp, double yaw_deg);

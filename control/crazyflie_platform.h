@@ -54,6 +54,9 @@ class CrazyflieMotors {
   // The platform's thrust curve and its inverse (motor volts <-> N).
   double thrustAtVoltage(double volts) const;
   double voltageForThrust(double thrust) const;
+  const CrazyfliePlatform& platform() const { return p_; }
+  // The motor volts at full duty (infinite: no cap).
+  double fullScaleVolts() const { return full_scale_volts_; }
 
  private:
   // Newton's method on the thrust curve for `thrust`, from v (any v >= 0).

@@ -10,6 +10,12 @@ double QuadrotorParams::rotorSpeedFor(double thrust) const {
   return std::clamp(w, min_rotor_speed, max_rotor_speed);
 }
 
+double QuadrotorParams::steadyRotorSpeed(double duty, double battery_voltage) const {
+  const Eigen::Vector3d& c = motor_speed_map;
+  const double v = duty * battery_voltage;
+  return std::clamp(c[0] + v * (c[1] + v * c[2]), min_rotor_speed, max_rotor_speed);
+}
+
 double QuadrotorParams::hoverRotorSpeed() const {
   return rotorSpeedFor(mass * gravity / 4.0);
 }

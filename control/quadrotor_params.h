@@ -5,6 +5,7 @@
 // scenario's `model_error` then scales what the controller believes (sim/model_error.h).
 #include <Eigen/Core>
 #include <array>
+#include <cmath>
 
 namespace cosim {
 
@@ -30,6 +31,12 @@ struct QuadrotorParams {
   // A pure delay between a rotor's command and the start of its lag (an ESC's processing and
   // PWM period); 0 in models/ unless <numeric name="motor_delay">, or vehicles[i].airframe.
   double motor_delay = 0.0;  // s
+  // The motor driven by PWM on a battery (sim/quadrotor_plant.h, a vehicle with
+  // vehicles[i].battery): the steady-state rotor speed for the duty cycle d (PWM / 65535) and
+  // the battery's terminal voltage V_b is w_ss = c0 + c1 v + c2 v^2 with v = d V_b, the motor's
+  // effective voltage (V); c0 rad/s, c1 rad/s/V, c2 rad/s/V^2 (the model file's
+  // <numeric name="motor_speed_map">, or vehicles[i].motor_speed_map). Not finite: none given.
+  Eigen::Vector3d motor_speed_map = Eigen::Vector3d::Constant(std::nan(""));
   // Rotor aerodynamics (sim/rotor_aerodynamics.h), RotorS / PX4 motor-model form: each rotor
   // adds a drag force -w c_d v_perp and a rolling moment -w c_r v_perp, with v_perp the rotor's
   // air-relative velocity perpendicular to its axis.
@@ -45,6 +52,9 @@ struct QuadrotorParams {
 
   // Rotor speed for a given thrust, clamped to [min_rotor_speed, max_rotor_speed].
   double rotorSpeedFor(double thrust) const;
+  bool hasMotorSpeedMap() const { return motor_speed_map.allFinite(); }
+  // w_ss for a duty cycle and a battery voltage, clamped to [min_rotor_speed, max_rotor_speed].
+  double steadyRotorSpeed(double duty, double battery_voltage) const;
   // Hover rotor speed: each rotor carries a quarter of the weight.
   double hoverRotorSpeed() const;
   // The linear drag of Faessler, Franchi and Scaramuzza 2018 (RA-L, eq. 2: a = ... - R D R^T v)

@@ -15,8 +15,9 @@ RunLog flyGivenReference(const Scenario& scenario, const WorldModel& world,
   const QuadrotorParams believed =
       believedAirframe(world.vehicles()[0].params, scenario.model_error);
   ParamSet gains = scenario.controller_gains;
-  const std::unique_ptr<FlightController> controller = makeFlightController(
-      scenario.controller_name, gains, believed, scenario.controller_drag_compensation);
+  const std::unique_ptr<FlightController> controller =
+      makeFlightController(scenario.controller_name, gains, believed,
+                           scenario.controller_drag_compensation, scenario.controller_thrust_path);
   PiecewisePolynomialReference reference = *vehicle.reference;
   std::vector<VehiclePilot> pilots(1);
   pilots[0].controller = controller.get();

@@ -31,6 +31,7 @@ struct ControllerSection {
   std::string name = "cascade";
   bool drag_compensation = false;  // rotor drag in the flatness feed-forward
   ParamSet gains;
+  CrazyflieThrustPath thrust_path;  // the crazyflie_* controllers' firmware build
 };
 
 struct MotionSections {

@@ -69,8 +69,9 @@ void buildQuadrotorPilots(const Scenario& s, const RunSetup& setup, QuadrotorPla
   const ControllerSection& controller = setup.quadrotor_sections.controller;
   for (std::size_t k = 0; k < setup.quadrotors.size(); ++k) {
     ParamSet gains = controller.gains;
-    pilots.quadrotor_controllers.push_back(makeFlightController(
-        controller.name, gains, plans.airframes[k], controller.drag_compensation));
+    pilots.quadrotor_controllers.push_back(
+        makeFlightController(controller.name, gains, plans.airframes[k],
+                             controller.drag_compensation, controller.thrust_path));
     if (!drivable) continue;
     VehiclePilot& pilot = pilots.quadrotors.emplace_back();
     pilot.believed_airframe = &plans.airframes[k];

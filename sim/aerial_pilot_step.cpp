@@ -41,12 +41,17 @@ AerialPilotStep::Outcome AerialPilotStep::step(const mjData* d, QuadrotorPlant& 
                                                double control_dt, VehicleLog& vl, bool record) {
   const VehicleHandles& v = *vehicle_;
   const VehicleState truth = readVehicleState(d, v);
-  const VehicleState seen = estimator_.estimate(d, v, plant);
+  VehicleState seen = estimator_.estimate(d, v, plant);
+  seen.battery_voltage = plant.batteryVoltage();  // the flight software's own measurement
   const FlatReference ref = pilot_->reference->reference(d->time, seen);
   const ControlOutput out = pilot_->controller->update(seen, ref, control_dt);
-  Eigen::Vector4d speeds;
-  for (int i = 0; i < 4; ++i) speeds[i] = airframe_->rotorSpeedFor(out.rotor_thrusts[i]);
-  plant.rotors().command(speeds);
+  if (out.drives_duty) {
+    plant.commandDuties(out.motor_duty);
+  } else {
+    Eigen::Vector4d speeds;
+    for (int i = 0; i < 4; ++i) speeds[i] = airframe_->rotorSpeedFor(out.rotor_thrusts[i]);
+    plant.rotors().command(speeds);
+  }
 
   if (record) {
     LogSample& x = vl.samples.emplace_back();

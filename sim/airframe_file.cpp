@@ -67,6 +67,12 @@ void applyAirframeFile(const AirframeFile& a, QuadrotorParams& p) {
   if (a.time_constant_down) p.time_constant_down = *a.time_constant_down;
   if (a.motor_delay) p.motor_delay = *a.motor_delay;
   if (a.rotor_drag_coefficient) p.rotor_drag_coefficient = *a.rotor_drag_coefficient;
+  // The motor map drives the motor on a battery (vehicles[i].battery); vehicles[i].motor_speed_map,
+  // applied after this, wins over it.
+  if (a.motor_speed_coefficients)
+    p.motor_speed_map = Eigen::Vector3d((*a.motor_speed_coefficients)[0],
+                                        (*a.motor_speed_coefficients)[1],
+                                        (*a.motor_speed_coefficients)[2]);
 }
 
 }  // namespace cosim

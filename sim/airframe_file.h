@@ -10,8 +10,8 @@
 //   rotor_drag_coefficient (N/(m/s)/(rad/s))  sim/rotor_aerodynamics.cpp's c_d
 //   gyro_noise (rad/s/sqrt(Hz)), accel_noise (m/s^2/sqrt(Hz))  this vehicle's IMU densities
 //   motor_speed_coefficients [c0, c1, c2]  omega_ss = c0 + c1 v + c2 v^2 (rad/s),
-//                                     v = PWM / 65535 V_battery: carried, for a motor model
-//                                     driven by PWM and battery voltage.
+//                                     v = PWM / 65535 V_battery: the motor map of a vehicle
+//                                     flown on a battery (vehicles[i].battery).
 // Bad input (a missing file, an unknown key, a value out of range) is an InputError naming the
 // airframe file, the line and the key.
 #include <array>
@@ -31,7 +31,7 @@ struct AirframeFile {
 
 AirframeFile readAirframeFile(const std::filesystem::path& path);
 
-// The rotor constants of `a` put into `p` (k_f, time constants, delay, rotor drag); the mass
+// The rotor constants of `a` put into `p` (k_f, time constants, delay, rotor drag, motor map); the mass
 // goes through vehicles[i].mass, the IMU densities through the vehicle's plant.
 void applyAirframeFile(const AirframeFile& a, QuadrotorParams& p);
 

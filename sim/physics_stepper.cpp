@@ -21,10 +21,12 @@ PhysicsStepper::PhysicsStepper(const WorldModel& world, const Scenario& scenario
       ground_effect_(scenario.disturbances.ground_effect) {
   const auto& vehicles = world.vehicles();
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
-    plants_.push_back(vehicles[v].kind == VehicleKind::GroundRobot
-                          ? nullptr
-                          : std::make_unique<QuadrotorPlant>(vehicles[v], scenario.sensors,
-                                                             scenario.sim.seed, v));
+    plants_.push_back(
+        vehicles[v].kind == VehicleKind::GroundRobot
+            ? nullptr
+            : std::make_unique<QuadrotorPlant>(
+                  vehicles[v], scenario.sensors, scenario.sim.seed, v,
+                  scenario.vehicles[v].battery ? &*scenario.vehicles[v].battery : nullptr));
     plant_pointers_.push_back(plants_.back().get());
   }
   drive_command_.assign(vehicles.size(), {0.0, 0.0, 0.0});
@@ -56,7 +58,7 @@ std::optional<RunEnd> PhysicsStepper::step(mjData* d, RunLog& log) {
 void PhysicsStepper::applyForces(mjData* d) {
   const double dt = m_->opt.timestep;
   for (auto& p : plants_)
-    if (p) p->rotors().advance(dt);
+    if (p) p->advanceRotors(dt);
   aerodynamics_.apply(m_, d, plant_pointers_, dt);
   // The robots' velocity servos, with the joint speeds at the start of the step (as a MuJoCo
   // velocity actuator computes its force).

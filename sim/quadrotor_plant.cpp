@@ -13,8 +13,10 @@ std::uint64_t sensorSeed(std::uint64_t seed, std::size_t vehicle, int sensor) {
 }
 
 QuadrotorPlant::QuadrotorPlant(const VehicleHandles& vehicle, const SensorSettings& s,
-                               std::uint64_t seed, std::size_t index)
+                               std::uint64_t seed, std::size_t index,
+                               const BatterySettings* battery)
     : vehicle_(&vehicle), gravity_(vehicle.params.gravity), rotors_(vehicle.params) {
+  if (battery) battery_.emplace(*battery);
   if (s.imu.present) {
     // The vehicle's airframe file may hold its own identified noise densities.
     ImuSettings imu = s.imu;
@@ -33,6 +35,40 @@ QuadrotorPlant::QuadrotorPlant(const VehicleHandles& vehicle, const SensorSettin
     attitude_due_.period = attitude_due_.next = 1.0 / s.attitude.rate;
     attitude_latency_ = s.attitude.latency;
   }
+}
+
+void QuadrotorPlant::commandDuties(const Eigen::Vector4d& duty) {
+  duty_ = duty;
+  duty_commanded_ = true;
+}
+
+double QuadrotorPlant::electricalPower() const {
+  // Shaft power tau w with the reaction torque tau = (k_m/k_f) k_f w^2 (sim/battery.h).
+  const QuadrotorParams& p = vehicle_->params;
+  const double k_q = p.torque_per_thrust * p.thrust_coefficient;
+  const double shaft = k_q * rotors_.speeds().cwiseAbs().array().cube().sum();
+  return battery_ ? shaft / battery_->settings().drive_efficiency : shaft;
+}
+
+double QuadrotorPlant::batteryVoltage() const {
+  return battery_ ? battery_->terminalVoltageAtPower(electricalPower()) : 0.0;
+}
+
+void QuadrotorPlant::advanceRotors(double dt) {
+  if (!battery_) {
+    rotors_.advance(dt);
+    return;
+  }
+  const double power = electricalPower();
+  const double volts = battery_->terminalVoltageAtPower(power);
+  if (duty_commanded_) {
+    const QuadrotorParams& p = vehicle_->params;
+    Eigen::Vector4d speeds;
+    for (int i = 0; i < 4; ++i) speeds[i] = p.steadyRotorSpeed(duty_[i], volts);
+    rotors_.command(speeds);
+  }
+  rotors_.advance(dt);
+  battery_->drain(volts > 0.0 ? power / volts : 0.0, dt);
 }
 
 Eigen::Vector3d QuadrotorPlant::trueSpecificForce(const mjData* d) const {

@@ -12,7 +12,7 @@ namespace cosim {
 namespace {
 
 // A number as the composed model writes it (ten significant digits).
-std::string fmt(double v) {
+std::string tenDigits(double v) {
   std::ostringstream s;
   s.precision(10);
   s << v;
@@ -29,7 +29,7 @@ double rotorConstant(const mjModel* m, const std::string& prefix, const char* na
   const double v = m->numeric_data[m->numeric_adr[id]];
   if (m->numeric_size[id] != 1 || !std::isfinite(v) || v < lo || v > hi)
     throw InputError(file, std::string("<numeric name=\"") + name + "\">",
-                     "must be one number in [" + fmt(lo) + ", " + fmt(hi) + "]");
+                     "must be one number in [" + tenDigits(lo) + ", " + tenDigits(hi) + "]");
   return v;
 }
 
@@ -77,6 +77,17 @@ void readQuadrotorHandles(const mjModel* m, const VehicleSpec& v, VehicleHandles
   q.rolling_moment_coefficient = rotorConstant(m, p, "rolling_moment_coefficient", 0.0, 1.0, file);
   q.propeller_radius = rotorConstant(m, p, "propeller_radius", 1e-3, 10.0, file);
   q.zero_thrust_inflow = rotorConstant(m, p, "zero_thrust_inflow", 0.1, 1000.0, file);
+  // Optional: the motor's steady-state speed over duty cycle times battery voltage.
+  const int map = mj_name2id(m, mjOBJ_NUMERIC, (p + "motor_speed_map").c_str());
+  if (map >= 0) {
+    if (m->numeric_size[map] != 3)
+      throw InputError(file, "<numeric name=\"motor_speed_map\">",
+                       "needs 3 values: c0 (rad/s), c1 (rad/s/V), c2 (rad/s/V^2)");
+    for (int i = 0; i < 3; ++i) q.motor_speed_map[i] = m->numeric_data[m->numeric_adr[map] + i];
+    if (!q.motor_speed_map.allFinite() || !(q.motor_speed_map[1] > 0.0))
+      throw InputError(file, "<numeric name=\"motor_speed_map\">",
+                       "values must be finite, c1 positive");
+  }
   const int sep = mj_name2id(m, mjOBJ_NUMERIC, (p + "separation").c_str());
   if (sep < 0 || m->numeric_size[sep] != 2 || !(m->numeric_data[m->numeric_adr[sep]] > 0) ||
       !(m->numeric_data[m->numeric_adr[sep] + 1] > 0))

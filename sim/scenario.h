@@ -8,11 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "control/crazyflie_thrust_path.h"
 #include "core/param_set.h"
 #include "planning/grid/occupancy_grid.h"
 #include "planning/team/separation_ellipsoid.h"
 #include "planning/world/world.h"
 #include "sim/airframe_file.h"
+#include "sim/battery.h"
 #include "sim/camera_kind.h"
 #include "sim/disturbance_settings.h"
 #include "sim/model_error.h"
@@ -49,6 +51,12 @@ struct VehicleSpec {
   // The reference file's bytes as read: a run keeps a copy in its folder (runReferenceCopyName),
   // so the run renders again after the original moved. Null without a reference.
   std::shared_ptr<const std::string> reference_text;
+  // vehicles[i].battery (sim/battery.h): the vehicle flies on a simulated battery, its
+  // crazyflie_* controller driving the motors by duty cycle; empty: an ideal supply.
+  std::optional<BatterySettings> battery;
+  // vehicles[i].motor_speed_map: [c0, c1, c2] in place of the model file's
+  // (QuadrotorParams::motor_speed_map).
+  std::optional<Eigen::Vector3d> motor_speed_map;
   const Eigen::Vector3d& goal() const { return waypoints.back(); }
 };
 
@@ -117,6 +125,7 @@ struct AerialSections {
   bool controller_given = false;  // a controller section was written
   bool controller_drag_compensation = false;
   ParamSet controller_gains;
+  CrazyflieThrustPath controller_thrust_path;
 };
 
 struct Scenario {
@@ -147,6 +156,8 @@ struct Scenario {
   // controller.drag_compensation: rotor drag in the flatness feed-forward (geometric, indi).
   bool controller_drag_compensation = false;
   ParamSet controller_gains;
+  // controller.thrust_map, thrust_map_coefficients, idle_thrust, platform (crazyflie_* only).
+  CrazyflieThrustPath controller_thrust_path;
 
   AerialSections aerial;  // for the quadrotors when there are ground robots too
 

@@ -45,6 +45,7 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
   readWorldSection(r, root, dir, s);
   readVehiclesSection(r, root, dir, s);
   readMotionSections(r, root, overrides, s);
+  checkVehiclePower(r, root, s);
   readSimSection(r, root, s);
   readDisturbancesSection(r, root, s);
   readSensingSections(r, root, s);

@@ -70,7 +70,9 @@ void readMotionSectionsOf(const YamlReader& r, const YAML::Node& parent, const s
 
   if (parent["controller"]) {
     const YAML::Node c = parent["controller"];
-    r.checkKeys(c, prefix + "controller", {"name", "gains", "drag_compensation"});
+    r.checkKeys(c, prefix + "controller",
+                {"name", "gains", "drag_compensation", "thrust_map", "thrust_map_coefficients",
+                 "idle_thrust", "platform"});
     out.controller_given = true;
     if (c["name"]) out.controller_name = r.text(c["name"], prefix + "controller.name");
     const std::string& name = out.controller_name;
@@ -86,6 +88,7 @@ void readMotionSectionsOf(const YamlReader& r, const YAML::Node& parent, const s
         r.fail(c["drag_compensation"], prefix + "controller.drag_compensation",
                "applies to the 'geometric' and 'indi' controllers, not '" + name + "'");
     }
+    out.controller_thrust_path = readCrazyflieThrustPath(r, c, prefix, name);
     if (c["gains"])
       readParams(r, c["gains"], prefix + "controller.gains", {}, overrides, out.controller_gains);
   }

@@ -39,6 +39,18 @@ void readVehiclesSection(const YamlReader& r, const YAML::Node& root,
 void readMotionSections(const YamlReader& r, const YAML::Node& root,
                         const std::vector<std::string>& overrides, Scenario& s);
 
+// vehicles[i].battery and vehicles[i].motor_speed_map of one vehicle node (sim/scenario_power.cpp,
+// called by readVehiclesSection).
+void readVehiclePower(const YamlReader& r, const YAML::Node& n, const std::string& key,
+                      VehicleSpec& v);
+// controller.thrust_map, thrust_map_coefficients, idle_thrust, platform of the controller node c
+// (`prefix`: "" or "aerial."), for the controller `name` (only the crazyflie_* ones take them).
+CrazyflieThrustPath readCrazyflieThrustPath(const YamlReader& r, const YAML::Node& c,
+                                            const std::string& prefix, const std::string& name);
+// After the motion sections: batteries and motor maps only under a crazyflie_* controller; a
+// default battery for every quadrotor flown with thrust_map pwm_quadratic that has none.
+void checkVehiclePower(const YamlReader& r, const YAML::Node& root, Scenario& s);
+
 // sim: timestep, control rate, length, seed, goal tolerance; then what depends on them (a
 // Crazyflie controller's rate, the log's size, given references' starts)
 // (sim/scenario_sim_settings.cpp).

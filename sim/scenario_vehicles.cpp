@@ -42,9 +42,9 @@ std::string vehicleNameProblem(const std::string& name) {
 
 void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& key,
                  const std::filesystem::path& scenario_dir, Scenario& s) {
-  r.checkKeys(
-      n, key,
-      {"name", "model", "start", "goal", "waypoints", "yaw", "reference", "mass", "airframe"});
+  r.checkKeys(n, key,
+              {"name", "model", "start", "goal", "waypoints", "yaw", "reference", "mass", "airframe",
+               "battery", "motor_speed_map"});
   VehicleSpec v;
   v.name =
       n["name"] ? r.text(n["name"], key + ".name") : "uav" + std::to_string(s.vehicles.size() + 1);
@@ -93,6 +93,7 @@ void readVehicle(const YamlReader& r, const YAML::Node& n, const std::string& ke
     // vehicles[i].mass, when given, is the flown mass; else the identified one.
     if (!n["mass"] && v.airframe.mass) v.mass = *v.airframe.mass;
   }
+  readVehiclePower(r, n, key, v);
   s.vehicles.push_back(std::move(v));
 }
 

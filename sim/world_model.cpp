@@ -24,26 +24,26 @@ using tinyxml2::XMLDocument;
 using tinyxml2::XMLElement;
 using tinyxml2::XMLNode;
 
-std::string fmt(double v) {
+std::string xmlText(double v) {
   std::ostringstream s;
   s.precision(10);
   s << v;
   return s.str();
 }
-std::string fmt(const Eigen::Vector3d& v) {
-  return fmt(v.x()) + " " + fmt(v.y()) + " " + fmt(v.z());
+std::string xmlText(const Eigen::Vector3d& v) {
+  return xmlText(v.x()) + " " + xmlText(v.y()) + " " + xmlText(v.z());
 }
 
 // Attributes that name something (prefixed) or refer to a named thing (prefixed the same way).
-const char* const kNameAttributes[] = {"name",   "class",  "childclass", "site",   "joint",
-                                       "body",   "body1",  "body2",      "geom1",  "geom2",
-                                       "tendon", "objname", "refsite",   "material", "mesh",
-                                       "texture", "hfield", "target"};
+const char* const kNameAttributes[] = {
+    "name",  "class",  "childclass", "site",    "joint",    "body", "body1",   "body2",  "geom1",
+    "geom2", "tendon", "objname",    "refsite", "material", "mesh", "texture", "hfield", "target"};
 
 void prefixNames(XMLElement* e, const std::string& prefix) {
   for (const char* attr : kNameAttributes)
     if (const char* v = e->Attribute(attr)) e->SetAttribute(attr, (prefix + v).c_str());
-  for (XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement()) prefixNames(c, prefix);
+  for (XMLElement* c = e->FirstChildElement(); c; c = c->NextSiblingElement())
+    prefixNames(c, prefix);
 }
 
 XMLElement* add(XMLDocument& doc, XMLNode* parent, const char* tag) {
@@ -55,21 +55,21 @@ XMLElement* add(XMLDocument& doc, XMLNode* parent, const char* tag) {
 void addObstacleGeom(XMLDocument& doc, XMLElement* worldbody, const Obstacle& o, std::size_t i) {
   XMLElement* g = add(doc, worldbody, "geom");
   g->SetAttribute("name", ("obstacle" + std::to_string(i)).c_str());
-  g->SetAttribute("pos", fmt(o.pos).c_str());
+  g->SetAttribute("pos", xmlText(o.pos).c_str());
   g->SetAttribute("material", "obstacle");
   switch (o.type) {
     case ObstacleType::Box:
       g->SetAttribute("type", "box");
-      g->SetAttribute("size", fmt(0.5 * o.size).c_str());
-      g->SetAttribute("euler", ("0 0 " + fmt(o.yaw_deg)).c_str());
+      g->SetAttribute("size", xmlText(0.5 * o.size).c_str());
+      g->SetAttribute("euler", ("0 0 " + xmlText(o.yaw_deg)).c_str());
       break;
     case ObstacleType::Cylinder:
       g->SetAttribute("type", "cylinder");
-      g->SetAttribute("size", (fmt(o.radius) + " " + fmt(0.5 * o.height)).c_str());
+      g->SetAttribute("size", (xmlText(o.radius) + " " + xmlText(0.5 * o.height)).c_str());
       break;
     case ObstacleType::Sphere:
       g->SetAttribute("type", "sphere");
-      g->SetAttribute("size", fmt(o.radius).c_str());
+      g->SetAttribute("size", xmlText(o.radius).c_str());
       break;
   }
 }
@@ -84,24 +84,24 @@ void setTotalMass(XMLElement* base, const VehicleSpec& v) {
   if (!inertial || inertial->QueryDoubleAttribute("mass", &mass) != tinyxml2::XML_SUCCESS ||
       !(mass > 0.0) || base->FirstChildElement("body"))
     throw InputError(v.model_file.string(), "<body name=\"base\">",
-                     "vehicle '" + v.name + "' sets mass: the model needs one base body with an "
-                     "<inertial mass=...> and no child bodies");
+                     "vehicle '" + v.name +
+                         "' sets mass: the model needs one base body with an "
+                         "<inertial mass=...> and no child bodies");
   const double ratio = v.mass / mass;
-  inertial->SetAttribute("mass", fmt(v.mass).c_str());
+  inertial->SetAttribute("mass", xmlText(v.mass).c_str());
   if (const char* d = inertial->Attribute("diaginertia")) {
     std::istringstream in(d);
     Eigen::Vector3d j;
     if (!(in >> j.x() >> j.y() >> j.z()))
       throw InputError(v.model_file.string(), "<inertial diaginertia>", "needs three numbers");
-    inertial->SetAttribute("diaginertia", fmt(ratio * j).c_str());
+    inertial->SetAttribute("diaginertia", xmlText(ratio * j).c_str());
   } else if (inertial->Attribute("fullinertia")) {
     throw InputError(v.model_file.string(), "<inertial>",
                      "vehicle '" + v.name + "' sets mass: use diaginertia, not fullinertia");
   }
 }
 
-void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* custom,
-                const VehicleSpec& v) {
+void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* custom, const VehicleSpec& v) {
   const std::string text = readInputFile(v.model_file.string(), kMaxModelFileBytes, "model file");
   XMLDocument src;
   if (src.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS)
@@ -118,8 +118,8 @@ void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* custom,
   XMLElement* copy = body->DeepClone(&doc)->ToElement();
   prefixNames(copy, prefix);
   // The start pose is the body's own pose, so qpos0 (and a reset) puts the vehicle at its start.
-  copy->SetAttribute("pos", fmt(v.start).c_str());
-  copy->SetAttribute("euler", ("0 0 " + fmt(v.yaw_deg)).c_str());
+  copy->SetAttribute("pos", xmlText(v.start).c_str());
+  copy->SetAttribute("euler", ("0 0 " + xmlText(v.yaw_deg)).c_str());
   if (v.mass > 0.0) setTotalMass(copy, v);
   worldbody->InsertEndChild(copy);
 
@@ -189,7 +189,7 @@ void addVisual(XMLDocument& doc, XMLElement* mujoco, const Scenario& s) {
   quality->SetAttribute("numslices", 16);
   quality->SetAttribute("numstacks", 8);
   XMLElement* map = add(doc, visual, "map");
-  map->SetAttribute("znear", fmt(0.05 / std::max(extent, 1.0)).c_str());
+  map->SetAttribute("znear", xmlText(0.05 / std::max(extent, 1.0)).c_str());
   map->SetAttribute("zfar", "10");
   XMLElement* headlight = add(doc, visual, "headlight");
   headlight->SetAttribute("ambient", "0.35 0.35 0.35");
@@ -226,7 +226,8 @@ void addAssets(XMLDocument& doc, XMLElement* mujoco, const Scenario& s) {
   floor_mat->SetAttribute("specular", "0");
   // One checker square per 2 m of world.
   floor_mat->SetAttribute(
-      "texrepeat", (fmt((hi.x() - lo.x()) / 4.0) + " " + fmt((hi.y() - lo.y()) / 4.0)).c_str());
+      "texrepeat",
+      (xmlText((hi.x() - lo.x()) / 4.0) + " " + xmlText((hi.y() - lo.y()) / 4.0)).c_str());
   XMLElement* obstacle_mat = add(doc, asset, "material");
   obstacle_mat->SetAttribute("name", "obstacle");
   obstacle_mat->SetAttribute("rgba", "0.55 0.6 0.68 1");
@@ -242,16 +243,18 @@ XMLElement* addStaticWorld(XMLDocument& doc, XMLElement* mujoco, const Scenario&
   XMLElement* worldbody = add(doc, mujoco, "worldbody");
   XMLElement* light = add(doc, worldbody, "light");
   light->SetAttribute("directional", "true");
-  light->SetAttribute("pos", fmt(Eigen::Vector3d(centre.x(), centre.y(), hi.z() + extent)).c_str());
+  light->SetAttribute("pos",
+                      xmlText(Eigen::Vector3d(centre.x(), centre.y(), hi.z() + extent)).c_str());
   light->SetAttribute("dir", "-0.3 -0.4 -1");
   light->SetAttribute("diffuse", "0.6 0.6 0.6");
   light->SetAttribute("castshadow", "true");
   XMLElement* floor = add(doc, worldbody, "geom");
   floor->SetAttribute("name", "floor");
   floor->SetAttribute("type", "plane");
-  floor->SetAttribute("pos", fmt(Eigen::Vector3d(centre.x(), centre.y(), lo.z())).c_str());
+  floor->SetAttribute("pos", xmlText(Eigen::Vector3d(centre.x(), centre.y(), lo.z())).c_str());
   floor->SetAttribute(
-      "size", (fmt(0.5 * (hi.x() - lo.x())) + " " + fmt(0.5 * (hi.y() - lo.y())) + " 0.1").c_str());
+      "size",
+      (xmlText(0.5 * (hi.x() - lo.x())) + " " + xmlText(0.5 * (hi.y() - lo.y())) + " 0.1").c_str());
   floor->SetAttribute("material", "floor");
   for (std::size_t i = 0; i < s.world.obstacles.size(); ++i)
     addObstacleGeom(doc, worldbody, s.world.obstacles[i], i);
@@ -293,7 +296,7 @@ std::string composeWorldXml(const Scenario& s) {
   compiler->SetAttribute("autolimits", "true");  // MuJoCo 2.2.2 needs it for ctrlrange
   compiler->SetAttribute("angle", "degree");
   XMLElement* option = add(doc, mujoco, "option");
-  option->SetAttribute("timestep", fmt(s.sim.timestep).c_str());
+  option->SetAttribute("timestep", xmlText(s.sim.timestep).c_str());
   option->SetAttribute("gravity", "0 0 -9.81");
   addVisual(doc, mujoco, s);
   addAssets(doc, mujoco, s);
@@ -336,6 +339,12 @@ WorldModel WorldModel::fromXml(const std::string& xml, const Scenario& scenario)
       readGroundVehicleHandles(m, v, h);
     else
       readQuadrotorHandles(m, v, h);
+    if (v.motor_speed_map) h.params.motor_speed_map = *v.motor_speed_map;
+    if (v.battery && !h.params.hasMotorSpeedMap())
+      throw InputError(scenario.file, "key vehicles[" + std::to_string(wm.vehicles_.size()) + "]",
+                       "battery: model '" + v.model +
+                           "' has no motor_speed_map (give vehicles[i].motor_speed_map: "
+                           "[c0, c1, c2])");
     wm.vehicles_.push_back(std::move(h));
   }
   return wm;

@@ -54,6 +54,7 @@ const std::vector<std::pair<std::string, std::string>> kLoaderSections = {
     {"`world.grid_map`", "world.grid_map"},
     {"`vehicles[i]`", "vehicles[0]"},
     {"`vehicles[i].reference`", "vehicles[0].reference"},
+    {"`vehicles[i].battery`", "vehicles[0].battery"},
     {"`controller`", "controller"},
     {"`aerial`", "aerial"},
     {"`sim`", "sim"},
