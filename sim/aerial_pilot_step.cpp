@@ -21,7 +21,8 @@ AerialPilotStep::AerialPilotStep(const VehicleHandles& vehicle, VehiclePilot& pi
       airframe_(pilot.believed_airframe ? pilot.believed_airframe : &vehicle.params),
       estimator_(sensing.estimator, sensing.sensors, *airframe_, sensing.seed, vehicle_index) {}
 
-VehicleLog AerialPilotStep::begin(const mjData* d, std::size_t initial_samples) {
+VehicleLog AerialPilotStep::begin(const mjData* d, std::size_t initial_samples,
+                                  std::size_t most_samples) {
   VehicleLog vl;
   vl.name = vehicle_->name;
   vl.radius = vehicle_->params.radius;
@@ -31,6 +32,7 @@ VehicleLog AerialPilotStep::begin(const mjData* d, std::size_t initial_samples) 
   vl.reference_end = pilot_->reference_end;
   // Reserved and written once here; the log then grows with the flight (sim/log_growth.h).
   reserveLogSamples(vl.samples, initial_samples);
+  most_samples_ = most_samples;
   pilot_->controller->reset();
   estimator_.begin(d, *vehicle_);
   saturated_since_ = -1.0;
@@ -49,7 +51,7 @@ AerialPilotStep::Outcome AerialPilotStep::step(const mjData* d, QuadrotorPlant& 
   plant.rotors().command(speeds);
 
   if (record) {
-    LogSample& x = appendLogSample(vl.samples);
+    LogSample& x = appendLogSample(vl.samples, most_samples_);
     x.t = d->time;
     x.ref_pos = ref.position;
     x.ref_vel = ref.velocity;

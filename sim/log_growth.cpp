@@ -16,11 +16,14 @@ void reserveLogSamples(std::vector<LogSample>& samples, std::size_t n) {
   samples.clear();
 }
 
-void growLogSamples(std::vector<LogSample>& samples) {
+void growLogSamples(std::vector<LogSample>& samples, std::size_t most) {
   const std::size_t n = samples.size();
-  // Growing a full vector to 2n allocates exactly 2n (libstdc++ grows by max(size, added)) and
-  // writes the new samples; shrinking back keeps the storage.
-  samples.resize(std::max(2 * n, kMinInitialLogSamples));
+  // reserve allocates exactly `target`; resize writes the new samples; shrinking back keeps the
+  // storage. A log already at `most` (it should not pass it) is left to emplace_back's doubling.
+  const std::size_t target = std::min(std::max(2 * n, kMinInitialLogSamples), most);
+  if (target <= n) return;
+  samples.reserve(target);
+  samples.resize(target);
   samples.resize(n);
 }
 

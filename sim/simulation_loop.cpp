@@ -98,9 +98,9 @@ void SimulationLoop::beginVehicles(const Scenario& scenario, std::vector<GroundP
   const AerialSensing sensing{scenario.sensors, scenario.estimator, cfg.seed};
   const auto& vehicles = world_.vehicles();
   // A modest share of the samples a whole run would log; the logs grow as the vehicles fly.
-  const std::size_t initial_samples = initialLogSamples(
-      static_cast<std::size_t>(cfg.max_time / (controls_per_log_ * physics_.controlDt())) + 2,
-      vehicles.size());
+  const std::size_t most_samples =
+      static_cast<std::size_t>(cfg.max_time / (controls_per_log_ * physics_.controlDt())) + 2;
+  const std::size_t initial_samples = initialLogSamples(most_samples, vehicles.size());
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
     if (vehicles[v].kind == VehicleKind::GroundRobot) {
       GroundPilotStep& g = drives_.emplace_back(vehicles[v], v, robots[pilot_[v]],
@@ -109,7 +109,7 @@ void SimulationLoop::beginVehicles(const Scenario& scenario, std::vector<GroundP
     } else {
       AerialPilotStep& f =
           flights_.emplace_back(vehicles[v], quadrotors[pilot_[v]], rules, sensing, v);
-      log_.vehicles.push_back(f.begin(d_.get(), initial_samples));
+      log_.vehicles.push_back(f.begin(d_.get(), initial_samples, most_samples));
     }
   }
 }
