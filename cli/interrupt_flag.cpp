@@ -1,5 +1,7 @@
 #include "cli/interrupt_flag.h"
 
+#include <pthread.h>
+
 #include <csignal>
 
 #include "core/stop_request.h"
@@ -20,9 +22,18 @@ const std::atomic<bool>& installInterruptFlag() {
     // A shell starts background jobs with SIGINT ignored so that Ctrl-C reaches only the
     // foreground one (POSIX, Shell Command Language 2.11): an inherited SIG_IGN stays.
     struct sigaction inherited {};
-    if (sigaction(SIGINT, nullptr, &inherited) != 0 || inherited.sa_handler != SIG_IGN)
+    sigset_t handled;
+    sigemptyset(&handled);
+    sigaddset(&handled, SIGTERM);
+    if (sigaction(SIGINT, nullptr, &inherited) != 0 || inherited.sa_handler != SIG_IGN) {
       sigaction(SIGINT, &sa, nullptr);
+      sigaddset(&handled, SIGINT);
+    }
     sigaction(SIGTERM, &sa, nullptr);
+    // A blocked signal is inherited across exec as well (a launcher that blocks them in the
+    // thread that starts cosim): blocked, they stayed pending and a run or a search went on to
+    // its time limit. The signals handled here are unblocked; threads started later inherit that.
+    pthread_sigmask(SIG_UNBLOCK, &handled, nullptr);
     return true;
   }();
   (void)installed;

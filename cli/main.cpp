@@ -6,6 +6,7 @@
 
 #include "cli/command.h"
 #include "core/input_error.h"
+#include "core/stop_requested_error.h"
 #include "sim/mujoco_messages.h"
 
 int main(int argc, char** argv) {
@@ -46,6 +47,11 @@ int main(int argc, char** argv) {
   } catch (const cosim::InputError& e) {
     std::cerr << "cosim: " << e.what() << "\n";
     return 2;
+  } catch (const cosim::StopRequestedError&) {
+    // A stage a command does not end itself (a chart's gnuplot killed midway): nothing of it
+    // was published.
+    std::cerr << "cosim: interrupted\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "cosim: internal error: " << cosim::printableText(e.what()) << "\n";
     return 3;

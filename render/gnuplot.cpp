@@ -1,17 +1,27 @@
 #include "render/gnuplot.h"
 
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "core/atomic_file.h"
 #include "core/display_text.h"
+#include "core/stop_request.h"
+#include "core/stop_requested_error.h"
 #include "core/temporary_name.h"
-#include "render/video_encoder.h"
+
+extern char** environ;
 
 namespace cosim {
 
@@ -87,17 +97,68 @@ std::string plotBoth(const std::string& base, int width, int height, const std::
   return s.str();
 }
 
+namespace {
+
+// gnuplot on plot.gp in `work_dir`, its output into plot.log there, in a process group of its
+// own (a Ctrl-C at the terminal reaches cosim only, which then ends gnuplot itself) with the
+// default dispositions of the signals cosim handles or ignores. Its pid.
+pid_t spawnGnuplot(const std::filesystem::path& work_dir) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, work_dir.c_str());
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "plot.log",
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t defaults, none;
+  sigemptyset(&defaults);
+  for (int sig : {SIGPIPE, SIGINT, SIGTERM}) sigaddset(&defaults, sig);
+  sigemptyset(&none);
+  posix_spawnattr_setpgroup(&attr, 0);
+  posix_spawnattr_setsigdefault(&attr, &defaults);
+  posix_spawnattr_setsigmask(&attr, &none);
+  posix_spawnattr_setflags(&attr,
+                           POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+  std::string program = "gnuplot", script = "plot.gp";
+  char* argv[] = {program.data(), script.data(), nullptr};
+  pid_t pid = -1;
+  const int rc = posix_spawnp(&pid, "gnuplot", &actions, &attr, argv, environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attr);
+  if (rc != 0)
+    throw std::runtime_error(std::string("cannot start gnuplot (is gnuplot-nox installed?): ") +
+                             std::strerror(rc));
+  return pid;
+}
+
+}  // namespace
+
 void runGnuplot(const std::string& script, const std::filesystem::path& work_dir) {
   const std::filesystem::path script_file = work_dir / "plot.gp", log_file = work_dir / "plot.log";
+  if (stopRequested()) throw StopRequestedError("stopped before plotting");
   {
     std::ofstream out(script_file);
     out << script;
     if (!out) throw std::runtime_error("cannot write " + script_file.string());
   }
-  const std::string cmd =
-      "cd " + shellQuote(work_dir.string()) + " && gnuplot plot.gp > plot.log 2>&1";
-  const int status = std::system(cmd.c_str());
-  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+  const pid_t pid = spawnGnuplot(work_dir);
+  // Waits for gnuplot, looking at the stop request every 10 ms: a stop ends gnuplot at once
+  // (a figure of 500 flights takes it many seconds).
+  int status = 0;
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid || (done < 0 && errno != EINTR)) break;
+    if (stopRequested()) {
+      kill(pid, SIGKILL);
+      while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      throw StopRequestedError("gnuplot stopped");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::ifstream in(log_file);
     std::ostringstream msg;
     msg << in.rdbuf();

@@ -8,7 +8,9 @@ namespace cosim {
 
 // Runs gnuplot on `script` with `work_dir` as its working directory (data files referenced by
 // relative names live there); the SVG files it made there are then made well-formed
-// (wellFormedSvgText). Throws std::runtime_error with gnuplot's messages on failure.
+// (wellFormedSvgText). Throws std::runtime_error with gnuplot's messages on failure, and
+// StopRequestedError (core/stop_requested_error.h) if a stop request came first or while gnuplot
+// ran (gnuplot is then killed and reaped).
 void runGnuplot(const std::string& script, const std::filesystem::path& work_dir);
 
 // A scratch folder for one figure, beside its outputs (`out_base`'s folder): gnuplot runs in it,

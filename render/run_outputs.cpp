@@ -7,6 +7,8 @@
 #include <optional>
 
 #include "core/input_error.h"
+#include "core/stop_request.h"
+#include "core/stop_requested_error.h"
 #include "render/figures.h"
 #include "render/html_report.h"
 #include "render/log_lookup.h"
@@ -132,7 +134,12 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
     done.final_image = "final.png";
     if (stop()) return done;
     say("plotting figures/");
-    done.figures = writeRunFigures(log, scenario, dir / "figures");
+    try {
+      done.figures = writeRunFigures(log, scenario, dir / "figures");
+    } catch (const StopRequestedError&) {
+      done.interrupted = true;  // gnuplot was ended: no figure was published
+      return done;
+    }
   }
   if (request.video) {
     for (const CameraKind camera : videoCameras(rs)) {

@@ -1,5 +1,7 @@
 #include "sim/aerial_pilot_step.h"
 
+#include "sim/log_growth.h"
+
 namespace cosim {
 
 AerialStepRules::AerialStepRules(const SimSettings& settings, const World& world,
@@ -19,7 +21,8 @@ AerialPilotStep::AerialPilotStep(const VehicleHandles& vehicle, VehiclePilot& pi
       airframe_(pilot.believed_airframe ? pilot.believed_airframe : &vehicle.params),
       estimator_(sensing.estimator, sensing.sensors, *airframe_, sensing.seed, vehicle_index) {}
 
-VehicleLog AerialPilotStep::begin(const mjData* d, std::size_t expected_samples) {
+VehicleLog AerialPilotStep::begin(const mjData* d, std::size_t initial_samples,
+                                  std::size_t most_samples) {
   VehicleLog vl;
   vl.name = vehicle_->name;
   vl.radius = vehicle_->params.radius;
@@ -27,10 +30,9 @@ VehicleLog AerialPilotStep::begin(const mjData* d, std::size_t expected_samples)
   vl.goal = pilot_->goal;
   vl.planned_path = pilot_->planned_path;
   vl.reference_end = pilot_->reference_end;
-  // Reserved and written once here, so that the loop does not meet the first touch of each page
-  // of its log (a page fault, in a virtual machine often a trip to the host) while it flies.
-  vl.samples.resize(expected_samples);
-  vl.samples.clear();
+  // Reserved and written once here; the log then grows with the flight (sim/log_growth.h).
+  reserveLogSamples(vl.samples, initial_samples);
+  most_samples_ = most_samples;
   pilot_->controller->reset();
   estimator_.begin(d, *vehicle_);
   saturated_since_ = -1.0;
@@ -54,7 +56,7 @@ AerialPilotStep::Outcome AerialPilotStep::step(const mjData* d, QuadrotorPlant& 
   }
 
   if (record) {
-    LogSample& x = vl.samples.emplace_back();
+    LogSample& x = appendLogSample(vl.samples, most_samples_);
     x.t = d->time;
     x.ref_pos = ref.position;
     x.ref_vel = ref.velocity;

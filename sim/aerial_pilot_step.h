@@ -59,8 +59,9 @@ class AerialPilotStep {
                   const AerialSensing& sensing, std::size_t vehicle_index);
 
   // The vehicle's log entry (name, size, thrust limit, goal, planned path, room for
-  // `expected_samples`); resets the controller and starts the estimator at the state in d.
-  VehicleLog begin(const mjData* d, std::size_t expected_samples);
+  // `initial_samples`, growing to at most `most_samples`, sim/log_growth.h); resets the
+  // controller and starts the estimator at the state in d.
+  VehicleLog begin(const mjData* d, std::size_t initial_samples, std::size_t most_samples);
 
   struct Outcome {
     bool done = false;       // arrived and held the goal for hold_after_arrival
@@ -79,6 +80,7 @@ class AerialPilotStep {
   const QuadrotorParams* airframe_;  // believed
   StateEstimator estimator_;
   double saturated_since_ = -1.0;  // since when the mixer has been saturated (negative: it is not)
+  std::size_t most_samples_ = 0;   // the most samples the run can log (sim/log_growth.h)
 };
 
 }  // namespace cosim

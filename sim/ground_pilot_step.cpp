@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "sim/log_growth.h"
+
 namespace cosim {
 
 PlanarState readPlanarState(const mjData* d, const VehicleHandles& v) {
@@ -93,7 +95,7 @@ void GroundPilotStep::recordSample(const mjData* d, const PlanarState& s,
                                    const PlanarReference& ref, const Eigen::Vector3d& pos,
                                    const GroundCommand& cmd, const PhysicsStepper& physics,
                                    VehicleLog& vl) const {
-  LogSample& x = vl.samples.emplace_back();
+  LogSample& x = appendLogSample(vl.samples, vl.samples.max_size());
   x.t = d->time;
   x.ref_pos = {ref.position.x(), ref.position.y(), 0.0};
   x.ref_vel = {ref.velocity.x(), ref.velocity.y(), 0.0};

@@ -13,9 +13,9 @@ namespace cosim {
 
 namespace {
 
-// The flight log keeps one sample (about 250 bytes) per vehicle per control step, reserved up
-// front: 20 million samples is about 5 GB. More is a mistake (a day at 10 kHz), refused before
-// anything is allocated.
+// The flight log keeps one sample (368 bytes) per vehicle per control step, as the flight goes
+// (sim/log_growth.h): 20 million samples, a run that flies its whole max_time, is about 7 GB.
+// More is a mistake (a day at 10 kHz), refused before anything is allocated.
 constexpr double kMaxLogSamples = 2e7;
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "sim/ground_vehicle_handles.h"
+#include "sim/log_growth.h"
 #include "sim/moving_obstacle_motion.h"
 
 namespace cosim {
@@ -95,9 +96,11 @@ void SimulationLoop::beginVehicles(const Scenario& scenario, std::vector<GroundP
   const AerialStepRules rules(cfg, scenario.world, options_.aerial_hold_after_arrival,
                               options_.max_saturated_time);
   const AerialSensing sensing{scenario.sensors, scenario.estimator, cfg.seed};
-  const std::size_t expected_samples =
-      static_cast<std::size_t>(cfg.max_time / (controls_per_log_ * physics_.controlDt())) + 2;
   const auto& vehicles = world_.vehicles();
+  // A modest share of the samples a whole run would log; the logs grow as the vehicles fly.
+  const std::size_t most_samples =
+      static_cast<std::size_t>(cfg.max_time / (controls_per_log_ * physics_.controlDt())) + 2;
+  const std::size_t initial_samples = initialLogSamples(most_samples, vehicles.size());
   for (std::size_t v = 0; v < vehicles.size(); ++v) {
     if (vehicles[v].kind == VehicleKind::GroundRobot) {
       GroundPilotStep& g = drives_.emplace_back(vehicles[v], v, robots[pilot_[v]],
@@ -106,7 +109,7 @@ void SimulationLoop::beginVehicles(const Scenario& scenario, std::vector<GroundP
     } else {
       AerialPilotStep& f =
           flights_.emplace_back(vehicles[v], quadrotors[pilot_[v]], rules, sensing, v);
-      log_.vehicles.push_back(f.begin(d_.get(), expected_samples));
+      log_.vehicles.push_back(f.begin(d_.get(), initial_samples, most_samples));
     }
   }
 }

@@ -8,7 +8,6 @@
 
 namespace cosim {
 
-using namespace urdf_mjcf;
 using tinyxml2::XMLDocument;
 using tinyxml2::XMLElement;
 
@@ -16,7 +15,7 @@ namespace {
 
 void addJoint(XMLDocument& doc, XMLElement* body, const std::string& name, const char* type,
               const char* axis) {
-  XMLElement* j = add(doc, body, "joint");
+  XMLElement* j = urdf_mjcf::add(doc, body, "joint");
   j->SetAttribute("name", name.c_str());
   j->SetAttribute("type", type);
   j->SetAttribute("axis", axis);
@@ -38,11 +37,11 @@ bool addUrdfVehicle(XMLDocument& doc, XMLElement* worldbody, const VehicleSpec& 
     planar = root->child_joints[0];
   urdf::LinkConstSharedPtr base = planar ? model->getLink(planar->child_link_name) : root;
 
-  XMLElement* body = add(doc, worldbody, "body");
+  XMLElement* body = urdf_mjcf::add(doc, worldbody, "body");
   body->SetAttribute("name", (prefix + "base").c_str());
   if (planar) {
-    const Eigen::Vector3d axis = vec(planar->axis);
-    const Eigen::Isometry3d origin = pose(planar->parent_to_joint_origin_transform);
+    const Eigen::Vector3d axis = urdf_mjcf::vec(planar->axis);
+    const Eigen::Isometry3d origin = urdf_mjcf::pose(planar->parent_to_joint_origin_transform);
     if ((origin.linear() * axis - Eigen::Vector3d::UnitZ()).norm() > 1e-6)
       throw InputError(file, "joint '" + planar->name + "' <axis>",
                        "a planar base joint must have its axis vertical (0 0 1)");
@@ -52,16 +51,17 @@ bool addUrdfVehicle(XMLDocument& doc, XMLElement* worldbody, const VehicleSpec& 
     if (origin.translation().head<2>().norm() > 1e-9)
       throw InputError(file, "joint '" + planar->name + "' <origin>",
                        "a planar base joint must have its origin at x = y = 0");
-    body->SetAttribute(
-        "pos",
-        fmt3(vehicle.start.x(), vehicle.start.y(), floor_z + origin.translation().z()).c_str());
+    body->SetAttribute("pos", urdf_mjcf::fmt3(vehicle.start.x(), vehicle.start.y(),
+                                              floor_z + origin.translation().z())
+                                  .c_str());
     addJoint(doc, body, prefix + "root_x", "slide", "1 0 0");
     addJoint(doc, body, prefix + "root_y", "slide", "0 1 0");
     addJoint(doc, body, prefix + "root_yaw", "hinge", "0 0 1");
   } else {
-    body->SetAttribute("pos", fmt3(vehicle.start.x(), vehicle.start.y(), floor_z).c_str());
-    body->SetAttribute("euler", ("0 0 " + fmt(vehicle.yaw_deg)).c_str());
-    add(doc, body, "freejoint")->SetAttribute("name", (prefix + "root").c_str());
+    body->SetAttribute("pos",
+                       urdf_mjcf::fmt3(vehicle.start.x(), vehicle.start.y(), floor_z).c_str());
+    body->SetAttribute("euler", ("0 0 " + urdf_mjcf::fmt(vehicle.yaw_deg)).c_str());
+    urdf_mjcf::add(doc, body, "freejoint")->SetAttribute("name", (prefix + "root").c_str());
   }
   UrdfLinkTree links(doc, *model, file, prefix, vehicle.model_file.parent_path());
   links.addBase(body, *base);

@@ -11,6 +11,7 @@
 
 #include "core/input_error.h"
 #include "core/input_file.h"
+#include "sim/mesh_size.h"
 
 namespace cosim {
 
@@ -116,6 +117,34 @@ class FragmentChecker {
       spend(e, textureTexels(e, width, height, file_samples) * kBytesPerTexel);
     }
     if (name == "mesh" && e->Attribute("file")) spend(e, mesh_file_bytes_);
+    if (name == "mesh") countMesh(e, e->Attribute("file") ? mesh_file_size_ : inlineMeshSize(e));
+  }
+
+  // A mesh's vertices and triangles, against the budgets of one mesh and of the whole fragment
+  // (MuJoCo compiles them uninterruptibly, in time quadratic in each mesh's vertices).
+  void countMesh(const XMLElement* e, const MeshSize& size) {
+    if (!size.known) return;
+    const char* given = e->Attribute("name");
+    const char* file = e->Attribute("file");
+    const std::string mesh =
+        std::string("mesh ") + (given  ? "'" + std::string(given) + "'"
+                                : file ? std::filesystem::path(file).filename().string()
+                                       : std::string("(unnamed)"));
+    const auto over = [&](long count, long limit, const std::string& what, const std::string& of) {
+      if (count > limit)
+        fail(e, mesh + ": " + std::to_string(count) + " " + what + of + ", more than the " +
+                    std::to_string(limit) + " allowed (MuJoCo's compile time grows with the " +
+                    "square of a mesh's vertices; simplify or decimate the mesh)");
+    };
+    // Triangles first: an STL over its triangle budget has its vertices only bounded, not read.
+    over(size.triangles, kMaxMeshTriangles, "triangles", " in this mesh");
+    over(size.vertices, kMaxMeshVertices, "vertices", " in this mesh");
+    mesh_vertices_ += size.vertices;
+    mesh_triangles_ += size.triangles;
+    over(mesh_vertices_, kMaxFragmentMeshVertices, "vertices",
+         " in the fragment's meshes up to here");
+    over(mesh_triangles_, kMaxFragmentMeshTriangles, "triangles",
+         " in the fragment's meshes up to here");
   }
 
   // The texels MuJoCo makes of a <texture>. A built-in one (any `builtin` but "none") is made
@@ -204,7 +233,10 @@ class FragmentChecker {
     }
     const std::string name = e->Name();
     long samples = 0;
-    if (name == "mesh") mesh_file_bytes_ = static_cast<long>(bytes.size());
+    if (name == "mesh") {
+      mesh_file_bytes_ = static_cast<long>(bytes.size());
+      mesh_file_size_ = meshFileSize(p.filename().string(), bytes, kMaxMeshTriangles);
+    }
     if (name == "hfield" || name == "texture") {
       long w = 0, h = 0;
       if (const auto size = pngSize(bytes); size[0] > 0) {
@@ -237,6 +269,9 @@ class FragmentChecker {
   long elements_ = 0;
   long spent_ = 0;            // bytes the elements so far cost (kFragmentMemoryBudget)
   long mesh_file_bytes_ = 0;  // of the last mesh file read
+  MeshSize mesh_file_size_;   // of the last mesh file read
+  long mesh_vertices_ = 0;    // of the meshes so far (kMaxFragmentMeshVertices)
+  long mesh_triangles_ = 0;   // of the meshes so far (kMaxFragmentMeshTriangles)
 };
 
 // The fragment parsed, or throws InputError.

@@ -28,6 +28,19 @@ constexpr long kMaxTexturePixels = 2048L * 2048L;
 // scale with them (see kMaxGridMapBoxes).
 constexpr long kMaxFragmentElements = 20000;
 
+// Meshes (sim/mesh_size.h counts them before MuJoCo sees them). MuJoCo 2.2.2 compiles a mesh in
+// time quadratic in its vertices (mapping its convex hull's faces back to its vertices), in one
+// uninterruptible call: measured here (CPU time of mj_loadXML, one mesh whose vertices all lie
+// on its hull, the worst case), 5000 vertices 0.06 s, 10000 0.18 s, 20000 0.61 s; a 50000-
+// triangle closed STL (25439 vertices) 1.0 s, and 18 s of wall time on this 2-core machine
+// while it was shared. A mesh may have 10000 vertices and 20000 triangles (a closed surface
+// of V vertices has 2V - 4 triangles); a fragment's meshes together twice that, so its meshes
+// compile in under 0.4 s of CPU time and a stop request waits seconds at most.
+constexpr long kMaxMeshVertices = 10000;
+constexpr long kMaxMeshTriangles = 20000;
+constexpr long kMaxFragmentMeshVertices = 20000;
+constexpr long kMaxFragmentMeshTriangles = 40000;
+
 // The memory a whole fragment may cost a run, counted before MuJoCo allocates anything: its
 // height fields, textures (every face of a cube or skybox, built-in ones too) and mesh files
 // together. 256 MB: the bundled default scenario's run peaks at 189 MB (measured, --no-video),

@@ -182,6 +182,10 @@ Conflict CbsSearch::choose(int id, const std::vector<Conflict>& list) {
   };
   int best = 0, best_rank = -1;
   for (std::size_t i = 0; i < list.size() && best_rank < 2; ++i) {
+    // Each agent's first look builds its MDD (a search of its time-expanded grid that does not
+    // look at the deadline): between conflicts, a stop request or the deadline ends the choice
+    // (the search then ends at its next check).
+    if (i > 0 && deadline_.expired()) break;
     const int rank = static_cast<int>(cardinalFor(list[i].a, list[i], true)) +
                      static_cast<int>(cardinalFor(list[i].b, list[i], false));
     if (rank > best_rank) best_rank = rank, best = static_cast<int>(i);
