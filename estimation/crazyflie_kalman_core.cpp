@@ -77,15 +77,31 @@ void CrazyflieKalmanCore::predict(const Eigen::Vector3d& accel, const Eigen::Vec
   //   dp/dp = I - [omega]x dt (- dragB dt flying),  dp/dd = -g [R^T e3]x dt
   //                                                 (p' = ... - g (I - [d]x) R^T e3)
   //   dd/dd = the rotation of the error by the step's turn, Rodrigues parameters omega dt / 2.
-  Covariance A = Covariance::Identity();
-  A.block<3, 3>(kPosition, kVelocity) = R_ * dt;
-  A.block<3, 3>(kPosition, kAttitude) = -R_ * crossProductMatrix(p) * dt;
-  A.block<3, 3>(kVelocity, kVelocity) -= crossProductMatrix(gyro) * dt;
-  if (flying) A.block<3, 3>(kVelocity, kVelocity).diagonal() -= params_.drag_b * dt;
-  A.block<3, 3>(kVelocity, kAttitude) = -g * crossProductMatrix(up_in_body) * dt;
-  A.block<3, 3>(kAttitude, kAttitude) = attitudeErrorRotation(0.5 * dt * gyro);
-  const Covariance AP = A * P_;
-  P_.noalias() = AP * A.transpose();
+  // P <- A P A^T block by block (A is the identity but for these five blocks: 810 multiply-adds
+  // against 1458 for two dense products), rows first (M = A P), then columns (M A^T); each pass
+  // overwrites a block only after every block that reads it.
+  const Eigen::Matrix3d Apv = R_ * dt;
+  const Eigen::Matrix3d Apa = -R_ * crossProductMatrix(p) * dt;
+  Eigen::Matrix3d Avv = Eigen::Matrix3d::Identity() - crossProductMatrix(gyro) * dt;
+  if (flying) Avv.diagonal() -= params_.drag_b * dt;
+  const Eigen::Matrix3d Ava = -g * crossProductMatrix(up_in_body) * dt;
+  const Eigen::Matrix3d Aaa = attitudeErrorRotation(0.5 * dt * gyro);
+  using Rows = Eigen::Matrix<double, 3, kDim>;
+  using Cols = Eigen::Matrix<double, kDim, 3>;
+  P_.middleRows<3>(kPosition) +=
+      Apv.lazyProduct(P_.middleRows<3>(kVelocity)) + Apa.lazyProduct(P_.middleRows<3>(kAttitude));
+  const Rows v_rows =
+      Avv.lazyProduct(P_.middleRows<3>(kVelocity)) + Ava.lazyProduct(P_.middleRows<3>(kAttitude));
+  P_.middleRows<3>(kVelocity) = v_rows;
+  const Rows a_rows = Aaa.lazyProduct(P_.middleRows<3>(kAttitude));
+  P_.middleRows<3>(kAttitude) = a_rows;
+  P_.middleCols<3>(kPosition) += P_.middleCols<3>(kVelocity).lazyProduct(Apv.transpose()) +
+                                 P_.middleCols<3>(kAttitude).lazyProduct(Apa.transpose());
+  const Cols v_cols = P_.middleCols<3>(kVelocity).lazyProduct(Avv.transpose()) +
+                      P_.middleCols<3>(kAttitude).lazyProduct(Ava.transpose());
+  P_.middleCols<3>(kVelocity) = v_cols;
+  const Cols a_cols = P_.middleCols<3>(kAttitude).lazyProduct(Aaa.transpose());
+  P_.middleCols<3>(kAttitude) = a_cols;
   bounded_ = false;
   // (The process noise is added by the caller, at its own cadence: addProcessNoise.)
 

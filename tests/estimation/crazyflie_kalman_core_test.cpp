@@ -70,6 +70,45 @@ TEST(CrazyflieKalmanCore, CoriolisTermAndGyroIntegration) {
   EXPECT_NEAR(c.attitude().angularDistance(expected), 0.0, 1e-12);
 }
 
+// The covariance prediction is A P A^T with predictDt's A, written out here entry by entry as in
+// the firmware (body velocity p, gyro w, R the attitude, d = w dt / 2), for a tilted, turning,
+// moving vehicle and a full P.
+TEST(CrazyflieKalmanCore, CovariancePredictionIsTheFirmwaresLinearisedDynamics) {
+  CrazyflieKalmanCore c = levelCoreAt(Vector3d::Zero());
+  const Quaterniond q = quaternionFromRotationVector(Vector3d(0.2, -0.1, 0.7));
+  const Vector3d v(0.8, -0.3, 0.2), w(1.0, -2.0, 0.5);
+  c.setState(Vector3d::Zero(), v, q);
+  // Correlate everything first: a turning prediction and updates.
+  c.predict(Vector3d(0.0, 0.0, kG), Vector3d(0.3, 0.2, -0.4), 0.01, true);
+  c.addProcessNoise(0.01);
+  c.updatePosition(Vector3d(0.01, 0.02, -0.01), 0.05);
+  c.finalize();
+  const CrazyflieKalmanCore::Covariance P0 = c.covariance();
+  const Matrix3d R = c.rotation();
+  const Vector3d S = c.bodyVelocity();
+  const double dt = 0.01;
+  CrazyflieKalmanCore::Covariance A = CrazyflieKalmanCore::Covariance::Identity();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) A(i, 3 + j) = R(i, j) * dt;
+    A(i, 6) = (S.y() * R(i, 2) - S.z() * R(i, 1)) * dt;
+    A(i, 7) = (-S.x() * R(i, 2) + S.z() * R(i, 0)) * dt;
+    A(i, 8) = (S.x() * R(i, 1) - S.y() * R(i, 0)) * dt;
+  }
+  A(4, 3) = -w.z() * dt, A(5, 3) = w.y() * dt, A(3, 4) = w.z() * dt;
+  A(5, 4) = -w.x() * dt, A(3, 5) = -w.y() * dt, A(4, 5) = w.x() * dt;
+  A(4, 6) = -kG * R(2, 2) * dt, A(5, 6) = kG * R(2, 1) * dt;
+  A(3, 7) = kG * R(2, 2) * dt, A(5, 7) = -kG * R(2, 0) * dt;
+  A(3, 8) = -kG * R(2, 1) * dt, A(4, 8) = kG * R(2, 0) * dt;
+  const double d0 = w.x() * dt / 2, d1 = w.y() * dt / 2, d2 = w.z() * dt / 2;
+  A.block<3, 3>(6, 6) << 1 - d1 * d1 / 2 - d2 * d2 / 2, d2 + d0 * d1 / 2, -d1 + d0 * d2 / 2,  //
+      -d2 + d0 * d1 / 2, 1 - d0 * d0 / 2 - d2 * d2 / 2, d0 + d1 * d2 / 2,                     //
+      d1 + d0 * d2 / 2, -d0 + d1 * d2 / 2, 1 - d0 * d0 / 2 - d1 * d1 / 2;
+  const CrazyflieKalmanCore::Covariance expected = A * P0 * A.transpose();
+  c.predict(Vector3d(0.4, -0.2, kG), w, dt, true);
+  EXPECT_LT((c.covariance() - expected).cwiseAbs().maxCoeff(),
+            1e-12 * expected.cwiseAbs().maxCoeff());
+}
+
 // addProcessNoiseDt for one 1 ms loop: (procNoiseAcc dt)^2 on each velocity, (measNoiseGyro
 // dt)^2 on each attitude error; the initial 100 m position spread is cut to MAX_COVARIANCE.
 TEST(CrazyflieKalmanCore, ProcessNoiseOfOneLoopAndTheCovarianceBounds) {
