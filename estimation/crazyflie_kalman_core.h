@@ -11,7 +11,8 @@
 // State (9): position x in the world, velocity p in the BODY frame, attitude error d (3) about a
 // reference quaternion q (body to world) that the error is folded into after every update
 // (finalize), so d is zero at the start of every prediction; covariance P, 9 x 9. No IMU biases:
-// the firmware's sensor task removes the gyroscope's bias before the estimator sees it.
+// the firmware's sensor task removes the gyroscope's bias, measured at rest, before the estimator
+// sees it (src/hal/src/sensors_bmi088_bmp3xx.c, processGyroBias).
 //
 // Model (ICRA 2015, Sec. III; kalman_core.c predictDt), with omega the gyroscope and R = R(q):
 //   x' = R p,   p' = a - omega x p - g R^T e3,   q' = q (x) (0, omega / 2).
