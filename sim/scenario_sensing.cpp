@@ -130,46 +130,90 @@ void readSensors(const YamlReader& r, const YAML::Node& n, Scenario& s) {
                  num(physics_rate) + " Hz); lower sim.timestep or the sensor's rate");
 }
 
+// The estimators that filter sensor data (the rest is ground_truth).
+bool isFilter(const std::string& name) {
+  return name == "ekf" || name == "crazyflie_kalman";
+}
+
+// estimator.fuse: the EKF either way; the Crazyflie's estimator fuses on arrival only.
+void readFuse(const YamlReader& r, const YAML::Node& n, const std::string& name, Scenario& s) {
+  if (!isFilter(name))
+    r.fail(n, "estimator.fuse", "only a filter fuses (name: ekf or crazyflie_kalman)");
+  const std::string fuse = r.text(n, "estimator.fuse");
+  if (fuse != "at_validity" && fuse != "on_arrival")
+    r.fail(n, "estimator.fuse", "must be 'at_validity' or 'on_arrival'");
+  if (name == "crazyflie_kalman" && fuse != "on_arrival")
+    r.fail(n, "estimator.fuse",
+           "crazyflie_kalman fuses each fix when it arrives, as the firmware does: only "
+           "'on_arrival' (for latency compensation use name: ekf)");
+  s.estimator.fix_timing = fuse == "on_arrival" ? FixTiming::OnArrival : FixTiming::AtValidity;
+}
+
+// crazyflie_kalman's drag term: estimator.drag (dragB_x/y/z, 1/s) and center_of_pressure (m).
+void readKalmanDrag(const YamlReader& r, const YAML::Node& n, const std::string& name,
+                    Scenario& s) {
+  // dragB in 1/s (the Flapper's largest is 4.2), the centre of pressure within a metre.
+  const struct {
+    const char* key;
+    Eigen::Vector3d* out;
+    double least, most;
+  } keys[] = {{"drag", &s.estimator.drag, 0.0, 100.0},
+              {"center_of_pressure", &s.estimator.center_of_pressure, -1.0, 1.0}};
+  for (const auto& k : keys) {
+    if (!n[k.key]) continue;
+    const std::string where = std::string("estimator.") + k.key;
+    if (name != "crazyflie_kalman")
+      r.fail(n[k.key], where, "only crazyflie_kalman has a drag term (name: crazyflie_kalman)");
+    *k.out = r.vec3(n[k.key], where);
+    if (!(k.out->minCoeff() >= k.least && k.out->maxCoeff() <= k.most))
+      r.fail(n[k.key], where,
+             "each component must be in [" + num(k.least) + ", " + num(k.most) + "]");
+  }
+}
+
 void readEstimator(const YamlReader& r, const YAML::Node& root, Scenario& s) {
   const YAML::Node n = root["estimator"];
   const bool given = n.IsDefined() && !n.IsNull();
   std::string name = s.sensors.ideal() ? "ground_truth" : "ekf";
   if (given) {
     r.requireMap(n, "estimator");
-    r.checkKeys(n, "estimator", {"name", "predict_rate", "fuse", "position_std", "attitude_std"});
-    if (!n["name"]) r.fail(n, "estimator", "missing 'name' (ekf or ground_truth)");
+    r.checkKeys(n, "estimator",
+                {"name", "predict_rate", "fuse", "position_std", "attitude_std", "drag",
+                 "center_of_pressure"});
+    if (!n["name"])
+      r.fail(n, "estimator", "missing 'name' (ekf, crazyflie_kalman or ground_truth)");
     name = r.text(n["name"], "estimator.name");
-    if (name != "ekf" && name != "ground_truth")
-      r.fail(n["name"], "estimator.name", "must be 'ekf' or 'ground_truth'");
+    if (!isFilter(name) && name != "ground_truth")
+      r.fail(n["name"], "estimator.name", "must be 'ekf', 'crazyflie_kalman' or 'ground_truth'");
     if (n["predict_rate"]) {
-      if (name != "ekf")
-        r.fail(n["predict_rate"], "estimator.predict_rate", "only the ekf predicts (name: ekf)");
-      s.estimator.predict_rate = r.number(n["predict_rate"], "estimator.predict_rate", 0.1, 1e6);
+      if (!isFilter(name))
+        r.fail(n["predict_rate"], "estimator.predict_rate",
+               "only a filter predicts (name: ekf or crazyflie_kalman)");
+      // crazyflie_kalman predicts at whole ticks of its 1 kHz loop: at most every tick.
+      const double most = name == "crazyflie_kalman" ? 1000.0 : 1e6;
+      s.estimator.predict_rate = r.number(n["predict_rate"], "estimator.predict_rate", 0.1, most);
     }
-    if (n["fuse"]) {
-      if (name != "ekf") r.fail(n["fuse"], "estimator.fuse", "only the ekf fuses (name: ekf)");
-      const std::string fuse = r.text(n["fuse"], "estimator.fuse");
-      if (fuse != "at_validity" && fuse != "on_arrival")
-        r.fail(n["fuse"], "estimator.fuse", "must be 'at_validity' or 'on_arrival'");
-      s.estimator.fix_timing = fuse == "on_arrival" ? FixTiming::OnArrival : FixTiming::AtValidity;
-    }
+    if (n["fuse"]) readFuse(r, n["fuse"], name, s);
+    if (name == "crazyflie_kalman") s.estimator.fix_timing = FixTiming::OnArrival;
     // The fixes' assumed standard deviations: m (position), rad (attitude, at most pi).
     const auto fixStd = [&](const char* key, double most, double& out) {
       if (!n[key]) return;
       const std::string where = std::string("estimator.") + key;
-      if (name != "ekf") r.fail(n[key], where, "only the ekf weighs fixes (name: ekf)");
+      if (!isFilter(name))
+        r.fail(n[key], where, "only a filter weighs fixes (name: ekf or crazyflie_kalman)");
       out = r.number(n[key], where, 1e-9, most);
     };
     fixStd("position_std", 1e3, s.estimator.position_std);
     fixStd("attitude_std", M_PI, s.estimator.attitude_std);
+    readKalmanDrag(r, n, name, s);
   }
   s.estimator.name = name;
-  if (name != "ekf") return;
+  if (!isFilter(name)) return;
   // Named by the user: the estimator is at fault; chosen by default: the sensors are.
   const YAML::Node at = given ? n["name"] : root["sensors"];
   const std::string key = given ? "estimator.name" : "sensors";
   const std::string who =
-      given ? "'ekf'" : "the default estimator 'ekf' (or estimator: {name: ground_truth})";
+      given ? "'" + name + "'" : "the default estimator 'ekf' (or estimator: {name: ground_truth})";
   if (s.sensors.ideal())
     r.fail(at, key,
            who +

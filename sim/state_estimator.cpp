@@ -5,6 +5,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "estimation/crazyflie_kalman_estimator.h"
 #include "estimation/latency_compensated_ekf.h"
 
 namespace cosim {
@@ -39,6 +40,23 @@ double maximumLatency(const SensorSettings& s) {
   return std::max(pos, att) + 0.05;
 }
 
+// The standard deviations the Crazyflie's estimator weighs an external pose with by default:
+// crazyflie-firmware src/modules/src/crtp_localization_service.c, extPosStdDev = 0.01 m and
+// extQuatStdDev = 4.5e-3 rad (Crazyswarm2 sets 1e-3 and 0.05: estimator.position_std and
+// attitude_std).
+constexpr double kExtPosStdDev = 0.01;
+constexpr double kExtQuatStdDev = 4.5e-3;
+
+CrazyflieKalmanParams crazyflieKalmanParams(const EstimatorSettings& e,
+                                            const QuadrotorParams& airframe) {
+  CrazyflieKalmanParams p;
+  p.drag_b = e.drag;
+  p.center_of_pressure = e.center_of_pressure;
+  // The world's gravity, as the vehicle's own (the firmware's GRAVITY_MAGNITUDE is 9.81).
+  p.gravity = airframe.gravity;
+  return p;
+}
+
 }  // namespace
 
 VehicleState readVehicleState(const mjData* d, const VehicleHandles& v) {
@@ -66,6 +84,13 @@ StateEstimator::StateEstimator(const EstimatorSettings& estimator, const SensorS
     ekf_ = std::make_unique<LatencyCompensatedEkf>(sensors.imu.noise, airframe.gravity,
                                                    maximumLatency(sensors), sensors.imu.rate,
                                                    estimator.predict_rate, estimator.fix_timing);
+  } else if (estimator.name == "crazyflie_kalman") {
+    if (!sensors.imu.present || !sensors.position.present)
+      throw std::invalid_argument("the Crazyflie's Kalman estimator needs an IMU and a position");
+    kalman_ = std::make_unique<CrazyflieKalmanEstimator>(crazyflieKalmanParams(estimator, airframe),
+                                                         estimator.predict_rate);
+    if (!(position_std_ > 0.0)) position_std_ = kExtPosStdDev;
+    if (!(attitude_std_ > 0.0)) attitude_std_ = kExtQuatStdDev;
   }
 }
 
@@ -74,6 +99,12 @@ StateEstimator::StateEstimator(StateEstimator&&) noexcept = default;
 StateEstimator& StateEstimator::operator=(StateEstimator&&) noexcept = default;
 
 void StateEstimator::begin(const mjData* d, const VehicleHandles& v) {
+  imu_seen_ = false;
+  latest_imu_ = ImuMeasurement{};
+  if (kalman_) {
+    beginCrazyflieKalman(d, v);
+    return;
+  }
   if (!ekf_) return;
   const VehicleState truth = readVehicleState(d, v);
   const InitialSpread spread = initialSpread(sensors_);
@@ -96,13 +127,34 @@ void StateEstimator::begin(const mjData* d, const VehicleHandles& v) {
                         spread.gyro_bias};
   for (int b = 0; b < 5; ++b) P0.block<3, 3>(3 * b, 3 * b).diagonal().setConstant(sd[b] * sd[b]);
   ekf_->initialise(x0, P0);
-  imu_seen_ = false;
+}
+
+void StateEstimator::beginCrazyflieKalman(const mjData* d, const VehicleHandles& v) {
+  // The firmware's filter has settled on the ground before a flight; here the flight starts in
+  // the air, so it starts at the truth with the errors its initial covariance allows for the
+  // velocity and attitude drawn from the seeded stream (stdDevInitialVelocity and
+  // stdDevInitialAttitude_*, 0.01 each); its position is known to it only by the first fix.
+  const VehicleState truth = readVehicleState(d, v);
+  const CrazyflieKalmanParams& p = kalman_->core().params();
+  std::mt19937_64 rng(seed_);
+  std::normal_distribution<double> n(0.0, 1.0);
+  const Eigen::Vector3d dv(p.std_initial_velocity * n(rng), p.std_initial_velocity * n(rng),
+                           p.std_initial_velocity * n(rng));
+  const Eigen::Vector3d dtheta(p.std_initial_attitude_rollpitch * n(rng),
+                               p.std_initial_attitude_rollpitch * n(rng),
+                               p.std_initial_attitude_yaw * n(rng));
+  const Eigen::Quaterniond q =
+      (truth.attitude * Eigen::Quaterniond(Eigen::AngleAxisd(dtheta.norm(), dtheta.normalized())))
+          .normalized();
+  kalman_->initialise(d->time, truth.position, truth.velocity + truth.attitude * dv, q);
 }
 
 VehicleState StateEstimator::estimate(const mjData* d, const VehicleHandles& v,
                                       QuadrotorPlant& plant) {
   VehicleState s;
-  if (!ekf_) {
+  if (kalman_) {
+    s = estimateCrazyflieKalman(d, plant);
+  } else if (!ekf_) {
     s = readVehicleState(d, v);
     s.specific_force = plant.trueSpecificForce(d);
   } else {
@@ -130,6 +182,43 @@ VehicleState StateEstimator::estimate(const mjData* d, const VehicleHandles& v,
     }
   }
   s.rotor_thrusts = airframe_.thrust_coefficient * plant.rotors().speeds().cwiseAbs2();
+  return s;
+}
+
+VehicleState StateEstimator::estimateCrazyflieKalman(const mjData* d, QuadrotorPlant& plant) {
+  SensorReadings& in = readings_;
+  plant.takeDelivered(d->time, in);
+  for (const ImuMeasurement& z : in.imu) kalman_->addImu(z);
+  if (!in.imu.empty()) {
+    latest_imu_ = in.imu.back();
+    imu_seen_ = true;
+  }
+  // Each fix reaches the estimator's queue now (the firmware's extPosStdDev / extQuatStdDev, or
+  // the scenario's), positions before attitudes as the halves of one pose.
+  for (PositionMeasurement z : in.position) {
+    z.sigma = position_std_;
+    kalman_->addPosition(z, d->time);
+  }
+  for (AttitudeMeasurement z : in.attitude) {
+    z.sigma = attitude_std_;
+    kalman_->addAttitude(z, d->time);
+  }
+  // Flying: a motor commanded above idle (the Brushless build's rotors have no idle speed here:
+  // any commanded speed). The commands are the previous control step's, which held since.
+  const bool thrust = plant.rotors().commands().maxCoeff() > 0.0;
+  kalman_->advanceTo(d->time, thrust);
+  VehicleState s;
+  s.position = kalman_->position();
+  s.velocity = kalman_->velocity();
+  s.attitude = kalman_->attitude();
+  if (imu_seen_) {
+    // The firmware's controllers read the gyroscope and accelerometer themselves: the latest
+    // sample, with no bias estimate (the Kalman estimator has none).
+    s.angular_velocity = latest_imu_.gyro;
+    s.specific_force = latest_imu_.accel;
+  } else {
+    s.specific_force = airframe_.gravity * Eigen::Vector3d::UnitZ();
+  }
   return s;
 }
 

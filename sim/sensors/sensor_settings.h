@@ -3,6 +3,7 @@
 // "Sensors" and "Estimator"). Presets and the source of each default are in
 // sim/sensors/sensor_presets.cpp; the sensor models in sim/sensors/imu_sensor.h and
 // sim/sensors/pose_sensor.h.
+#include <Eigen/Core>
 #include <string>
 
 #include "estimation/fix_timing.h"
@@ -46,8 +47,8 @@ struct SensorSettings {
   bool ideal() const { return !imu.present && !position.present && !attitude.present; }
 };
 
-// estimator: {name: ekf | ground_truth, predict_rate, fuse, position_std, attitude_std}. Absent:
-// ground_truth with ideal sensing, ekf otherwise.
+// estimator: {name: ekf | crazyflie_kalman | ground_truth, predict_rate, fuse, position_std,
+// attitude_std, drag, center_of_pressure}. Absent: ground_truth with ideal sensing, ekf otherwise.
 struct EstimatorSettings {
   std::string name = "ground_truth";
   // fuse: at_validity (default) fuses a late fix at the instant it was valid for, exactly;
@@ -64,6 +65,11 @@ struct EstimatorSettings {
   // extQuatStdDev; 0: the sensor's own noise (sensors.position.noise, sensors.attitude.noise_deg).
   double position_std = 0.0;
   double attitude_std = 0.0;
+  // crazyflie_kalman only: the drag term of builds that have it (estimation/
+  // crazyflie_kalman_params.h), dragB_x/y/z in 1/s and cop_x/y/z in m, body frame; zero (no
+  // term) by default, as in the rig's 2024 build.
+  Eigen::Vector3d drag = Eigen::Vector3d::Zero();
+  Eigen::Vector3d center_of_pressure = Eigen::Vector3d::Zero();
 };
 
 }  // namespace cosim

@@ -128,6 +128,12 @@ TEST(ReferenceFlight, BenchSectionComparesTheLoopWithBareStepsOnTheSameFlight) {
   EXPECT_GT(figures["rmse_m"], 1e-4);  // it flew the reference (2 s of it)
   EXPECT_LT(figures["rmse_m"], 0.2);
   EXPECT_NE(s.note.find("under cascade"), std::string::npos) << s.note;
+  // The same flight with the firmware's Kalman estimator instead of the EKF.
+  ASSERT_EQ(figures.count("crazyflie_kalman_ratio_to_bare"), 1u);
+  EXPECT_GT(figures["crazyflie_kalman_ratio_to_bare"], 0.0);
+  EXPECT_GT(figures["crazyflie_kalman_rmse_m"], 1e-4);
+  EXPECT_LT(figures["crazyflie_kalman_rmse_m"], 0.2);
+  EXPECT_NE(figures["crazyflie_kalman_rmse_m"], figures["rmse_m"]);  // another estimator flew it
 }
 
 }  // namespace
