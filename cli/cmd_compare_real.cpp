@@ -7,6 +7,7 @@
 #include "cli/option_checks.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "experiments/compare/compare_report.h"
 
 namespace cosim::cli {
@@ -59,8 +60,12 @@ void compareReal(const CompareArgs& a) {
   const FlightLog log = readFlightLog(a.log, log_options);
   const FlightComparison c = compareFlights(run, log, comparisonOptions(a));
   const std::filesystem::path dir = prepareOutputDir(out_dir, "compare");
+  // Only an earlier comparison cosim can prove it wrote is replaced (core/output_manifest.h);
+  // what is written joins the folder's manifest (the run's, by default), last.
+  OutputManifestScope manifest(dir, "compare-real");
   removeStaleResults(dir, {"compare.json", "compare.md", "compare.png", "compare.svg"});
   writeCompareReport(dir, CompareInputs{a.run_dir, &run, &log}, c);
+  manifest.finish();
   std::printf(
       "real RMSE %.4f m, simulated %.4f m, ratio %.3f; time offset %.4f s (%s), start "
       "offset [%.4f, %.4f, %.4f] m (%s)\nwritten: %s/compare.json, compare.md, "
