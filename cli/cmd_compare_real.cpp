@@ -11,6 +11,7 @@
 #include "cli/run_folder.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "experiments/compare/compare_report.h"
 
 namespace cosim::cli {
@@ -78,9 +79,13 @@ int compareReal(const CompareArgs& a) {
   }
   if (interrupt.load()) return interrupted();
   const std::filesystem::path dir = prepareOutputDir(out_dir, "compare");
+  // Only an earlier comparison cosim can prove it wrote is replaced (core/output_manifest.h);
+  // what is written joins the folder's manifest (the run's, by default), last.
+  OutputManifestScope manifest(dir, "compare-real");
   removeStaleResults(dir, {"compare.json", "compare.md", "compare.png", "compare.svg"});
   writeCompareReport(dir, CompareInputs{a.run_dir, &run, &log}, c);
   for (const std::string& w : c.warnings) std::cerr << "cosim: warning: " << w << "\n";
+  manifest.finish();
   std::printf(
       "alignment %s: real RMSE %.4f m, simulated %.4f m, ratio %.3f; time offset %.4f s (%s), "
       "start offset [%.4f, %.4f, %.4f] m (%s); mean offset real - simulated [%.4f, %.4f, "

@@ -8,6 +8,7 @@
 #include "cli/run_folder.h"
 #include "core/atomic_file.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "run/run_mcap.h"
 #include "sim/world_model.h"
 
@@ -41,6 +42,7 @@ void addExportMcapCommand(CLI::App& app, CommandContext& ctx) {
     const McapExport file =
         runToMcap(world, s, log, a->rate, std::string("cosim ") + COSIM_VERSION);
     writeFileAtomically(out, file.bytes);
+    writeOutputManifestOf(out, "export-mcap");  // proves the file cosim's to a later export
     std::cout << "written: " << out.string() << " (" << file.messages << " messages on "
               << file.channels << " channels, " << file.bytes.size() << " bytes)\n";
     ctx.status = 0;

@@ -16,6 +16,8 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
+#include "core/temporary_name.h"
 #include "sim/world_model.h"
 
 namespace cosim::cli {
@@ -44,21 +46,22 @@ void addExportMjcfCommand(CLI::App& app, CommandContext& ctx) {
     const Scenario s = loadScenario(a->scenario, a->sets);
     const std::filesystem::path dir = out.parent_path().empty() ? "." : out.parent_path();
     const WorldModel world = WorldModel::build(s);  // compiles it: MuJoCo keeps its last XML
-    // MuJoCo writes the file itself: into a temporary name, then read back and written in place
+    // MuJoCo writes the file itself (following whatever is at the name it is given): into a new
+    // folder of cosim's own under a temporary name, then read back and written in place
     // atomically like every other output.
-    const std::filesystem::path tmp =
-        dir / ("." + out.filename().string() + ".mjcf" + std::to_string(::getpid()));
+    const std::filesystem::path work = createTemporaryFolder(dir / out.filename(), ".mjcf");
+    const std::filesystem::path tmp = work / "model.xml";
     char error[1024] = "";
-    if (!mj_saveLastXML(tmp.c_str(), world.model(), error, sizeof error)) {
-      std::filesystem::remove(tmp);
-      throw std::runtime_error("mujoco could not write the model: " + std::string(error));
-    }
+    const bool saved = mj_saveLastXML(tmp.c_str(), world.model(), error, sizeof error);
     std::ifstream in(tmp);
     std::ostringstream text;
     text << "<!-- Composed by cosim from " << s.file << " (cosim export-mjcf). -->\n" << in.rdbuf();
     in.close();
-    std::filesystem::remove(tmp);
+    std::error_code ignored;
+    std::filesystem::remove_all(work, ignored);
+    if (!saved) throw std::runtime_error("mujoco could not write the model: " + std::string(error));
     writeFileAtomically(out, text.str());
+    writeOutputManifestOf(out, "export-mjcf");  // proves the file cosim's to a later export
     std::cout << "written: " << out.string() << " (" << world.model()->nbody << " bodies, "
               << world.model()->ngeom << " geoms, " << world.model()->nu << " actuators, "
               << world.model()->nv << " degrees of freedom)\n";

@@ -15,6 +15,7 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "core/stop_request.h"
 #include "planning/grid/movingai.h"
 #include "planning/planner_registry.h"
@@ -105,13 +106,10 @@ void planLine(GridPlanner& planner, const OccupancyGrid& grid, const MovingAISce
 
 void runGridBench(const GridBenchArgs& a, CommandContext& ctx) {
   installInterruptFlag();
-  // The output is checked before any planning, and an older one at that path goes now: a
-  // refused or interrupted rerun must not leave it looking like this run's.
-  if (!a.out.empty()) {
-    checkOutputPath(a.out, "--out");
-    std::error_code ec;
-    std::filesystem::remove(a.out, ec);
-  }
+  // The output is checked before any planning (a file there must be one cosim wrote,
+  // core/output_manifest.h), and, once the inputs passed their checks, an older one at that path
+  // goes: an interrupted rerun must not leave it looking like this run's.
+  if (!a.out.empty()) checkOutputPath(a.out, "--out");
   ParamSet params("command line");
   applySetOptions(a.sets, params);
   auto planner = makeGridPlanner(a.planner, params);
@@ -121,6 +119,10 @@ void runGridBench(const GridBenchArgs& a, CommandContext& ctx) {
   auto lines = readMovingAIScenario(a.scen);
   const std::string map_name = std::filesystem::path(a.map).filename().string();
   checkScenarioMatchesMap(lines, grid, a.scen, map_name);
+  if (!a.out.empty()) {
+    const std::filesystem::path out = a.out;
+    removeStaleResults(out.has_parent_path() ? out.parent_path() : ".", {out.filename().string()});
+  }
   if (a.limit > 0 && static_cast<std::size_t>(a.limit) < lines.size()) lines.resize(a.limit);
 
   std::string csv =
@@ -134,7 +136,10 @@ void runGridBench(const GridBenchArgs& a, CommandContext& ctx) {
     ctx.status = 1;
     return;
   }
-  if (!a.out.empty()) writeFileAtomically(a.out, csv);
+  if (!a.out.empty()) {
+    writeFileAtomically(a.out, csv);
+    writeOutputManifestOf(a.out, "grid-bench");  // proves the file cosim's to a later bench
+  }
 
   const std::size_t solved = tally.solved, mismatches = tally.mismatches;
   const double mean_us = lines.empty() ? 0.0 : tally.total_us / lines.size();

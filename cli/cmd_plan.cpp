@@ -8,6 +8,7 @@
 #include "core/input_error.h"
 #include "core/json_writer.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "core/stop_request.h"
 #include "run/scenario_checks.h"
 #include "run/scenario_planning.h"
@@ -41,12 +42,14 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     if (a->scenario.empty())
       throw InputError("command line", "plan", "a scenario file is required");
     installInterruptFlag();
-    // An earlier plan goes first; a new folder only once the scenario and its planner passed
-    // their checks (scenario_checks.h).
+    // Once the scenario and its planner passed their checks (scenario_checks.h), an earlier
+    // plan goes (only files cosim can prove it wrote: anything else is refused) and a new folder
+    // is made if needed; bad input touches nothing.
     checkOutputDir(a->out);
-    if (!a->out.empty()) removeStaleResults(a->out, {"plan.json", "path.csv"});
     const Scenario s = loadScenarioForPlan(a->scenario, a->sets, a->planner);
+    if (!a->out.empty()) removeStaleResults(a->out, {"plan.json", "path.csv"});
     const auto dir = prepareOutputDir(a->out, "plan");
+    OutputManifestScope manifest(dir, "plan");
     const VehiclePlan plan = planFirstVehicle(s);
     // A planner ended by the stop request says so; a request that came after it returned is an
     // interrupt all the same.
@@ -75,6 +78,7 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     for (const auto& [k, v] : plan.counters) j.add(k, v);
     writeFileAtomically(dir / "path.csv", csv);
     writeFileAtomically(dir / "plan.json", j.str() + "\n");
+    manifest.finish();
     std::cout << "plan: " << printableText(dir.string()) << "\n  " << s.planner_name << ": "
               << (plan.success ? "path of " + std::to_string(plan.path.length()) + " m"
                                : "no path (" + plan.message + ")")

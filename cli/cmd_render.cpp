@@ -7,6 +7,7 @@
 #include "cli/run_folder.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "render/run_outputs.h"
 #include "sim/world_model.h"
 
@@ -56,6 +57,13 @@ void renderRun(const RenderArgs& a, CommandContext& ctx) {
   std::filesystem::path out = a.out;
   if (out.empty()) out = dir / (a.frames ? "frames_" + name : "video_" + name + ".mp4");
   const bool one_frame = out.extension() == ".png" && !a.frames;
+  // The encoder writes MP4 (H.264) only: a name promising another format is refused rather than
+  // given MP4 bytes under it.
+  if (!a.frames && !one_frame && out.extension() != ".mp4")
+    throw InputError(out.string(), "--out",
+                     "cosim writes a video as MP4 and one frame as PNG: name the file .mp4 or "
+                     ".png (or use --frames for a folder of PNG frames)");
+  // Replaces only a file or folder of frames cosim can prove it wrote (core/output_manifest.h).
   checkOutputPath(out, a.out.empty() ? "run folder" : "--out", a.frames);
   RunLog log = readRunLog(dir, s);
   if (interrupt.load()) {
@@ -82,6 +90,7 @@ void renderRun(const RenderArgs& a, CommandContext& ctx) {
     std::cout << "frames: " << frames << " at " << s.render.fps << " fps (" << s.render.speedup
               << "x simulated time)\n";
   }
+  writeOutputManifestOf(out, "render");  // proves it cosim's to a later render
   std::cout << "rendered: " << printableText(out.string()) << "\n";
   ctx.status = 0;
 }

@@ -4,9 +4,10 @@
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
-#include "core/output_files.h"
-#include "experiments/reproduce/report_files.h"
 #include "core/input_error.h"
+#include "core/output_files.h"
+#include "core/output_manifest.h"
+#include "experiments/reproduce/report_files.h"
 
 namespace cosim::reproduce {
 // One declaration per reproduction (each defined in experiments/reproduce/<name>.cpp).
@@ -40,7 +41,9 @@ const std::vector<reproduce::Entry>& reproductions() {
        "Crazyflie 2.1 Brushless on Crazyswarm2's figure-eight at timescales 1.0-0.5: predicted "
        "RMSE per firmware controller, and each effect's share",
        reproduce::crazyflieFigure8},
-      {"tracking", "tracking acceptance: every bundled 3D world, quad_1500g at 3 m/s and cf2 at 1 m/s, tracking errors",
+      {"tracking",
+       "tracking acceptance: every bundled 3D world, quad_1500g at 3 m/s and cf2 at 1 m/s, "
+       "tracking errors",
        reproduce::trackingAcceptance},
       {"seed003-flight",
        "seed 003 Sec. 4.2: Theta* and RRT*FN on map 3, the thesis's pipeline and ours, in MuJoCo",
@@ -51,7 +54,8 @@ const std::vector<reproduce::Entry>& reproductions() {
        reproduce::seed000Sacodm},
       {"seed000-rna", "seed 000 Figs. 6.6-6.9: RNA, WF-RNA vs D* Lite, sight, moving obstacles",
        reproduce::seed000Rna},
-      {"seed004-planners", "seed 004 §6.3: LRA* vs CA* vs WHCA* (and CBS) on maze, open, bottleneck",
+      {"seed004-planners",
+       "seed 004 §6.3: LRA* vs CA* vs WHCA* (and CBS) on maze, open, bottleneck",
        reproduce::seed004Planners},
       {"seed004-whca-window", "seed 004 §6.3: WHCA* over window sizes, fixed vs dynamic priorities",
        reproduce::seed004WhcaWindow},
@@ -103,14 +107,21 @@ void addReproduceCommand(CLI::App& app, CommandContext& ctx) {
       opt.seed = args->seed;
       opt.quick = args->quick;
       opt.out_dir = prepareOutputDir(args->out, args->name).string();
+      // The files of an experiment start with its name: an earlier run's are replaced only if
+      // cosim can prove it wrote them (core/output_manifest.h), checked before any work. What is
+      // written is recorded in the folder's manifest, last.
+      for (const auto& p : matchingOutputs(opt.out_dir, {args->name + "*"}))
+        requireCosimOutput(p, "--out");
+      OutputManifestScope manifest(opt.out_dir, "reproduce");
       const std::string report = reproduce::writeReportFiles(args->name, opt, e.run(opt));
+      manifest.finish();
       std::cout << report << "\nwritten: " << opt.out_dir << "/" << args->name << ".md and "
                 << args->name << ".json\n";
       ctx.status = 0;
       return;
     }
-    throw InputError("command line", "reproduce", "unknown experiment '" + args->name +
-                                                      "' (see cosim reproduce --list)");
+    throw InputError("command line", "reproduce",
+                     "unknown experiment '" + args->name + "' (see cosim reproduce --list)");
   });
 }
 

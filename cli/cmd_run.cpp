@@ -11,6 +11,7 @@
 #include "core/input_error.h"
 #include "core/output_dir_lock.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "run/run_files.h"
 #include "run/run_pipeline.h"
 #include "run/run_summary_line.h"
@@ -53,25 +54,30 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
       ->check(numberIn(0.01, 1000.0));
   cmd->add_flag("--quiet", a->quiet, "no progress lines");
   cmd->callback([a, &ctx] {
-    // Interruptible from here on, loading included; and the folder loses an earlier run's
-    // results before anything else, so neither a refusal nor an interruption below can leave
-    // them looking like this run's. A new folder is made only once the scenario and its
-    // planners passed their checks: bad input leaves no empty folder behind.
+    // Interruptible from here on, loading included. The folder is touched only once the scenario
+    // and its planners passed their checks: bad input neither removes an earlier run's results
+    // nor leaves an empty folder behind. Then an earlier run's results go (only files cosim can
+    // prove it wrote: anything else there is refused) before anything is written, so that
+    // neither a failure nor an interruption can leave them looking like this run's.
     const std::atomic<bool>& interrupt = installInterruptFlag();
     RunRequest request;
     checkOutputDir(a->out);
-    // The folder is this run's alone until it ends (core/output_dir_lock.h): locked before its
-    // earlier results go, or as soon as it is made.
-    OutputDirLock lock;
-    if (!a->out.empty() && std::filesystem::is_directory(a->out)) lock.acquire(a->out, "--out");
-    if (!a->out.empty()) removeStaleResults(a->out, kRunResultNames);
     const std::string path = a->scenario.empty() ? defaultScenarioPath() : a->scenario;
     std::vector<std::string> overrides = a->sets;
     if (a->seed >= 0) overrides.push_back("sim.seed=" + std::to_string(a->seed));
     if (a->video_speed > 0) overrides.push_back("render.speed=" + std::to_string(a->video_speed));
     const Scenario scenario = loadCheckedScenario(path, overrides, PlannerUse::Run);
+    // The folder is this run's alone until it ends (core/output_dir_lock.h): locked before its
+    // earlier results go.
+    OutputDirLock lock;
+    if (!a->out.empty() && std::filesystem::is_directory(a->out)) {
+      lock.acquire(a->out, "--out");
+      clearRunFolder(a->out);
+    }
     request.out_dir = prepareOutputDir(a->out, "run");
     lock.acquire(request.out_dir, "--out");
+    // What the run writes is recorded in the folder's manifest, last, however it ends.
+    OutputManifestScope manifest(request.out_dir, "run");
     request.video = !a->no_video;
     request.images = !a->no_images;
     request.interrupt = &interrupt;
@@ -79,6 +85,7 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     request.observer = console.observer();
     const RunSummary s = executeRun(scenario, request);
     console.finish();
+    manifest.finish(s.outcome == RunOutcome::Interrupted ? "unfinished" : "complete");
     if (s.outcome == RunOutcome::Interrupted) {
       std::cerr << "cosim: interrupted; " << printableText(request.out_dir.string())
                 << " holds no finished run\n";

@@ -14,6 +14,8 @@
 #include "core/input_error.h"
 #include "core/output_dir_lock.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
+#include "experiments/sweep/sweep_identity.h"
 #include "experiments/sweep/sweep_jobs.h"
 #include "experiments/sweep/sweep_outputs.h"
 #include "experiments/sweep/sweep_runner.h"
@@ -83,11 +85,14 @@ int runShardJobs(const SweepArgs& a, const SweepSpec& spec, const SweepShard& sh
 // The merged tables and figure, and what the user must know about them; returns the exit
 // status (`status`, or 1 when --merge-only finds jobs missing).
 int mergeSweep(const SweepArgs& a, const SweepSpec& spec, const std::vector<SweepJob>& jobs,
-               const std::filesystem::path& out, int status) {
+               const std::filesystem::path& out, int status, OutputManifestScope& manifest) {
   const SweepOutputs merged = writeSweepOutputs(spec, jobs, out);
-  std::cout << "sweep: " << out.string() << "\n  results.csv: " << merged.rows << " of "
-            << jobs.size() << " jobs"
-            << (merged.unfinished ? " (" + std::to_string(merged.unfinished) + " unfinished)" : "")
+  std::cout << "sweep: " << out.string() << "\n  "
+            << (merged.unfinished ? "results.partial.csv" : "results.csv") << ": " << merged.rows
+            << " of " << jobs.size() << " jobs"
+            << (merged.unfinished ? " (" + std::to_string(merged.unfinished) +
+                                        " unfinished: the sweep is " + merged.state + ")"
+                                  : "")
             << "\n";
   if (merged.program_builds > 1)
     std::cerr << "sweep: warning: the results come from " << merged.program_builds
@@ -96,6 +101,7 @@ int mergeSweep(const SweepArgs& a, const SweepSpec& spec, const std::vector<Swee
   if (!merged.figure_problem.empty())
     std::cerr << "sweep: no figure.png: " << merged.figure_problem << "\n";
   if (a.merge_only && merged.unfinished > 0) status = 1;
+  manifest.finish(merged.state);
   return status;
 }
 
@@ -110,6 +116,11 @@ void runSweep(const SweepArgs& a, CommandContext& ctx) {
       prepareOutputDir(a.out.empty() ? "out/sweep-" + spec.name : a.out, "sweep");
   OutputDirLock sweep_lock, shard_lock;
   lockSweepFolder(a, shard, out, sweep_lock, shard_lock);
+  // A folder holding another sweep is refused before anything in it changes
+  // (experiments/sweep/sweep_identity.h); what this one writes is recorded in the folder's
+  // manifest, last, with the sweep's state (core/output_manifest.h).
+  checkSweepFolderHoldsThisSweep(spec, out);
+  OutputManifestScope manifest(out, "sweep");
   const std::vector<SweepJob> jobs = expandSweepJobs(spec, out);
   // A copy of the sweep file beside its results (same text from every shard).
   const std::string text = fileText(spec.file);
@@ -119,7 +130,8 @@ void runSweep(const SweepArgs& a, CommandContext& ctx) {
   if (!a.merge_only) {
     // The merged tables of an earlier invocation go before any job runs: until this one merges
     // again, nothing in the folder may present a result whose inputs have since changed.
-    removeStaleResults(out, {"results.csv", "summary.csv", "figure.png", "figure.svg"});
+    removeStaleResults(out, {"results.csv", "summary.csv", "figure.png", "figure.svg",
+                             "results.partial.csv", "summary.partial.csv"});
     std::vector<SweepJob> mine;
     for (const auto& j : jobs)
       if (shard.owns(j.id)) mine.push_back(j);
@@ -136,11 +148,13 @@ void runSweep(const SweepArgs& a, CommandContext& ctx) {
         std::cerr << "sweep: shard " << shard.index << "/" << shard.count
                   << " done; when every shard is, merge with: cosim sweep " << a.sweep
                   << " --merge-only --out " << out.string() << "\n";
+      manifest.finish("shard " + std::to_string(shard.index) + "/" + std::to_string(shard.count) +
+                      (status ? " interrupted" : " done"));
       ctx.status = status;
       return;
     }
   }
-  ctx.status = mergeSweep(a, spec, jobs, out, status);
+  ctx.status = mergeSweep(a, spec, jobs, out, status, manifest);
 }
 
 }  // namespace

@@ -7,18 +7,19 @@
 
 #include "cli/interrupt_flag.h"
 #include "cli/mapf_execution.h"
+#include "cli/run_console.h"
 #include "cli/set_options.h"
+#include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "core/json_writer.h"
-#include "planning/mapf/mapf_memory_estimate.h"
-#include "core/atomic_file.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "core/peak_memory.h"
+#include "planning/mapf/mapf_memory_estimate.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/mapf/movingai_instance.h"
 #include "planning/mapf/solution_validator.h"
 #include "run/robot_plans.h"
-#include "cli/run_console.h"
 #include "run/run_pipeline.h"
 #include "sim/scenario.h"
 #include "sim/world_model.h"
@@ -161,17 +162,19 @@ int executePlan(const MapfArgs& a, Scenario execution, const MapfResult& plan,
 }  // namespace
 
 int runSingleMapf(const MapfArgs& a, int agents) {
-  // Interruptible from here on; the folder is checked before any work and loses an earlier
-  // result at once (a failing rerun must not leave an old execution/metrics.json in place).
+  // Interruptible from here on; the folder is checked before any work and, once the inputs
+  // passed their checks, loses an earlier result before planning (a failing rerun must not leave
+  // an old execution/metrics.json in place). Only files cosim can prove it wrote go: anything
+  // else under those names refuses the command, and bad input touches nothing.
   const std::atomic<bool>& interrupt = installInterruptFlag();
   checkOutputDir(a.out);
-  removeStaleResults(a.out, {"mapf.json", "paths.csv", "execution"});
   ParamSet params("command line");
   applySetOptions(a.sets, params);
   if (a.window > 0) params.set("window", std::to_string(a.window), "--window");
   auto planner = makeMapfPlanner(a.planner, params);
   const MapfInstance inst = readInstance(a, agents);
   const Scenario execution = a.execute ? executionScenario(a, inst) : Scenario{};
+  removeStaleResults(a.out, {"mapf.json", "paths.csv", "execution"});
 
   MapfQuery query;
   query.instance = &inst;
@@ -188,6 +191,8 @@ int runSingleMapf(const MapfArgs& a, int agents) {
   }
   const CheckedPlan plan = checkPlan(inst, result);
   const std::filesystem::path dir = prepareOutputDir(a.out, "mapf");
+  // What the command writes (execution/ included) is recorded in the folder's manifest, last.
+  OutputManifestScope manifest(dir, "mapf");
   writeFileAtomically(dir / "paths.csv", pathsCsv(result.paths));
   writeFileAtomically(dir / "mapf.json", mapfJson(a, inst, params, result, plan));
   std::cout << a.planner << ": " << (plan.success ? "solved" : "failed") << ", "
@@ -197,12 +202,18 @@ int runSingleMapf(const MapfArgs& a, int agents) {
               << makespan(result.paths);
   std::cout << ", " << result.time_ms << " ms" << (plan.message.empty() ? "" : ": " + plan.message)
             << "\nwritten: " << dir.string() << "/mapf.json, paths.csv\n";
-  if (!a.execute) return plan.success ? 0 : 1;
+  if (!a.execute) {
+    manifest.finish();
+    return plan.success ? 0 : 1;
+  }
   if (!plan.success) {
+    manifest.finish();
     std::cerr << "cosim: no valid plan to execute\n";
     return 1;
   }
-  return executePlan(a, execution, result, dir, interrupt);
+  const int status = executePlan(a, execution, result, dir, interrupt);
+  manifest.finish(interrupt.load() ? "unfinished" : "complete");
+  return status;
 }
 
 }  // namespace cosim::cli

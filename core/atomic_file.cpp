@@ -8,7 +8,9 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "core/crc32.h"
 #include "core/input_error.h"
+#include "core/output_manifest.h"
 #include "core/temporary_name.h"
 
 namespace cosim {
@@ -21,7 +23,9 @@ namespace {
 
 // fsync(2) of an open descriptor. EINVAL means the file system has nothing to flush (it does not
 // support syncing, e.g. some FUSE mounts): not a failure of the write.
-bool flushed(int fd) { return ::fsync(fd) == 0 || errno == EINVAL; }
+bool flushed(int fd) {
+  return ::fsync(fd) == 0 || errno == EINVAL;
+}
 
 // Flushes the file or folder at `path` (its data and, for a folder, its entries) to the disk;
 // false with errno set if that fails.
@@ -65,6 +69,41 @@ void refuseSpecialTarget(const std::filesystem::path& target) {
     throw InputError(target.string(), "", notRegularProblem(kind));
 }
 
+// Refuses to replace a file (or a folder holding a file) that cosim cannot prove it wrote.
+void refuseStrangerTarget(const std::filesystem::path& target) {
+  const std::filesystem::path stranger = firstUnprovenOutput(target);
+  if (!stranger.empty()) throw InputError(stranger.string(), "", unprovenOutputProblem());
+}
+
+void writeAtomically(const std::filesystem::path& path, const std::string& content) {
+  const TemporaryFile tmp = createTemporaryFile(path, ".tmp");
+  const int fd = tmp.fd;
+  std::size_t done = 0;
+  while (done < content.size()) {
+    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const std::string why = std::strerror(errno);
+      ::close(fd);
+      ::unlink(tmp.path.c_str());
+      failWriting(path, why);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  // close() reports errors of delayed writes on some file systems (NFS): checked as well.
+  if (!flushed(fd) || ::close(fd) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmp.path.c_str());
+    failWriting(path, why);
+  }
+  if (::rename(tmp.path.c_str(), path.c_str()) != 0) {
+    const std::string why = std::strerror(errno);
+    ::unlink(tmp.path.c_str());
+    failWriting(path, why);
+  }
+  if (!flushPath(folderOf(path), /*folder=*/true)) failWriting(path, std::strerror(errno));
+}
+
 }  // namespace
 
 std::string specialFileKind(const std::filesystem::path& path) {
@@ -85,38 +124,21 @@ std::string notRegularProblem(const std::string& kind) {
 
 void writeFileAtomically(const std::filesystem::path& path, const std::string& content) {
   refuseSpecialTarget(path);
-  const std::filesystem::path tmp = temporaryNameFor(path, ".tmp");
-  const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) failWriting(path, std::strerror(errno));
-  std::size_t done = 0;
-  while (done < content.size()) {
-    const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      const std::string why = std::strerror(errno);
-      ::close(fd);
-      ::unlink(tmp.c_str());
-      failWriting(path, why);
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  // close() reports errors of delayed writes on some file systems (NFS): checked as well.
-  if (!flushed(fd) || ::close(fd) != 0) {
-    const std::string why = std::strerror(errno);
-    ::unlink(tmp.c_str());
-    failWriting(path, why);
-  }
-  if (::rename(tmp.c_str(), path.c_str()) != 0) {
-    const std::string why = std::strerror(errno);
-    ::unlink(tmp.c_str());
-    failWriting(path, why);
-  }
-  if (!flushPath(folderOf(path), /*folder=*/true)) failWriting(path, std::strerror(errno));
+  refuseStrangerTarget(path);
+  writeAtomically(path, content);
+  recordWrittenOutput(path, content.size(), crc32(content));
+}
+
+void writeBookkeepingFileAtomically(const std::filesystem::path& path, const std::string& content) {
+  refuseSpecialTarget(path);
+  writeAtomically(path, content);
 }
 
 void moveIntoPlace(const std::filesystem::path& written, const std::filesystem::path& target) {
   if (!specialFileKind(target).empty()) removeQuietly(written);
   refuseSpecialTarget(target);
+  if (!firstUnprovenOutput(target).empty()) removeQuietly(written);
+  refuseStrangerTarget(target);
   std::error_code ec;
   const bool folder = std::filesystem::is_directory(written, ec);
   if (!(folder ? flushFolder(written) : flushPath(written, /*folder=*/false))) {
@@ -136,6 +158,7 @@ void moveIntoPlace(const std::filesystem::path& written, const std::filesystem::
     removeQuietly(written);
     failWriting(target, why);
   }
+  recordWrittenOutput(target);
   if (!flushPath(folderOf(target), /*folder=*/true)) failWriting(target, std::strerror(errno));
 }
 

@@ -40,8 +40,7 @@ nlohmann::ordered_json parseJsonText(const std::string& text, const std::string&
 }
 
 nlohmann::ordered_json readJsonFile(const std::filesystem::path& file) {
-  return parseJsonText(readInputFile(file.string(), kMaxJsonFileBytes, "JSON file"),
-                       file.string());
+  return parseJsonText(readInputFile(file.string(), kMaxJsonFileBytes, "JSON file"), file.string());
 }
 
 }  // namespace cosim

@@ -11,7 +11,9 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-Json finiteOrNull(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
+Json finiteOrNull(double v) {
+  return std::isfinite(v) ? Json(v) : Json(nullptr);
+}
 
 // Two-space indentation; invalid UTF-8 replaced rather than thrown on (names in a scenario are
 // the user's bytes).
@@ -40,11 +42,21 @@ JsonObject& JsonObject::set(const std::string& key, Json&& value) {
   return *this;
 }
 
-JsonObject& JsonObject::add(const std::string& key, double v) { return set(key, finiteOrNull(v)); }
-JsonObject& JsonObject::add(const std::string& key, int v) { return set(key, Json(v)); }
-JsonObject& JsonObject::add(const std::string& key, long v) { return set(key, Json(v)); }
-JsonObject& JsonObject::add(const std::string& key, std::size_t v) { return set(key, Json(v)); }
-JsonObject& JsonObject::add(const std::string& key, bool v) { return set(key, Json(v)); }
+JsonObject& JsonObject::add(const std::string& key, double v) {
+  return set(key, finiteOrNull(v));
+}
+JsonObject& JsonObject::add(const std::string& key, int v) {
+  return set(key, Json(v));
+}
+JsonObject& JsonObject::add(const std::string& key, long v) {
+  return set(key, Json(v));
+}
+JsonObject& JsonObject::add(const std::string& key, std::size_t v) {
+  return set(key, Json(v));
+}
+JsonObject& JsonObject::add(const std::string& key, bool v) {
+  return set(key, Json(v));
+}
 JsonObject& JsonObject::add(const std::string& key, const char* v) {
   return set(key, Json(std::string(v)));
 }
@@ -98,8 +110,12 @@ std::string JsonObject::str(int indent) const {
   return shifted;
 }
 
-std::string JsonObject::number(double v) { return dumpText(finiteOrNull(v)); }
+std::string JsonObject::number(double v) {
+  return dumpText(finiteOrNull(v));
+}
 
-std::string JsonObject::quote(const std::string& s) { return dumpText(Json(s)); }
+std::string JsonObject::quote(const std::string& s) {
+  return dumpText(Json(s));
+}
 
 }  // namespace cosim

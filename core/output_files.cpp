@@ -7,8 +7,13 @@
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
+#include "core/output_manifest.h"
 
 namespace cosim {
+
+namespace {
+constexpr std::size_t kMaxOutputNameBytes = 255;  // NAME_MAX of Linux file systems
+}  // namespace
 
 std::filesystem::path prepareOutputDir(const std::string& dir, const std::string& prefix) {
   std::filesystem::path out = dir;
@@ -33,6 +38,7 @@ std::filesystem::path prepareOutputDir(const std::string& dir, const std::string
 
 void checkOutputDir(const std::string& dir) {
   if (dir.empty()) return;
+  checkNameLengths(dir, "--out");
   std::error_code ec;
   std::filesystem::path existing = std::filesystem::absolute(dir, ec);
   while (!existing.empty() && !std::filesystem::exists(existing, ec) &&
@@ -47,14 +53,19 @@ void checkOutputDir(const std::string& dir) {
                          : "cannot create folder: Permission denied");
 }
 
+void checkNameLengths(const std::filesystem::path& path, const std::string& option) {
+  for (const auto& part : path)
+    if (const std::size_t n = part.string().size(); n > kMaxOutputNameBytes)
+      throw InputError(path.string(), option,
+                       "a name in it is " + std::to_string(n) + " bytes, more than the " +
+                           std::to_string(kMaxOutputNameBytes) + " a file system allows");
+}
+
 void checkOutputPath(const std::filesystem::path& path, const std::string& option, bool folder) {
   const std::string name = path.filename().string();
   if (name.empty() || name == "." || name == "..")
     throw InputError(path.string(), option, "names no file");
-  if (name.size() > 255)
-    throw InputError(path.string(), option,
-                     "the name is " + std::to_string(name.size()) +
-                         " bytes, more than the 255 a file system allows");
+  checkNameLengths(path, option);
   std::error_code ec;
   if (!folder && std::filesystem::is_directory(path, ec))
     throw InputError(path.string(), option, "is a folder; give a file name");
@@ -70,26 +81,19 @@ void checkOutputPath(const std::filesystem::path& path, const std::string& optio
     throw InputError(path.string(), option, parent.string() + " is not a folder");
   if (::access(parent.c_str(), W_OK) != 0)
     throw InputError(path.string(), option, "folder " + parent.string() + " is not writable");
+  requireCosimOutput(path, option);
 }
 
-void removeStaleResults(const std::filesystem::path& dir, const std::vector<std::string>& names) {
+void removeStaleResults(const std::filesystem::path& dir, const std::vector<std::string>& names,
+                        const std::string& option) {
+  const std::vector<std::filesystem::path> doomed = matchingOutputs(dir, names);
+  // Every one is checked before any goes: a refusal removes nothing.
+  for (const auto& p : doomed) requireCosimOutput(p, option);
   std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec)) return;
-  std::vector<std::filesystem::path> doomed;
-  for (const std::string& n : names) {
-    if (n.empty() || n.back() != '*') {
-      doomed.push_back(dir / n);
-      continue;
-    }
-    const std::string prefix = n.substr(0, n.size() - 1);
-    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
-      if (e.path().filename().string().rfind(prefix, 0) == 0) doomed.push_back(e.path());
-  }
   for (const auto& p : doomed) {
     std::filesystem::remove_all(p, ec);
     if (ec)
-      throw InputError(p.string(), "--out",
-                       "cannot remove an earlier result here: " + ec.message());
+      throw InputError(p.string(), option, "cannot remove an earlier result here: " + ec.message());
   }
 }
 

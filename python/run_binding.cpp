@@ -9,6 +9,7 @@
 
 #include "core/output_dir_lock.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "core/stop_request.h"
 #include "python/bindings.h"
 #include "python/interrupt_guard.h"
@@ -82,20 +83,22 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
   RunSummary summary;
   {
     py::gil_scoped_release release;
-    // As `cosim run` does (cli/cmd_run.cpp): the folder loses an earlier run's results first,
-    // and is made only once the scenario passed its checks.
-    // The folder is this run's alone until it ends (core/output_dir_lock.h).
+    // As `cosim run` does (cli/cmd_run.cpp): the folder is touched only once the scenario passed
+    // its checks; then it loses an earlier run's results (only files cosim can prove it wrote:
+    // anything else there is refused) and is locked, this run's alone until it ends
+    // (core/output_dir_lock.h).
     OutputDirLock lock;
-    if (out_dir) {
-      checkOutputDir(*out_dir);
-      if (!out_dir->empty() && std::filesystem::is_directory(*out_dir))
-        lock.acquire(*out_dir, "out");
-      if (!out_dir->empty()) removeStaleResults(*out_dir, kRunResultNames);
-    }
+    if (out_dir) checkOutputDir(*out_dir);
     const Scenario s = loadCheckedScenario(path, sets, PlannerUse::Run);
+    std::optional<OutputManifestScope> manifest;
     if (out_dir) {
+      if (!out_dir->empty() && std::filesystem::is_directory(*out_dir)) {
+        lock.acquire(*out_dir, "out");
+        clearRunFolder(*out_dir, "out");
+      }
       request.out_dir = prepareOutputDir(*out_dir, "run");
       lock.acquire(request.out_dir, "out");
+      manifest.emplace(request.out_dir, "run");
     }
     request.video = video;
     request.interrupt = &stopRequestFlag();
@@ -104,6 +107,8 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
       if (e.kind == RunEventKind::Warning) std::cerr << "cosim: warning: " << e.text << "\n";
     };
     summary = executeRun(s, request);
+    if (manifest)
+      manifest->finish(summary.outcome == RunOutcome::Interrupted ? "unfinished" : "complete");
   }
   guard.finish();  // Ctrl-C: KeyboardInterrupt from here
   RunResult r;

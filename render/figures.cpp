@@ -29,9 +29,8 @@ class WorkDir {
  public:
   explicit WorkDir(const std::filesystem::path& parent) {
     std::filesystem::create_directories(parent);
-    path_ = temporaryNameFor(parent / "plot", ".part");
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
+    // A new folder of this process's own: nothing already at the name is followed or removed.
+    path_ = createTemporaryFolder(parent / "plot", ".part");
   }
   ~WorkDir() {
     std::error_code ec;

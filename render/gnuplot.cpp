@@ -28,10 +28,8 @@ namespace cosim {
 GnuplotScratch::GnuplotScratch(const std::filesystem::path& out_base, const std::string& tag)
     : out_dir_(out_base.has_parent_path() ? out_base.parent_path() : std::filesystem::path(".")),
       out_base_name_(out_base.filename()),
-      work_(temporaryNameFor(out_dir_ / tag, ".part")) {
-  std::filesystem::remove_all(work_);
-  std::filesystem::create_directories(work_);
-}
+      // A new folder of this process's own: nothing already at the name is followed or removed.
+      work_(createTemporaryFolder(out_dir_ / tag, ".part")) {}
 
 GnuplotScratch::~GnuplotScratch() {
   std::error_code ec;

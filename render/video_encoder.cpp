@@ -43,10 +43,6 @@ std::vector<std::string> ffmpegArguments(int width, int height, int fps,
   return args;
 }
 
-std::filesystem::path temporaryName(const std::filesystem::path& path) {
-  return temporaryNameFor(path, ".part");
-}
-
 void removeOutput(const std::filesystem::path& p) {
   std::error_code ec;
   std::filesystem::remove_all(p, ec);
@@ -61,7 +57,12 @@ std::string ffmpegFailure(const FfmpegProcess& ffmpeg, const std::string& what) 
 
 VideoEncoder::VideoEncoder(const std::filesystem::path& path, int width, int height, int fps,
                            VideoFormat format)
-    : path_(path), tmp_(temporaryName(path)), width_(width), height_(height), format_(format) {
+    : path_(path),
+      work_(createTemporaryFolder(path, ".part")),
+      tmp_(work_ / (format == VideoFormat::Mp4 ? "video.mp4" : "frames")),
+      width_(width),
+      height_(height),
+      format_(format) {
   std::vector<std::string> output;
   if (format == VideoFormat::Mp4) {
     // yuv420p and +faststart: plays in browsers. -preset ultrafast: ffmpeg shares the cores
@@ -71,14 +72,13 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& path, int width, int hei
     output = {"-c:v",    "libx264",   "-preset",    "ultrafast", "-crf", "20",         "-pix_fmt",
               "yuv420p", "-movflags", "+faststart", "-f",        "mp4",  tmp_.string()};
   } else {
-    removeOutput(tmp_);
-    std::filesystem::create_directories(tmp_);
+    std::filesystem::create_directory(tmp_);
     output = {"-c:v", "png", "-f", "image2", "-start_number", "1", (tmp_ / "%05d.png").string()};
   }
   try {
     ffmpeg_ = std::make_unique<FfmpegProcess>(ffmpegArguments(width, height, fps, output));
   } catch (...) {
-    removeOutput(tmp_);
+    removeOutput(work_);
     throw;
   }
   writer_ = std::thread([this] { writerLoop(); });
@@ -123,13 +123,13 @@ VideoEncoder::~VideoEncoder() {
   if (!ffmpeg_) return;  // finished (or failed and cleaned up)
   stopWriter(/*drop_queued=*/true);
   ffmpeg_.reset();  // reaps the killed ffmpeg
-  removeOutput(tmp_);
+  removeOutput(work_);
 }
 
 void VideoEncoder::fail(const std::string& what) {
   stopWriter(/*drop_queued=*/true);
   ffmpeg_.reset();
-  removeOutput(tmp_);
+  removeOutput(work_);
   throw std::runtime_error(what);
 }
 
@@ -161,22 +161,34 @@ void VideoEncoder::finish() {
   const bool exited_cleanly = ffmpeg_->finish();
   if (write_failed_ || !exited_cleanly) fail(ffmpegFailure(*ffmpeg_, path_.string()));
   ffmpeg_.reset();
-  moveIntoPlace(tmp_, path_);
+  try {
+    moveIntoPlace(tmp_, path_);
+  } catch (...) {
+    removeOutput(work_);
+    throw;
+  }
+  removeOutput(work_);
 }
 
 void writePng(const std::filesystem::path& path, const std::vector<std::uint8_t>& rgb, int width,
               int height) {
-  const std::filesystem::path tmp = temporaryName(path);
   const std::size_t n = static_cast<std::size_t>(width) * height * 3;
   if (rgb.size() != n) throw std::runtime_error("image size does not match for " + path.string());
-  FfmpegProcess ffmpeg(ffmpegArguments(
-      width, height, 1, {"-frames:v", "1", "-c:v", "png", "-f", "image2", tmp.string()}));
-  const bool written = ffmpeg.write(rgb.data(), n);
-  if (!ffmpeg.finish() || !written) {
-    removeOutput(tmp);
-    throw std::runtime_error(ffmpegFailure(ffmpeg, path.string()));
+  // ffmpeg writes into a new folder of this process's own (it follows what is at its name).
+  const std::filesystem::path work = createTemporaryFolder(path, ".part");
+  const std::filesystem::path tmp = work / "frame.png";
+  try {
+    FfmpegProcess ffmpeg(ffmpegArguments(
+        width, height, 1, {"-frames:v", "1", "-c:v", "png", "-f", "image2", tmp.string()}));
+    const bool written = ffmpeg.write(rgb.data(), n);
+    if (!ffmpeg.finish() || !written)
+      throw std::runtime_error(ffmpegFailure(ffmpeg, path.string()));
+    moveIntoPlace(tmp, path);
+  } catch (...) {
+    removeOutput(work);
+    throw;
   }
-  moveIntoPlace(tmp, path);
+  removeOutput(work);
 }
 
 }  // namespace cosim

@@ -46,7 +46,9 @@ class VideoEncoder {
   void stopWriter(bool drop_queued);
   [[noreturn]] void fail(const std::string& what);
 
-  std::filesystem::path path_, tmp_;
+  // work_: a new folder of this process's own beside path_ (core/temporary_name.h), holding
+  // tmp_, what ffmpeg writes (ffmpeg follows whatever is at the name it is given).
+  std::filesystem::path path_, work_, tmp_;
   int width_, height_;
   VideoFormat format_;
   std::unique_ptr<FfmpegProcess> ffmpeg_;  // null once finished

@@ -49,7 +49,8 @@ bool writeRunFolder(PreparedRun& run, const RunLog& log, const RunSummary& summa
     rendered.viewer = "viewer.html";
   else
     report.warning("viewer.html was not written: " + no_viewer);
-  finishRunFolder(request.out_dir, described, summary.metrics_json, failure, rendered);
+  finishRunFolder(request.out_dir, described, summary.metrics_json, failure, rendered,
+                  request.images);
   return true;
 }
 

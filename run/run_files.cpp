@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "render/run_outputs.h"
 #include "render/viewer_page.h"
 #include "run/run_pipeline.h"
@@ -17,13 +18,19 @@ const std::vector<std::string> kRunResultNames = {
     // A comparison with a real flight (cosim compare-real) was of the run this one replaces.
     "compare.*"};
 
+const std::vector<std::string> kRunReplacedNames = {"scenario.yaml", "run.json"};
+
+void clearRunFolder(const std::filesystem::path& dir, const std::string& option) {
+  for (const std::string& name : kRunReplacedNames) requireCosimOutput(dir / name, option);
+  removeStaleResults(dir, kRunResultNames, option);
+}
+
 void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario,
                       const RunLog& log) {
   // A folder reused with --out lost an earlier run's results when this run started
-  // (kRunResultNames); the marks of a finished run go again in case something wrote them since.
-  std::error_code ignored;
-  std::filesystem::remove(dir / "metrics.json", ignored);
-  std::filesystem::remove(dir / "index.html", ignored);
+  // (clearRunFolder); the marks of a finished run go again in case cosim wrote them since (a
+  // file of anyone else's there refuses the run).
+  removeStaleResults(dir, {"metrics.json", "index.html"});
 
   writeFileAtomically(dir / "scenario.yaml", scenario.effective_yaml);
   // The references flown, as read: the run renders again after their files moved.
@@ -76,8 +83,8 @@ std::string writeRunViewerFile(const std::filesystem::path& dir, const WorldMode
 
 void finishRunFolder(const std::filesystem::path& dir, const Scenario& scenario,
                      const JsonObject& metrics, const std::string& failure,
-                     const RenderedRun& rendered) {
-  writeRunReport(dir, scenario, metrics.str(), failure, rendered);
+                     const RenderedRun& rendered, bool report_page) {
+  if (report_page) writeRunReport(dir, scenario, metrics.str(), failure, rendered);
   writeFileAtomically(dir / "metrics.json", metrics.str() + "\n");
 }
 

@@ -22,6 +22,13 @@ struct RunRequest;
 // What `cosim run` writes into its folder that says "a run happened" (everything but the copy of
 // the scenario, which may be the very file being run): removed before the run starts.
 extern const std::vector<std::string> kRunResultNames;
+// What a run replaces in its folder without removing it first (scenario.yaml, run.json).
+extern const std::vector<std::string> kRunReplacedNames;
+
+// Readies `dir` for a run once its inputs are checked: refuses (InputError naming the file) if
+// any name a run writes holds a file cosim cannot prove it wrote (core/output_manifest.h), else
+// removes kRunResultNames.
+void clearRunFolder(const std::filesystem::path& dir, const std::string& option = "--out");
 
 // The write stage: the log's files in `dir`, once an earlier run's finishing marks are gone.
 void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario,
@@ -38,10 +45,10 @@ std::string writeRunViewerFile(const std::filesystem::path& dir, const WorldMode
                                const Scenario& scenario, const RunLog& log,
                                const std::string& failure);
 
-// The finishing marks: index.html (showing `rendered`), then metrics.json. `failure`: why the
-// run failed its task ("" if it did not).
+// The finishing marks: index.html (showing `rendered`; only with `report_page`: --no-images
+// writes no page), then metrics.json. `failure`: why the run failed its task ("" if it did not).
 void finishRunFolder(const std::filesystem::path& dir, const Scenario& scenario,
                      const JsonObject& metrics, const std::string& failure,
-                     const RenderedRun& rendered);
+                     const RenderedRun& rendered, bool report_page);
 
 }  // namespace cosim

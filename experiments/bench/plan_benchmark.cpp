@@ -5,14 +5,15 @@
 #include <cstdio>
 #include <iostream>
 
-#include "experiments/bench/ompl/ompl_planner_runs.h"
-#include "experiments/bench/plan_bench_files.h"
-#include "core/output_files.h"
-#include "run/scenario_planning.h"
 #include "core/input_error.h"
 #include "core/name_suggestion.h"
-#include "planning/planner_registry.h"
+#include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "core/stop_request.h"
+#include "experiments/bench/ompl/ompl_planner_runs.h"
+#include "experiments/bench/plan_bench_files.h"
+#include "planning/planner_registry.h"
+#include "run/scenario_planning.h"
 #include "sim/world_model.h"
 
 namespace cosim {
@@ -170,6 +171,12 @@ int runPlanBenchmark(const PlanBenchSetup& setup) {
     std::vector<std::string> ignored;
     makePlanner(name, p, "--planners " + name, &ignored);  // throws for bad parameters
   }
+  // The files an earlier bench wrote are replaced only if cosim can prove it wrote them
+  // (core/output_manifest.h): anything else under their names refuses the bench before it runs.
+  if (!setup.out.empty())
+    for (const auto& p : matchingOutputs(setup.out, {"runs.csv", "summary.csv", "summary.md",
+                                                     "plan-bench.log", "plan_bench.*"}))
+      requireCosimOutput(p, "--out");
   // OMPL's tree planners take our `step` as their range (maximum edge length).
   ParamSet step_param = s.planner_params;
   const double range = step_param.getDouble("step", 2.0, 1e-3, 1e6);
@@ -206,8 +213,10 @@ int runPlanBenchmark(const PlanBenchSetup& setup) {
   const double total_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const PlanBenchProblem problem = describeProblem(setup, s, vehicle, inflation);
-  writePlanBenchFiles(prepareOutputDir(setup.out, "plan-bench"), problem, runs, started, total_s,
-                      world);
+  const std::filesystem::path dir = prepareOutputDir(setup.out, "plan-bench");
+  OutputManifestScope manifest(dir, "plan-bench");
+  writePlanBenchFiles(dir, problem, runs, started, total_s, world);
+  manifest.finish();
   return 0;
 }
 

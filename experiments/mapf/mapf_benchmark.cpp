@@ -7,6 +7,7 @@
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "core/output_files.h"
+#include "core/output_manifest.h"
 #include "core/peak_memory.h"
 #include "core/stop_request.h"
 #include "planning/mapf/mapf_memory_estimate.h"
@@ -155,8 +156,15 @@ void writeFiles(const MapfBenchmarkSetup& s, const std::vector<MapfBenchmarkRow>
 MapfBenchmarkOutcome runMapfBenchmark(const MapfBenchmarkSetup& s,
                                       const MapfBenchmarkProgress& progress) {
   const BenchmarkInputs in = readInputs(s);
+  // The files an earlier benchmark wrote are replaced only if cosim can prove it wrote them
+  // (core/output_manifest.h): anything else under their names refuses it before it runs.
+  if (!s.out.empty())
+    for (const auto& p :
+         matchingOutputs(s.out, {"benchmark.csv", "benchmark.md", "success_rate.*"}))
+      requireCosimOutput(p, "--out");
   MapfBenchmarkOutcome outcome;
   outcome.out_dir = prepareOutputDir(s.out, "mapf-benchmark");
+  OutputManifestScope manifest(outcome.out_dir, "mapf");
   const auto stopped = [&] { return stopRequested() || (s.stop != nullptr && s.stop->load()); };
 
   std::size_t total = 0;
@@ -201,6 +209,7 @@ MapfBenchmarkOutcome runMapfBenchmark(const MapfBenchmarkSetup& s,
     return outcome;
   }
   writeFiles(s, rows, in.notes, outcome);
+  manifest.finish();
   return outcome;
 }
 

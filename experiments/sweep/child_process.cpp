@@ -35,7 +35,7 @@ ChildProcess ChildProcess::start(const std::string& program, const std::vector<s
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(127);
     const int in = ::open("/dev/null", O_RDONLY);
-    const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW, 0644);
     if (in >= 0) ::dup2(in, STDIN_FILENO);
     if (out >= 0) {
       ::dup2(out, STDOUT_FILENO);

@@ -8,6 +8,7 @@
 #include <iostream>
 #include <thread>
 
+#include "core/output_manifest.h"
 #include "experiments/sweep/child_process.h"
 #include "experiments/sweep/job_result.h"
 
@@ -54,7 +55,10 @@ RunningJob startJob(const SweepJob& job, const SweepRunOptions& o, std::size_t j
   RunningJob r;
   r.job = &job;
   r.dir = sweepJobDir(o.out_dir, job, job_count);
-  // A job folder left by an interrupted or outdated attempt must not lend its files to this one.
+  // A job folder left by an interrupted or outdated attempt must not lend its files to this one;
+  // it goes only if everything in it is proven cosim's (core/output_manifest.h: the job's run
+  // records its files, the sweep its log.txt and result.json).
+  requireCosimOutput(r.dir, "--out");
   std::error_code ec;
   std::filesystem::remove_all(r.dir, ec);
   std::filesystem::create_directories(r.dir, ec);
@@ -101,6 +105,7 @@ void reportFinished(const SweepProgress& p, const SweepRunReport& report, const 
 // finish (then a later invocation runs it again).
 void finishJob(const RunningJob& r, int wait_status, const std::string& build,
                SweepProgress& progress, SweepRunReport& report) {
+  recordWrittenOutput(r.dir / "log.txt");  // the job's output, written by this process
   const bool exited_by_itself =
       !r.stopped || (WIFEXITED(wait_status) && WEXITSTATUS(wait_status) == 0);
   if (r.stopped && !exited_by_itself) {
@@ -190,6 +195,10 @@ SweepRunReport runSweepJobs(const std::vector<SweepJob>& jobs, const SweepRunOpt
   SweepProgress progress{o, "", Clock::now(), jobs.size(), {}};
   const std::vector<const SweepJob*> pending =
       pendingJobs(jobs, o, report, progress.finished_statuses);
+  // The folders of the jobs to run again go as each starts: refused now, before any job runs, if
+  // one holds a file cosim cannot prove it wrote (core/output_manifest.h).
+  for (const SweepJob* job : pending)
+    requireCosimOutput(sweepJobDir(o.out_dir, *job, jobs.size()), "--out");
   progress.tag = o.shard.whole() ? std::string("sweep")
                                  : "sweep [shard " + std::to_string(o.shard.index) + "/" +
                                        std::to_string(o.shard.count) + "]";

@@ -130,13 +130,23 @@ fs::path partialFile(const fs::path& dir, const std::string& part) {
   return {};
 }
 
+// The bytes ffmpeg has written under `p`: a file, or the files in cosim's work folder for it
+// (.video.mp4.part<pid>/video.mp4, core/temporary_name.h).
+std::uintmax_t writtenBytes(const fs::path& p) {
+  std::error_code ec;
+  if (!fs::is_directory(p, ec)) return fs::file_size(p, ec) > 0 && !ec ? fs::file_size(p, ec) : 0;
+  std::uintmax_t n = 0;
+  for (const auto& e : fs::recursive_directory_iterator(p, ec))
+    if (e.is_regular_file(ec)) n += e.file_size(ec);
+  return n;
+}
+
 // Waits (up to `limit`) until ffmpeg has written into a temporary file in `dir`.
 bool waitForPartialVideo(const fs::path& dir, std::chrono::seconds limit) {
   const auto end = std::chrono::steady_clock::now() + limit;
   while (std::chrono::steady_clock::now() < end) {
     const fs::path p = partialFile(dir, ".part");
-    std::error_code ec;
-    if (!p.empty() && fs::file_size(p, ec) > 0 && !ec) return true;
+    if (!p.empty() && writtenBytes(p) > 0) return true;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   return false;

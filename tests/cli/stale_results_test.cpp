@@ -1,11 +1,13 @@
 // End to end: results cannot be stale. A command run into the folder of an earlier one removes
-// that one's results before it starts, so that a refusal (exit 2) or a failure (exit 1) leaves
-// nothing that looks like its own finished result: no metrics.json saying reached_goal true, no
-// old time series, no old execution/metrics.json of `cosim mapf --execute`.
+// that one's results once its own inputs passed their checks and before it works, so that a
+// failure (exit 1) leaves nothing that looks like its own finished result: no old
+// execution/metrics.json of `cosim mapf --execute`. A refusal (exit 2, bad input) touches nothing:
+// the earlier results stay, complete and as they were.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "tests/support/cosim_command.h"
 #include "tests/support/json_fields.h"
@@ -20,7 +22,7 @@ const char* kQuickFlight =
     "vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [4, 2, 1]}]\n"
     "sim: {max_time: 10}\n";
 
-TEST(StaleResults, ARefusedRerunIntoAnOldRunFolderLeavesNoneOfTheOldResults) {
+TEST(StaleResults, ARefusedRerunIntoAnOldRunFolderLeavesTheOldResultsAsTheyWere) {
   const fs::path dir = freshDir("stale-refused");
   fs::create_directories(dir);
   std::ofstream(dir / "s.yaml") << kQuickFlight;
@@ -31,12 +33,15 @@ TEST(StaleResults, ARefusedRerunIntoAnOldRunFolderLeavesNoneOfTheOldResults) {
   ASSERT_TRUE(jsonTrue(slurp(out / "metrics.json"), "reached_goal"));
   ASSERT_TRUE(fs::exists(out / "index.html"));
 
+  std::map<std::string, std::string> before;
+  for (const char* old : {"metrics.json", "index.html", "timeseries.csv", "path.csv", "final.png"})
+    before[old] = slurp(out / old);
   const CommandResult refused =
       runCosim("run " + (dir / "s.yaml").string() +
                " --no-video --quiet --set sim.timestep=abc --out " + out.string());
   EXPECT_EQ(refused.status, 2) << refused.err;
-  for (const char* old : {"metrics.json", "index.html", "timeseries.csv", "path.csv", "final.png"})
-    EXPECT_FALSE(fs::exists(out / old)) << old << " of the earlier run is still there";
+  for (const auto& [name, text] : before)
+    EXPECT_EQ(slurp(out / name), text) << name << " of the earlier run changed";
   fs::remove_all(dir);
 }
 
@@ -61,17 +66,19 @@ TEST(StaleResults, AFailingMapfExecuteIntoAnOldFolderLeavesNoOldExecutionMetrics
   EXPECT_FALSE(fs::exists(dir / "execution" / "timeseries.csv"));
   EXPECT_FALSE(jsonTrue(slurp(dir / "mapf.json"), "success"));
 
-  // Refused (bad input): nothing of the earlier plan either.
+  // Refused (bad input): the earlier plan and execution stay as they were.
   ASSERT_EQ(runCosim("mapf " + map + " " + scen + " --agents 2 --planner cbs --execute --out " +
                      dir.string())
                 .status,
             0);
+  const std::string plan = slurp(dir / "mapf.json");
+  const std::string metrics = slurp(dir / "execution" / "metrics.json");
   const CommandResult refused =
       runCosim("mapf " + map + " " + scen + " --agents 2 --planner teleport --execute --out " +
                dir.string());
   EXPECT_EQ(refused.status, 2) << refused.err;
-  EXPECT_FALSE(fs::exists(dir / "mapf.json"));
-  EXPECT_FALSE(fs::exists(dir / "execution"));
+  EXPECT_EQ(slurp(dir / "mapf.json"), plan);
+  EXPECT_EQ(slurp(dir / "execution" / "metrics.json"), metrics);
   fs::remove_all(dir);
 }
 

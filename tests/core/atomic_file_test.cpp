@@ -41,12 +41,30 @@ TEST(AtomicFile, WriteLeavesOnlyTheTarget) {
   fs::remove_all(dir);
 }
 
-TEST(AtomicFile, WriteReplacesAnExistingFile) {
+TEST(AtomicFile, WriteReplacesAFileItWrote) {
   const fs::path dir = makeFreshDir("replace");
-  std::ofstream(dir / "a.csv") << "an older and longer content\n";
+  writeFileAtomically(dir / "a.csv", "an older and longer content\n");
   writeFileAtomically(dir / "a.csv", "new\n");
   EXPECT_EQ(slurp(dir / "a.csv"), "new\n");
   EXPECT_EQ(entries(dir), std::vector<std::string>{"a.csv"});
+  fs::remove_all(dir);
+}
+
+// core/output_manifest.h: a file cosim cannot prove it wrote is never replaced.
+TEST(AtomicFile, AUsersFileIsNeitherReplacedNorRenamedOver) {
+  const fs::path dir = makeFreshDir("users-file");
+  std::ofstream(dir / "a.csv") << "the user's\n";
+  try {
+    writeFileAtomically(dir / "a.csv", "new\n");
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not written by cosim, or changed since"), std::string::npos)
+        << e.what();
+  }
+  std::ofstream(dir / ".a.csv.part1") << "moved";
+  EXPECT_THROW(moveIntoPlace(dir / ".a.csv.part1", dir / "a.csv"), InputError);
+  EXPECT_EQ(slurp(dir / "a.csv"), "the user's\n");
+  EXPECT_EQ(entries(dir), std::vector<std::string>{"a.csv"});  // no temporary file left
   fs::remove_all(dir);
 }
 
@@ -66,7 +84,7 @@ TEST(AtomicFile, WriteIntoAMissingFolderThrowsNamingThePath) {
 TEST(AtomicFile, MoveIntoPlaceRenamesAFileWrittenUnderItsTemporaryName) {
   const fs::path dir = makeFreshDir("move");
   const fs::path target = dir / "final.png", tmp = temporaryNameFor(target, ".part");
-  std::ofstream(target) << "old";
+  writeFileAtomically(target, "old");
   std::ofstream(tmp) << "png bytes";
   moveIntoPlace(tmp, target);
   EXPECT_EQ(slurp(target), "png bytes");
@@ -74,16 +92,36 @@ TEST(AtomicFile, MoveIntoPlaceRenamesAFileWrittenUnderItsTemporaryName) {
   fs::remove_all(dir);
 }
 
-TEST(AtomicFile, MoveIntoPlaceReplacesAFolderOfFrames) {
+TEST(AtomicFile, MoveIntoPlaceReplacesAFolderOfFramesItWrote) {
   const fs::path dir = makeFreshDir("frames");
   const fs::path target = dir / "frames_chase", tmp = temporaryNameFor(target, ".part");
-  fs::create_directories(target);
-  std::ofstream(target / "00009.png") << "stale";
+  fs::create_directories(tmp);
+  std::ofstream(tmp / "00009.png") << "stale";
+  moveIntoPlace(tmp, target);
   fs::create_directories(tmp);
   std::ofstream(tmp / "00001.png") << "frame 1";
   moveIntoPlace(tmp, target);
   EXPECT_EQ(entries(target), std::vector<std::string>{"00001.png"});
   EXPECT_EQ(entries(dir), std::vector<std::string>{"frames_chase"});
+  fs::remove_all(dir);
+}
+
+TEST(AtomicFile, MoveIntoPlaceKeepsAFolderHoldingAFileCosimDidNotWrite) {
+  const fs::path dir = makeFreshDir("frames-users");
+  const fs::path target = dir / "frames_chase", tmp = temporaryNameFor(target, ".part");
+  fs::create_directories(target);
+  std::ofstream(target / "holiday.jpg") << "the user's";
+  fs::create_directories(tmp);
+  std::ofstream(tmp / "00001.png") << "frame 1";
+  try {
+    moveIntoPlace(tmp, target);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find((target / "holiday.jpg").string()), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(slurp(target / "holiday.jpg"), "the user's");
+  EXPECT_EQ(entries(dir), std::vector<std::string>{"frames_chase"});  // the frames went
   fs::remove_all(dir);
 }
 

@@ -190,10 +190,19 @@ TEST_F(SweepCommandTest, AnInterruptedSweepResumesWithoutDuplicatedOrTruncatedRo
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 1) << slurp(root_ / "c.log");
   EXPECT_NE(slurp(root_ / "c.log").find("interrupted"), std::string::npos);
-  auto rows = readCsv(out / "results.csv");
+  // Nothing half-done looks finished: the tables of the jobs that finished are .partial, and the
+  // sweep's state and manifest say how far it got.
+  EXPECT_FALSE(fs::exists(out / "results.csv"));
+  EXPECT_FALSE(fs::exists(out / "summary.csv"));
+  EXPECT_FALSE(fs::exists(out / "figure.png"));
+  auto rows = readCsv(out / "results.partial.csv");
   ASSERT_GE(rows.size(), 2u);  // the first job, at least
   EXPECT_LT(rows.size(), 9u);  // not all of them
   for (const auto& r : rows) EXPECT_EQ(r.size(), rows[0].size());
+  const std::string state = "partial: " + std::to_string(rows.size() - 1) + " of 8 jobs";
+  EXPECT_NE(slurp(out / "sweep-state.json").find("\"state\": \"" + state + "\""), std::string::npos)
+      << slurp(out / "sweep-state.json");
+  EXPECT_NE(slurp(out / ".cosim-manifest").find(state), std::string::npos);
 
   const auto resumed = sweep("--jobs 2 --out " + out.string());
   ASSERT_EQ(resumed.status, 0) << resumed.err;
@@ -208,6 +217,40 @@ TEST_F(SweepCommandTest, AnInterruptedSweepResumesWithoutDuplicatedOrTruncatedRo
     ids.insert(rows[i][0]);
   }
   EXPECT_EQ(ids.size(), 8u);
+  EXPECT_FALSE(fs::exists(out / "results.partial.csv"));
+  EXPECT_NE(slurp(out / "sweep-state.json").find("\"state\": \"complete\""), std::string::npos);
+}
+
+// A sweep with another grid into a finished sweep's folder is refused before anything in it
+// changes: its tables, job folders and worlds stay the first sweep's.
+TEST_F(SweepCommandTest, AnotherSweepIntoAFinishedSweepsFolderIsRefused) {
+  const fs::path one = root_ / "one.yaml", other = root_ / "other.yaml";
+  const char* kOne =
+      "generators: [{type: city, density: 0.5, size: [16, 16, 5], seed: 1}]\n"
+      "vary: {planner.name: [astar]}\nset: {sim.max_time: 30}\noutput: {video: false}\n";
+  std::ofstream(one) << kOne;
+  std::ofstream(other) << "name: one\n"
+                       << "generators: [{type: city, density: 0.5, size: [16, 16, 5], seed: 2}]\n"
+                       << "vary: {planner.name: [astar]}\nset: {sim.max_time: 30}\n"
+                       << "output: {video: false}\n";
+  const fs::path out = root_ / "s";
+  const auto first = runCosim("sweep " + one.string() + " --out " + out.string());
+  ASSERT_EQ(first.status, 0) << first.err;
+  const std::string results = slurp(out / "results.csv");
+
+  const auto refused = runCosim("sweep " + other.string() + " --out " + out.string());
+  EXPECT_EQ(refused.status, 2) << refused.err;
+  EXPECT_NE(refused.err.find(out.string() + ": --out: holds another sweep ('one'"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_EQ(slurp(out / "results.csv"), results);
+  EXPECT_EQ(slurp(out / "sweep.yaml"), kOne);
+  EXPECT_FALSE(fs::exists(out / "worlds/city-d0.5-s2-16x16x5.yaml"));
+
+  // The same sweep again (its text edited, its grid the same) is not another sweep.
+  std::ofstream(one, std::ios::app) << "# a comment\n";
+  const auto again = runCosim("sweep " + one.string() + " --out " + out.string());
+  EXPECT_EQ(again.status, 0) << again.err;
 }
 
 }  // namespace

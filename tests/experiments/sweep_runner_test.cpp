@@ -10,6 +10,7 @@
 #include <fstream>
 #include <thread>
 
+#include "core/output_manifest.h"
 #include "experiments/sweep/job_result.h"
 #include "experiments/sweep/sweep_results_table.h"
 #include "tests/support/test_files.h"
@@ -66,6 +67,13 @@ class SweepRunnerTest : public ::testing::Test {
   std::string status(const SweepJob& job, std::size_t count) {
     const auto r = readJobResult(sweepJobDir(root_ / "out", job, count));
     return r ? r->status : "unfinished";
+  }
+  // What a real `cosim run` does as it ends: record the files it wrote in its folder
+  // (core/output_manifest.h), so that a later attempt of the job may replace them. The fake
+  // program writes none, so the jobs' files are recorded here.
+  void recordJobFiles() {
+    for (const auto& e : fs::recursive_directory_iterator(root_ / "out" / "jobs"))
+      if (e.is_regular_file()) recordWrittenOutput(e.path());
   }
   int calls() {
     std::ifstream in(root_ / "calls.txt");
@@ -158,6 +166,7 @@ TEST_F(SweepRunnerTest, TheMergeHasOneRowPerJobByIdWithFlattenedMetrics) {
 TEST_F(SweepRunnerTest, AResultMadeForAnotherVersionOfTheJobDoesNotCount) {
   auto js = jobs("[ok]");
   runSweepJobs(js, options(1));
+  recordJobFiles();
   js[0].fingerprint = "0000000000000000";  // as if the scenario file had changed
   EXPECT_EQ(runSweepJobs(js, options(1)).ran, 1u);
   EXPECT_EQ(calls(), 2);
@@ -168,8 +177,10 @@ TEST_F(SweepRunnerTest, AMergeOfResultsFromTwoBuildsOfTheProgramSaysSo) {
   runSweepJobs(js, options(1));
   EXPECT_EQ(mergeSweepResults(spec_, js, root_ / "out").program_builds, 1u);
   // A rebuild (a new modification time), then job 1 runs again.
-  fs::last_write_time(root_ / "fake-cosim", fs::last_write_time(root_ / "fake-cosim") + std::chrono::seconds(10));
+  fs::last_write_time(root_ / "fake-cosim",
+                      fs::last_write_time(root_ / "fake-cosim") + std::chrono::seconds(10));
   fs::remove(sweepJobDir(root_ / "out", js[1], 2) / "result.json");
+  recordJobFiles();
   runSweepJobs(js, options(1));
   EXPECT_EQ(mergeSweepResults(spec_, js, root_ / "out").program_builds, 2u);
 }

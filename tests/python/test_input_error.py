@@ -44,3 +44,18 @@ def test_a_value_of_the_wrong_kind_names_its_key(cosim_binary):
         cosim.run(DEFAULT, overrides={"sim.max_time": [1, 2]})
     assert str(e.value) == stderr_line(cosim_binary, "run", DEFAULT, "--no-video", "--set",
                                        "sim.max_time=[1, 2]")
+
+
+def test_run_with_a_missing_scenario_leaves_the_users_files_in_out(tmp_path):
+    # cosim.run deletes or replaces only files cosim can prove it wrote, and only once its
+    # scenario passed its checks: a folder of the user's keeps everything.
+    (tmp_path / "figures").mkdir()
+    (tmp_path / "figures" / "thesis.png").write_text("the user's figure")
+    (tmp_path / "index.html").write_text("the user's page")
+    with pytest.raises(cosim.InputError):
+        cosim.run(str(tmp_path / "missing.yaml"), out=tmp_path)
+    with pytest.raises(cosim.InputError) as e:
+        cosim.run(DEFAULT, overrides={"sim.max_time": 1}, out=tmp_path)
+    assert "not written by cosim, or changed since" in str(e.value)
+    assert (tmp_path / "index.html").read_text() == "the user's page"
+    assert (tmp_path / "figures" / "thesis.png").read_text() == "the user's figure"
