@@ -30,13 +30,13 @@ std::string firstLine(const std::filesystem::path& p) {
   return line;
 }
 
-// Refuses to replace `p` unless it starts with `header` (so cosim identify wrote it).
+// Refuses to replace `p` unless its first line starts with `header` (cosim identify wrote it).
 void checkOurs(const std::filesystem::path& p, const std::string& header) {
   std::error_code ec;
   if (!std::filesystem::exists(p, ec)) return;
   if (const std::string kind = specialFileKind(p); !kind.empty())
     throw InputError(p.string(), "--out", notRegularProblem(kind));
-  if (firstLine(p) != header)
+  if (firstLine(p).rfind(header, 0) != 0)
     throw InputError(p.string(), "--out",
                      "exists and was not written by cosim identify; remove it or choose another "
                      "--out");
