@@ -2,9 +2,11 @@
 // uSD logs and CSV logs with named columns (experiments/identify/). Writes FILE.yaml (airframe
 // parameters for a scenario's vehicles[i].airframe), FILE.md and a figure per fit.
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/command.h"
 #include "cli/option_checks.h"
+#include "core/output_manifest.h"
 #include "experiments/identify/identification_report.h"
 
 namespace cosim::cli {
@@ -47,7 +49,12 @@ void runIdentify(const IdentifyArgs& a) {
   printValue("roll tracking lag", r.roll.lag);
   printValue("pitch tracking gain", r.pitch.gain);
   printValue("pitch tracking lag", r.pitch.lag);
+  // What it writes joins the manifest of FILE.yaml's folder, last: a later identify into the
+  // same place may replace it (core/output_manifest.h).
+  const std::filesystem::path out(a.out);
+  OutputManifestScope manifest(out.has_parent_path() ? out.parent_path() : ".", "identify");
   writeIdentification(a.out, r, a.options);
+  manifest.finish();
   std::printf("written: %s, its .md report and %zu figures\n", a.out.c_str(), r.figures.size());
 }
 

@@ -45,4 +45,15 @@ bool splitCsvRecord(const std::string& line, std::vector<std::string>& fields) {
   }
 }
 
+bool TextLines::next(std::string& line) {
+  if (pos_ >= text_.size()) return false;
+  std::size_t stop = text_.find('\n', pos_);
+  if (stop == std::string::npos) stop = text_.size();
+  line = text_.substr(pos_, stop - pos_);
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  pos_ = stop + 1;
+  ++number_;
+  return true;
+}
+
 }  // namespace cosim

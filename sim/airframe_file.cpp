@@ -70,9 +70,9 @@ void applyAirframeFile(const AirframeFile& a, QuadrotorParams& p) {
   // The motor map drives the motor on a battery (vehicles[i].battery); vehicles[i].motor_speed_map,
   // applied after this, wins over it.
   if (a.motor_speed_coefficients)
-    p.motor_speed_map = Eigen::Vector3d((*a.motor_speed_coefficients)[0],
-                                        (*a.motor_speed_coefficients)[1],
-                                        (*a.motor_speed_coefficients)[2]);
+    p.motor_speed_map =
+        Eigen::Vector3d((*a.motor_speed_coefficients)[0], (*a.motor_speed_coefficients)[1],
+                        (*a.motor_speed_coefficients)[2]);
 }
 
 }  // namespace cosim

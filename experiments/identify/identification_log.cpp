@@ -127,16 +127,12 @@ IdentificationLog parseIdentificationCsv(const std::string& text, const std::str
   IdentificationLog log;
   log.file = file;
   log.format = "csv";
-  std::size_t pos = 0, line_number = 0;
+  TextLines lines(text);
+  std::size_t line_number = 0;
   const auto nextLine = [&](std::string& line) {
-    if (pos >= text.size()) return false;
-    std::size_t stop = text.find('\n', pos);
-    if (stop == std::string::npos) stop = text.size();
-    line = text.substr(pos, stop - pos);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    pos = stop + 1;
-    ++line_number;
-    return true;
+    const bool read = lines.next(line);
+    line_number = lines.number();
+    return read;
   };
   std::string line;
   std::vector<std::string> names;

@@ -117,7 +117,7 @@ TEST(ReferenceFlight, AReferenceLongerThanMaxTimeSaysSoAndTheRmseCoversTheRun) {
 }
 
 TEST(ReferenceFlight, BenchSectionComparesTheLoopWithBareStepsOnTheSameFlight) {
-  const bench::Section s = bench::measureReferenceFlight(true, "cascade");
+  const bench::Section s = bench::measureReferenceFlight(true, "crazyflie_mellinger");
   EXPECT_EQ(s.name, "reference_flight");
   std::map<std::string, double> figures;
   for (const auto& f : s.figures) figures[f.name] = f.value;
@@ -127,13 +127,13 @@ TEST(ReferenceFlight, BenchSectionComparesTheLoopWithBareStepsOnTheSameFlight) {
               figures["full_loop_steps_per_s"] / figures["bare_mj_step_steps_per_s"], 1e-9);
   EXPECT_GT(figures["rmse_m"], 1e-4);  // it flew the reference (2 s of it)
   EXPECT_LT(figures["rmse_m"], 0.2);
-  EXPECT_NE(s.note.find("under cascade"), std::string::npos) << s.note;
-  // The same flight with the firmware's Kalman estimator instead of the EKF.
-  ASSERT_EQ(figures.count("crazyflie_kalman_ratio_to_bare"), 1u);
-  EXPECT_GT(figures["crazyflie_kalman_ratio_to_bare"], 0.0);
-  EXPECT_GT(figures["crazyflie_kalman_rmse_m"], 1e-4);
-  EXPECT_LT(figures["crazyflie_kalman_rmse_m"], 0.2);
-  EXPECT_NE(figures["crazyflie_kalman_rmse_m"], figures["rmse_m"]);  // another estimator flew it
+  EXPECT_NE(s.note.find("under crazyflie_mellinger"), std::string::npos) << s.note;
+  // The same flight with the EKF instead of the firmware's Kalman estimator (the scenario's).
+  ASSERT_EQ(figures.count("ekf_ratio_to_bare"), 1u);
+  EXPECT_GT(figures["ekf_ratio_to_bare"], 0.0);
+  EXPECT_GT(figures["ekf_rmse_m"], 1e-4);
+  EXPECT_LT(figures["ekf_rmse_m"], 0.2);
+  EXPECT_NE(figures["ekf_rmse_m"], figures["rmse_m"]);  // another estimator flew it
 }
 
 }  // namespace
