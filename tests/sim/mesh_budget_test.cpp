@@ -20,11 +20,12 @@
 #include "sim/world_fragment.h"
 #include "sim/world_model.h"
 
-// GCC 12 warns -Wrestrict / -Warray-bounds inside libstdc++ where a string is assigned or
-// concatenated once inlined (GCC bug 105329, a false positive).
+// GCC 12 warns -Wrestrict, -Warray-bounds, -Wstringop-overflow inside libstdc++ where a string is
+// assigned or concatenated once inlined (GCC bug 105329, a false positive).
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wrestrict"
 #pragma GCC diagnostic ignored "-Warray-bounds"
+#pragma GCC diagnostic ignored "-Wstringop-overflow"
 #endif
 
 using namespace cosim;
