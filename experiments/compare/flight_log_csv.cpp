@@ -71,42 +71,36 @@ FlightLog parseFlightLogCsv(const std::string& text, const std::string& file) {
   log.file = file;
   log.format = "csv";
   TextLines lines(text);
-  std::size_t line_number = 0;
-  const auto nextLine = [&](std::string& line) {
-    const bool read = lines.next(line);
-    line_number = lines.number();
-    return read;
-  };
   std::string line;
-  if (!nextLine(line)) throw InputError(file, "line 1", "empty file, expected a header t,x,y,z");
+  if (!lines.next(line)) throw InputError(file, "line 1", "empty file, expected a header t,x,y,z");
   const Columns c = headerColumns(line, file);
   log.position_source = "columns x,y,z";
   if (c.ref) log.reference_source = "columns ref_x,ref_y,ref_z";
   const std::size_t fields = c.fields;
   std::vector<std::string> row;
-  while (nextLine(line)) {
+  while (lines.next(line)) {
     if (line.empty()) continue;
     if (!splitCsvRecord(line, row) || row.size() != fields)
-      throw InputError(file, "line " + std::to_string(line_number),
+      throw InputError(file, "line " + std::to_string(lines.number()),
                        "has " + std::to_string(row.size()) + " fields, the header has " +
                            std::to_string(fields));
-    const double t = finiteNumber(row, c.t, file, line_number, "t");
+    const double t = finiteNumber(row, c.t, file, lines.number(), "t");
     if (!log.position.t.empty() && t <= log.position.t.back())
-      throw InputError(file, "line " + std::to_string(line_number) + ", column t",
+      throw InputError(file, "line " + std::to_string(lines.number()) + ", column t",
                        "time does not increase (" + row[c.t] + " after the previous row)");
     log.position.t.push_back(t);
-    log.position.p.emplace_back(coordinate(row, c.x, file, line_number, "x"),
-                                coordinate(row, c.y, file, line_number, "y"),
-                                coordinate(row, c.z, file, line_number, "z"));
+    log.position.p.emplace_back(coordinate(row, c.x, file, lines.number(), "x"),
+                                coordinate(row, c.y, file, lines.number(), "y"),
+                                coordinate(row, c.z, file, lines.number(), "z"));
     if (c.ref) {
       log.reference.t.push_back(t);
-      log.reference.p.emplace_back(coordinate(row, c.rx, file, line_number, "ref_x"),
-                                   coordinate(row, c.ry, file, line_number, "ref_y"),
-                                   coordinate(row, c.rz, file, line_number, "ref_z"));
+      log.reference.p.emplace_back(coordinate(row, c.rx, file, lines.number(), "ref_x"),
+                                   coordinate(row, c.ry, file, lines.number(), "ref_y"),
+                                   coordinate(row, c.rz, file, lines.number(), "ref_z"));
     }
   }
   if (log.position.size() < kMinFlightLogSamples)
-    throw InputError(file, "line " + std::to_string(line_number),
+    throw InputError(file, "line " + std::to_string(lines.number()),
                      "too few samples: " + std::to_string(log.position.size()) +
                          " rows, at least " + std::to_string(kMinFlightLogSamples) + " needed");
   return log;

@@ -128,15 +128,9 @@ IdentificationLog parseIdentificationCsv(const std::string& text, const std::str
   log.file = file;
   log.format = "csv";
   TextLines lines(text);
-  std::size_t line_number = 0;
-  const auto nextLine = [&](std::string& line) {
-    const bool read = lines.next(line);
-    line_number = lines.number();
-    return read;
-  };
   std::string line;
   std::vector<std::string> names;
-  if (!nextLine(line) || line.empty() || !splitCsvRecord(line, names))
+  if (!lines.next(line) || line.empty() || !splitCsvRecord(line, names))
     throw InputError(file, "line 1", "expected a CSV header naming the columns");
   struct Read {
     std::size_t field;
@@ -157,14 +151,14 @@ IdentificationLog parseIdentificationCsv(const std::string& text, const std::str
                      "no column cosim identify uses (t, vbat, pwm1..4, rpm1..4, thrust, gyro_x, "
                      "acc_x, vx, qw, ...: see docs/identify.md)");
   std::vector<std::string> row;
-  while (nextLine(line)) {
+  while (lines.next(line)) {
     if (line.empty()) continue;
     if (!splitCsvRecord(line, row) || row.size() != names.size())
-      throw InputError(file, "line " + std::to_string(line_number),
+      throw InputError(file, "line " + std::to_string(lines.number()),
                        "has " + std::to_string(row.size()) + " fields, the header has " +
                            std::to_string(names.size()));
     for (const auto& r : reads) {
-      const double v = r.scale * finiteNumber(row[r.field], file, line_number, names[r.field]);
+      const double v = r.scale * finiteNumber(row[r.field], file, lines.number(), names[r.field]);
       if (r.column == "t")
         log.t.push_back(v);
       else
@@ -172,7 +166,8 @@ IdentificationLog parseIdentificationCsv(const std::string& text, const std::str
     }
     ++log.rows;
   }
-  if (log.rows < 3) throw InputError(file, "line " + std::to_string(line_number), "too few rows");
+  if (log.rows < 3)
+    throw InputError(file, "line " + std::to_string(lines.number()), "too few rows");
   checkTimes(log, "line ");
   spreadSharedPwm(log);
   return log;
