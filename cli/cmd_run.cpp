@@ -5,6 +5,7 @@
 #include <iostream>
 
 #include "cli/command.h"
+#include "cli/controller_list.h"
 #include "cli/interrupt_flag.h"
 #include "cli/option_checks.h"
 #include "cli/run_console.h"
@@ -23,37 +24,55 @@ std::string defaultScenarioPath() {
   return std::string(COSIM_SCENARIOS_DIR) + "/default.yaml";
 }
 
+namespace {
+
+struct RunArgs {
+  std::string scenario, out;
+  bool no_video = false, no_images = false, quiet = false, list_controllers = false;
+  long seed = -1;
+  double video_speed = 0.0;
+  std::vector<std::string> sets;
+};
+
+void addRunOptions(CLI::App* cmd, RunArgs& a) {
+  cmd->add_option("scenario", a.scenario, "scenario YAML (default: the bundled default scenario)");
+  cmd->add_option("--out", a.out, "output folder (default: a new folder under out/)");
+  cmd->add_flag("--no-video", a.no_video, "skip video.mp4 (much faster)");
+  cmd->add_flag(
+      "--no-images", a.no_images,
+      "skip final.png, figures/ and index.html too (with --no-video: no rendering at all)");
+  cmd->add_option("--seed", a.seed, "random seed (overrides sim.seed)")
+      ->check(wholeNumberIn(0L, 2147483647L));
+  cmd->add_option("--set", a.sets, "override a scenario key, e.g. --set planner.name=astar")
+      ->allow_extra_args(false);
+  cmd->add_option("--video-speed", a.video_speed,
+                  "time-lapse: simulated seconds per second of video (same as --set "
+                  "render.speed=X)")
+      ->check(numberIn(0.01, 1000.0));
+  cmd->add_flag("--quiet", a.quiet, "no progress lines");
+  cmd->add_flag("--list-controllers", a.list_controllers,
+                "list every flight controller with its gains (default, valid range, meaning) and "
+                "exit");
+}
+
+}  // namespace
+
 void addRunCommand(CLI::App& app, CommandContext& ctx) {
   auto* cmd = app.add_subcommand(
       "run",
       "Plan a path, turn it into a reference, fly it in MuJoCo under the scenario's controller,\n"
       "evaluate it and render it. Writes metrics.json, timeseries.csv, path.csv, final.png and\n"
       "video.mp4 to the output folder. Exit 0 if every vehicle reached its goal without a\n"
-      "collision, 1 if not (no path, goal missed, collision), 2 for bad input.");
-  struct Args {
-    std::string scenario, out;
-    bool no_video = false, no_images = false, quiet = false;
-    long seed = -1;
-    double video_speed = 0.0;
-    std::vector<std::string> sets;
-  };
-  auto a = std::make_shared<Args>();
-  cmd->add_option("scenario", a->scenario, "scenario YAML (default: the bundled default scenario)");
-  cmd->add_option("--out", a->out, "output folder (default: a new folder under out/)");
-  cmd->add_flag("--no-video", a->no_video, "skip video.mp4 (much faster)");
-  cmd->add_flag(
-      "--no-images", a->no_images,
-      "skip final.png, figures/ and index.html too (with --no-video: no rendering at all)");
-  cmd->add_option("--seed", a->seed, "random seed (overrides sim.seed)")
-      ->check(wholeNumberIn(0L, 2147483647L));
-  cmd->add_option("--set", a->sets, "override a scenario key, e.g. --set planner.name=astar")
-      ->allow_extra_args(false);
-  cmd->add_option("--video-speed", a->video_speed,
-                  "time-lapse: simulated seconds per second of video (same as --set "
-                  "render.speed=X)")
-      ->check(numberIn(0.01, 1000.0));
-  cmd->add_flag("--quiet", a->quiet, "no progress lines");
+      "collision, 1 if not (no path, goal missed, collision), 2 for bad input.\n"
+      "`cosim run --list-controllers` lists every flight controller with its gains (name,\n"
+      "default, valid range, what it does).");
+  auto a = std::make_shared<RunArgs>();
+  addRunOptions(cmd, *a);
   cmd->callback([a, &ctx] {
+    if (a->list_controllers) {
+      std::cout << controllerListText();
+      return;
+    }
     // Interruptible from here on, loading included. The folder is touched only once the scenario
     // and its planners passed their checks: bad input neither removes an earlier run's results
     // nor leaves an empty folder behind. Then an earlier run's results go (only files cosim can

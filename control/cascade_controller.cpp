@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "control/controller_registry.h"
+
 namespace cosim {
 
 CascadeController::CascadeController(const QuadrotorParams& params, const CascadeGains& gains)
@@ -73,12 +75,14 @@ ControlOutput CascadeController::update(const VehicleState& s, const FlatReferen
   Eigen::Vector3d rate_cmd = 2.0 * gains_.att_kp.cwiseProduct(qe.vec());
   // Feed-forward of the reference yaw rate, expressed in the body frame.
   rate_cmd += R.transpose() * (ref.yaw_rate * e3);
-  for (int i = 0; i < 2; ++i) rate_cmd[i] = std::clamp(rate_cmd[i], -gains_.max_rate, gains_.max_rate);
+  for (int i = 0; i < 2; ++i)
+    rate_cmd[i] = std::clamp(rate_cmd[i], -gains_.max_rate, gains_.max_rate);
 
   // Rate loop: PI on body rates -> angular acceleration; torque = J alpha + w x J w.
   Eigen::Vector3d alpha;
   for (int i = 0; i < 3; ++i)
-    alpha[i] = rate_pid_[i].update(rate_cmd[i] - s.angular_velocity[i], 0.0, dt, rate_saturated_[i]);
+    alpha[i] =
+        rate_pid_[i].update(rate_cmd[i] - s.angular_velocity[i], 0.0, dt, rate_saturated_[i]);
   const Eigen::Vector3d J = params_.inertia;
   const Eigen::Vector3d Jw = J.cwiseProduct(s.angular_velocity);
   const Eigen::Vector3d torque = J.cwiseProduct(alpha) + s.angular_velocity.cross(Jw);
@@ -94,6 +98,45 @@ ControlOutput CascadeController::update(const VehicleState& s, const FlatReferen
     rate_saturated_[i] = std::abs(shortfall) > 1e-9 ? (shortfall > 0 ? 1 : -1) : 0;
   }
   return out;
+}
+
+namespace {
+
+// Roll and pitch share one gain (the airframe is symmetric); yaw has its own.
+const GainTable<CascadeGains>& cascadeGains() {
+  using G = CascadeGains;
+  static const GainTable<G> table =
+      GainTable<G>()
+          .gain("pos_kp", &G::pos_kp, 0.0, 100.0, "position error -> velocity command, 1/s")
+          .gain("vel_kp", &G::vel_kp, 0.0, 100.0, "velocity error -> acceleration command, 1/s")
+          .gain("vel_ki", &G::vel_ki, 0.0, 100.0, "integral of the velocity error, 1/s^2")
+          .gain("vel_i_limit", &G::vel_i_limit, 0.0, 100.0,
+                "bound on the velocity integral's contribution, m/s^2")
+          .gain("max_speed_xy", &G::max_speed_xy, 0.01, 100.0,
+                "horizontal velocity command limit, m/s")
+          .gain("max_speed_z", &G::max_speed_z, 0.01, 100.0, "vertical velocity command limit, m/s")
+          .gain("max_tilt_deg", &G::max_tilt_deg, 1.0, 89.0,
+                "limit on the thrust vector's angle from vertical, deg")
+          .rollPitchAndYaw("att_kp", &G::att_kp, 1e4, "attitude error -> body rate command, 1/s")
+          .rollPitchAndYaw("rate_kp", &G::rate_kp, 1e4, "rate error -> angular acceleration, 1/s")
+          .rollPitchAndYaw("rate_ki", &G::rate_ki, 1e4, "integral of the rate error, 1/s^2")
+          .gain("max_rate", &G::max_rate, 0.1, 100.0, "roll and pitch rate command limit, rad/s");
+  return table;
+}
+
+}  // namespace
+
+void registerCascadeController(ControllerRegistry& registry) {
+  ControllerEntry e;
+  e.name = CascadeController::kName;
+  e.summary = "seed 003's cascade (Quan 2017): position P -> velocity PI -> attitude P -> rate PI";
+  e.gains = cascadeGains().declarations();
+  e.team_shortfall = 0.62;  // swarm32 0.88 (a 0.2 m sag under another), dense 1.09
+  e.make = [](const QuadrotorParams& params, ParamSet& gains,
+              const ControllerOptions&) -> std::unique_ptr<FlightController> {
+    return std::make_unique<CascadeController>(params, cascadeGains().read(gains));
+  };
+  registry.add(std::move(e));
 }
 
 }  // namespace cosim

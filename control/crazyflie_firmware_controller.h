@@ -82,6 +82,12 @@ class CrazyflieMassBasedController : public CrazyflieFirmwareController {
   double mass_;  // kg
 };
 
+// controller.gains.mass (ctrlLee.mass, ctrlMel.mass), when given: a real vehicle's mass, kg, from
+// a third of the 27 g Crazyflie 2.1 (the lightest model) to 100 kg. Absent, the airframe's mass
+// (the struct's -1); zero or a negative value is refused, not taken as "the airframe's".
+constexpr double kBelievedMassMin = 0.01;
+constexpr double kBelievedMassMax = 100.0;
+
 // The body rates the high-level commander puts into the setpoint (attitudeRate), from the
 // reference by differential flatness (pptraj.c, after Mellinger and Kumar 2011 eq. 7):
 // z_b = (a + g e3) / |a + g e3|, x from the yaw, h = (j - (j . z_b) z_b) / |a + g e3|,

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "control/controller_registry.h"
 #include "control/vee_map.h"
 
 namespace cosim {
@@ -72,6 +73,46 @@ Eigen::Vector4d CrazyflieLeeController::lawStep(const VehicleState& s, const Fla
                                                 const CrazyflieClock&) {
   const Command c = law(s, sp);
   return crazyflieForceTorqueMix(platform_, c.thrust, c.torque);
+}
+
+namespace {
+
+// x and y share one gain; z has its own (the firmware's defaults are symmetric in x and y).
+const GainTable<CrazyflieLeeGains>& crazyflieLeeGains() {
+  using G = CrazyflieLeeGains;
+  static const GainTable<G> table =
+      GainTable<G>()
+          .horizontalAndZ("kpos_p", &G::kpos_p, 1e4, "Kpos_P: position error, 1/s^2")
+          .horizontalAndZ("kpos_d", &G::kpos_d, 1e4, "Kpos_D: velocity error, 1/s")
+          .horizontalAndZ("kpos_i", &G::kpos_i, 1e4, "Kpos_I: position-error integral, 1/s^3")
+          .gain("kpos_p_limit", &G::kpos_p_limit, 0.0, 1e4,
+                "Kpos_P_limit: bound on each position error, m")
+          .gain("kpos_d_limit", &G::kpos_d_limit, 0.0, 1e4,
+                "Kpos_D_limit: bound on each velocity error, m/s")
+          .horizontalAndZ("kr", &G::k_r, 10.0, "KR: N m per unit of attitude error")
+          .horizontalAndZ("komega", &G::k_omega, 10.0, "Komega: N m per rad/s of rate error")
+          .horizontalAndZ("ki", &G::k_i, 10.0, "KI: N m per (unit of attitude error s)")
+          .optionalGain("mass", &G::mass, kBelievedMassMin, kBelievedMassMax,
+                        "ctrlLee.mass: the mass the firmware believes, kg", "the airframe's");
+  return table;
+}
+
+}  // namespace
+
+void registerCrazyflieLeeController(ControllerRegistry& registry) {
+  ControllerEntry e;
+  e.name = CrazyflieLeeController::kName;
+  e.summary = "crazyflie-firmware's controller_lee.c (Lee, Leok and McClamroch 2010) at 500 Hz";
+  e.gains = crazyflieLeeGains().declarations();
+  e.team_shortfall = 0.05;  // swarm32 1.45, dense 1.48
+  e.crazyflie_thrust_path = true;
+  e.make = [](const QuadrotorParams& params, ParamSet& gains,
+              const ControllerOptions& options) -> std::unique_ptr<FlightController> {
+    auto c = std::make_unique<CrazyflieLeeController>(params, crazyflieLeeGains().read(gains));
+    c->setThrustPath(options.thrust_path);
+    return c;
+  };
+  registry.add(std::move(e));
 }
 
 }  // namespace cosim

@@ -41,7 +41,8 @@ class CrazyflieLeeController : public CrazyflieMassBasedController<CrazyflieLeeG
  public:
   CrazyflieLeeController(const QuadrotorParams& airframe, const CrazyflieLeeGains& gains = {},
                          const CrazyfliePlatform& platform = crazyflie21BrushlessPlatform());
-  std::string name() const override { return "crazyflie_lee"; }
+  static constexpr char kName[] = "crazyflie_lee";
+  std::string name() const override { return kName; }
 
   // One 500 Hz step of the law: collective thrust (N) and moment (N m), as the firmware hands
   // them to its power distribution (exposed for tests).
@@ -62,5 +63,9 @@ class CrazyflieLeeController : public CrazyflieMassBasedController<CrazyflieLeeG
   Eigen::Vector3d i_error_pos_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d i_error_att_ = Eigen::Vector3d::Zero();
 };
+
+class ControllerRegistry;
+// Registers crazyflie_lee (its gains, team margin, ...) in the controller registry.
+void registerCrazyflieLeeController(ControllerRegistry& registry);
 
 }  // namespace cosim

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "control/controller_registry.h"
 #include "control/vee_map.h"
 
 namespace cosim {
@@ -76,6 +77,50 @@ Eigen::Vector4d CrazyflieMellingerController::lawStep(const VehicleState& s,
   const Command c = law(s, sp);
   // The firmware's legacy signs: pitch positive nose up (-M_y), yaw command -M_z.
   return crazyflieLegacyMix(platform_, c.thrust_pwm, c.moment.x(), -c.moment.y(), -c.moment.z());
+}
+
+namespace {
+
+const GainTable<CrazyflieMellingerGains>& crazyflieMellingerGains() {
+  using G = CrazyflieMellingerGains;
+  static const GainTable<G> table =
+      GainTable<G>()
+          .optionalGain("mass", &G::mass, kBelievedMassMin, kBelievedMassMax,
+                        "ctrlMel.mass: the mass the firmware believes, kg", "the airframe's")
+          .gain("mass_thrust", &G::mass_thrust, 0.0, 1e7, "massThrust: PWM per N")
+          .gain("kp_xy", &G::kp_xy, 0.0, 1e3, "horizontal position error, N/m")
+          .gain("kd_xy", &G::kd_xy, 0.0, 1e3, "horizontal velocity error, N s/m")
+          .gain("ki_xy", &G::ki_xy, 0.0, 1e3, "horizontal position-error integral, N/(m s)")
+          .gain("kp_z", &G::kp_z, 0.0, 1e3, "vertical position error, N/m")
+          .gain("kd_z", &G::kd_z, 0.0, 1e3, "vertical velocity error, N s/m")
+          .gain("ki_z", &G::ki_z, 0.0, 1e3, "vertical position-error integral, N/(m s)")
+          .gain("kr_xy", &G::kR_xy, 0.0, 1e7, "roll and pitch attitude error, PWM per unit")
+          .gain("kw_xy", &G::kw_xy, 0.0, 1e7, "roll and pitch rate error, PWM per rad/s")
+          .gain("kr_z", &G::kR_z, 0.0, 1e7, "yaw attitude error, PWM per unit")
+          .gain("kw_z", &G::kw_z, 0.0, 1e7, "yaw rate error, PWM per rad/s")
+          .gain("ki_m_z", &G::ki_m_z, 0.0, 1e7, "yaw attitude-error integral, PWM per (unit s)")
+          .gain("kd_omega_rp", &G::kd_omega_rp, 0.0, 1e7,
+                "roll and pitch rate error's change, PWM per rad/s^2");
+  return table;
+}
+
+}  // namespace
+
+void registerCrazyflieMellingerController(ControllerRegistry& registry) {
+  ControllerEntry e;
+  e.name = CrazyflieMellingerController::kName;
+  e.summary = "crazyflie-firmware's controller_mellinger.c (Mellinger and Kumar 2011) at 500 Hz";
+  e.gains = crazyflieMellingerGains().declarations();
+  e.team_shortfall = 0.05;  // swarm32 1.45, dense 1.47
+  e.crazyflie_thrust_path = true;
+  e.make = [](const QuadrotorParams& params, ParamSet& gains,
+              const ControllerOptions& options) -> std::unique_ptr<FlightController> {
+    auto c = std::make_unique<CrazyflieMellingerController>(params,
+                                                            crazyflieMellingerGains().read(gains));
+    c->setThrustPath(options.thrust_path);
+    return c;
+  };
+  registry.add(std::move(e));
 }
 
 }  // namespace cosim

@@ -36,7 +36,8 @@ class CrazyflieMellingerController : public CrazyflieMassBasedController<Crazyfl
   CrazyflieMellingerController(const QuadrotorParams& airframe,
                                const CrazyflieMellingerGains& gains = {},
                                const CrazyfliePlatform& platform = crazyflie21BrushlessPlatform());
-  std::string name() const override { return "crazyflie_mellinger"; }
+  static constexpr char kName[] = "crazyflie_mellinger";
+  std::string name() const override { return kName; }
 
   // One 500 Hz step: the legacy command, right-handed moments (roll, pitch, yaw about body x, y,
   // z) before the firmware's sign conventions are applied (exposed for tests).
@@ -60,5 +61,9 @@ class CrazyflieMellingerController : public CrazyflieMassBasedController<Crazyfl
   Eigen::Vector2d prev_rate_error_ = Eigen::Vector2d::Zero();
   bool has_prev_ = false;
 };
+
+class ControllerRegistry;
+// Registers crazyflie_mellinger (its gains, team margin, ...) in the controller registry.
+void registerCrazyflieMellingerController(ControllerRegistry& registry);
 
 }  // namespace cosim

@@ -55,7 +55,8 @@ class CrazyfliePidController : public CrazyflieFirmwareController {
  public:
   CrazyfliePidController(const QuadrotorParams& airframe, const CrazyfliePidGains& gains = {},
                          const CrazyfliePlatform& platform = crazyflie21BrushlessPlatform());
-  std::string name() const override { return "crazyflie_pid"; }
+  static constexpr char kName[] = "crazyflie_pid";
+  std::string name() const override { return kName; }
 
   // The 100 Hz part's outputs, held between its runs (exposed for tests).
   struct PositionOutput {
@@ -84,5 +85,9 @@ class CrazyfliePidController : public CrazyflieFirmwareController {
   PositionOutput pos_;
   Eigen::Vector3d att_out_ = Eigen::Vector3d::Zero();
 };
+
+class ControllerRegistry;
+// Registers crazyflie_pid (its gains, team margin, ...) in the controller registry.
+void registerCrazyfliePidController(ControllerRegistry& registry);
 
 }  // namespace cosim

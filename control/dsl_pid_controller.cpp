@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "control/controller_registry.h"
 #include "control/thrust_direction.h"
 #include "control/vee_map.h"
 
@@ -116,6 +117,48 @@ ControlOutput DslPidController::update(const VehicleState& s, const FlatReferenc
   out.torque = params_.inertia.cwiseProduct(alpha);
   out.rotor_thrusts = mixer_.allocateLimited(scalar_thrust, out.torque, &out.saturated);
   return out;
+}
+
+namespace {
+
+// In DSLPIDControl.py's own units (the CF2X's N and PWM; see dsl_pid_controller.h).
+const GainTable<DslPidGains>& dslPidGains() {
+  using G = DslPidGains;
+  static const GainTable<G> table =
+      GainTable<G>()
+          .horizontalAndZ("p_for", &G::p_for, 1e3, "P_COEFF_FOR: position error -> force, N/m")
+          .horizontalAndZ("i_for", &G::i_for, 1e3,
+                          "I_COEFF_FOR: position-error integral -> force, N/(m s)")
+          .horizontalAndZ("d_for", &G::d_for, 1e3, "D_COEFF_FOR: velocity error -> force, N/(m/s)")
+          .gain("i_pos_limit_xy", &G::i_pos_limit_xy, 0.0, 1e3,
+                "bound on the horizontal position-error integral, m s")
+          .gain("i_pos_limit_z", &G::i_pos_limit_z, 0.0, 1e3,
+                "bound on the vertical position-error integral, m s")
+          .rollPitchAndYaw("p_tor", &G::p_tor, 1e7, "P_COEFF_TOR: PWM per unit of rot_e")
+          .rollPitchAndYaw("i_tor", &G::i_tor, 1e7, "I_COEFF_TOR: PWM per (unit of rot_e s)")
+          .rollPitchAndYaw("d_tor", &G::d_tor, 1e7, "D_COEFF_TOR: PWM per rad/s")
+          .gain("i_rpy_limit_rp", &G::i_rpy_limit_rp, 0.0, 1e4,
+                "bound on the roll and pitch attitude-error integral")
+          .gain("i_rpy_limit_yaw", &G::i_rpy_limit_yaw, 0.0, 1e4,
+                "bound on the yaw attitude-error integral")
+          .gain("max_torque_pwm", &G::max_torque_pwm, 0.0, 65535.0,
+                "bound on each torque command, PWM");
+  return table;
+}
+
+}  // namespace
+
+void registerDslPidController(ControllerRegistry& registry) {
+  ControllerEntry e;
+  e.name = DslPidController::kName;
+  e.summary = "gym-pybullet-drones' DSLPIDControl (Panerati et al. 2021), for any airframe";
+  e.gains = dslPidGains().declarations();
+  e.team_shortfall = 0.58;  // swarm32 1.30; dense 1.09, and 0.94 planned at 1.51
+  e.make = [](const QuadrotorParams& params, ParamSet& gains,
+              const ControllerOptions&) -> std::unique_ptr<FlightController> {
+    return std::make_unique<DslPidController>(params, dslPidGains().read(gains));
+  };
+  registry.add(std::move(e));
 }
 
 }  // namespace cosim

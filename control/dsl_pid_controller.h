@@ -68,7 +68,8 @@ DslAccelerationGains dslAccelerationGains(const DslPidGains& gains);
 class DslPidController : public FlightController {
  public:
   DslPidController(const QuadrotorParams& params, const DslPidGains& gains = {});
-  std::string name() const override { return "dsl_pid"; }
+  static constexpr char kName[] = "dsl_pid";
+  std::string name() const override { return kName; }
   void reset() override;
   ControlOutput update(const VehicleState& state, const FlatReference& ref, double dt) override;
 
@@ -87,5 +88,9 @@ class DslPidController : public FlightController {
   bool has_last_rpy_ = false;
   Eigen::Matrix3d R_d_ = Eigen::Matrix3d::Identity();
 };
+
+class ControllerRegistry;
+// Registers dsl_pid (its gains, team margin, ...) in the controller registry.
+void registerDslPidController(ControllerRegistry& registry);
 
 }  // namespace cosim

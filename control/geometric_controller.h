@@ -40,7 +40,8 @@ class GeometricController : public FlightController {
  public:
   GeometricController(const QuadrotorParams& params, const GeometricGains& gains = {},
                       bool drag_compensation = false);
-  std::string name() const override { return "geometric"; }
+  static constexpr char kName[] = "geometric";
+  std::string name() const override { return kName; }
   void reset() override;
   ControlOutput update(const VehicleState& state, const FlatReference& ref, double dt) override;
 
@@ -58,5 +59,9 @@ class GeometricController : public FlightController {
   Eigen::Matrix3d R_d_ = Eigen::Matrix3d::Identity();
   Eigen::Vector3d omega_d_ = Eigen::Vector3d::Zero();
 };
+
+class ControllerRegistry;
+// Registers geometric (its gains, team margin, ...) in the controller registry.
+void registerGeometricController(ControllerRegistry& registry);
 
 }  // namespace cosim

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "control/controller_registry.h"
 #include "control/thrust_direction.h"
 
 namespace cosim {
@@ -135,6 +136,41 @@ ControlOutput IndiController::update(const VehicleState& s, const FlatReference&
   out.torque = mu_c;
   out.rotor_thrusts = mixer_.allocateLimited(out.collective_thrust, mu_c, &out.saturated);
   return out;
+}
+
+namespace {
+
+// Horizontal axes share one gain, as roll and pitch do; z and yaw have their own.
+const GainTable<IndiGains>& indiGains() {
+  using G = IndiGains;
+  static const GainTable<G> table =
+      GainTable<G>()
+          .horizontalAndZ("k_x", &G::k_x, 1e4, "position error -> acceleration, 1/s^2")
+          .horizontalAndZ("k_v", &G::k_v, 1e4, "velocity error -> acceleration, 1/s")
+          .rollPitchAndYaw("k_xi", &G::k_xi, 1e4, "attitude error -> angular acceleration, 1/s^2")
+          .rollPitchAndYaw("k_omega", &G::k_omega, 1e4, "rate error -> angular acceleration, 1/s")
+          .gain("filter_cutoff_hz", &G::filter_cutoff_hz, 0.1, 1e4,
+                "cutoff of the low-pass every fed-back signal passes, Hz")
+          .gain("max_tilt_deg", &G::max_tilt_deg, 1.0, 89.0,
+                "limit on the commanded thrust vector's tilt, deg");
+  return table;
+}
+
+}  // namespace
+
+void registerIndiController(ControllerRegistry& registry) {
+  ControllerEntry e;
+  e.name = IndiController::kName;
+  e.summary = "Tal and Karaman 2021: incremental nonlinear dynamic inversion with flatness";
+  e.gains = indiGains().declarations();
+  e.team_shortfall = 0.02;  // swarm32 1.48, dense 1.48
+  e.compensates_drag = true;
+  e.make = [](const QuadrotorParams& params, ParamSet& gains,
+              const ControllerOptions& options) -> std::unique_ptr<FlightController> {
+    return std::make_unique<IndiController>(params, indiGains().read(gains),
+                                            options.drag_compensation);
+  };
+  registry.add(std::move(e));
 }
 
 }  // namespace cosim

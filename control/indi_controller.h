@@ -59,7 +59,8 @@ class IndiController : public FlightController {
  public:
   IndiController(const QuadrotorParams& params, const IndiGains& gains = {},
                  bool drag_compensation = false);
-  std::string name() const override { return "indi"; }
+  static constexpr char kName[] = "indi";
+  std::string name() const override { return kName; }
   void reset() override;
   ControlOutput update(const VehicleState& state, const FlatReference& ref, double dt) override;
 
@@ -95,5 +96,9 @@ class IndiController : public FlightController {
   Eigen::Vector3d omega_d_ = Eigen::Vector3d::Zero();
   Eigen::Vector3d omega_dot_d_ = Eigen::Vector3d::Zero();
 };
+
+class ControllerRegistry;
+// Registers indi (its gains, team margin, ...) in the controller registry.
+void registerIndiController(ControllerRegistry& registry);
 
 }  // namespace cosim

@@ -5,8 +5,9 @@
 // of vehicles above included), so a plan with s >= 1 + d flies without entering the ellipsoid
 // (sim/uav_separation_metrics.h counts each entry as a downwash violation).
 //
-// d is declared per controller, measured with this simulator: the largest shortfall of the
-// flown closest approach below the planned 1.5 ellipsoids over the bundled teams
+// d is declared per controller (ControllerEntry::team_shortfall, control/controller_registry.h),
+// measured with this simulator: the largest shortfall of the flown closest approach below the
+// planned 1.5 ellipsoids over the bundled teams
 // (experiments/scenarios/swarm32.yaml: 3D grid, vehicles passing under each other;
 // swarm32_dense.yaml: 0.5 m spacing in one plane), downwash on, default gains. The plan keeps
 // 1 + 1.25 d (a quarter of the measured shortfall again in reserve), and never less than

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "control/controller_registry.h"
 #include "sim/scenario_overrides.h"
 #include "sim/scenario_sections.h"
 
@@ -76,17 +77,15 @@ void readMotionSectionsOf(const YamlReader& r, const YAML::Node& parent, const s
     out.controller_given = true;
     if (c["name"]) out.controller_name = r.text(c["name"], prefix + "controller.name");
     const std::string& name = out.controller_name;
-    if (name != "cascade" && name != "geometric" && name != "indi" && name != "dsl_pid" &&
-        name != "crazyflie_lee" && name != "crazyflie_mellinger" && name != "crazyflie_pid")
-      r.fail(c["name"], prefix + "controller.name",
-             "must be 'cascade', 'geometric', 'indi', 'dsl_pid', 'crazyflie_lee', "
-             "'crazyflie_mellinger' or 'crazyflie_pid'");
+    if (const std::string problem = controllerNameProblem(name); !problem.empty())
+      r.fail(c["name"], prefix + "controller.name", problem);
     if (c["drag_compensation"]) {
       out.controller_drag_compensation =
           r.boolean(c["drag_compensation"], prefix + "controller.drag_compensation");
-      if (out.controller_drag_compensation && name != "geometric" && name != "indi")
-        r.fail(c["drag_compensation"], prefix + "controller.drag_compensation",
-               "applies to the 'geometric' and 'indi' controllers, not '" + name + "'");
+      if (out.controller_drag_compensation && !compensatesDrag(name))
+        r.fail(
+            c["drag_compensation"], prefix + "controller.drag_compensation",
+            "applies to the " + dragCompensatingControllers() + " controllers, not '" + name + "'");
     }
     out.controller_thrust_path = readCrazyflieThrustPath(r, c, prefix, name);
     if (c["gains"])

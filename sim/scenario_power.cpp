@@ -3,17 +3,10 @@
 // build's thrust path (controller.thrust_map, thrust_map_coefficients, idle_thrust, platform).
 #include <string>
 
+#include "control/controller_registry.h"
 #include "sim/scenario_sections.h"
 
 namespace cosim {
-
-namespace {
-
-bool isCrazyflieController(const std::string& name) {
-  return name == "crazyflie_lee" || name == "crazyflie_mellinger" || name == "crazyflie_pid";
-}
-
-}  // namespace
 
 void readVehiclePower(const YamlReader& r, const YAML::Node& n, const std::string& key,
                       VehicleSpec& v) {
@@ -50,7 +43,7 @@ CrazyflieThrustPath readCrazyflieThrustPath(const YamlReader& r, const YAML::Nod
   CrazyflieThrustPath path;
   const std::string key = prefix + "controller";
   for (const char* k : {"thrust_map", "thrust_map_coefficients", "idle_thrust", "platform"})
-    if (c[k] && !isCrazyflieController(name))
+    if (c[k] && !takesCrazyflieThrustPath(name))
       r.fail(c[k], key + "." + k,
              "applies to the crazyflie_lee, crazyflie_mellinger and crazyflie_pid controllers, "
              "not '" +
@@ -91,7 +84,7 @@ void checkVehiclePower(const YamlReader& r, const YAML::Node& root, Scenario& s)
     const YAML::Node n = root["vehicles"][i];
     const std::string key = "vehicles[" + std::to_string(i) + "]";
     for (const char* k : {"battery", "motor_speed_map"})
-      if (n[k] && !isCrazyflieController(name))
+      if (n[k] && !takesCrazyflieThrustPath(name))
         r.fail(n[k], key + "." + k,
                "applies to the crazyflie_* controllers (which drive their motors by PWM), not '" +
                    name + "'");
