@@ -41,7 +41,8 @@ int runBenchmark(const MapfArgs& a, const std::vector<int>& counts,
       runMapfBenchmark(setup, [](std::size_t done, std::size_t total, const MapfBenchmarkRow& r) {
         std::cerr << "cosim: [" << done << "/" << total << "] " << r.planner << ", " << r.agents
                   << " agents, " << fileStem(r.scen) << ": "
-                  << (r.success ? "solved, SOC " + std::to_string(r.sum_of_costs) : r.status)
+                  << (r.success ? "solved, SOC " + std::to_string(r.sum_of_costs)
+                                : std::string(mapfRunStatusName(r.status)))
                   << ", " << fixedDigits(r.time_ms, 1) << " ms"
                   << (r.anytime ? " (first solution " + fixedDigits(r.first_solution_ms, 1) + " ms)"
                                 : "")

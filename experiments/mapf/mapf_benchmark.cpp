@@ -109,7 +109,7 @@ void runOne(MapfPlanner& planner, const MapfInstance& inst, const MapfBenchmarkS
   const MapfValidation check =
       result.paths.empty() ? MapfValidation{} : validateMapfSolution(inst, result.paths);
   r.success = result.success && check.valid();
-  r.status = r.success ? "solved" : "failed";
+  r.status = r.success ? MapfRunStatus::Solved : MapfRunStatus::Failed;
   r.time_ms = result.time_ms;
   r.conflicts = static_cast<int>(check.conflicts.size());
   r.message = result.message;
@@ -190,7 +190,7 @@ MapfBenchmarkOutcome runMapfBenchmark(const MapfBenchmarkSetup& s,
         ++done;
         const auto failed = failed_at.find({r.planner, r.scen});
         if (!s.keep_going && failed != failed_at.end()) {
-          r.status = "skipped";
+          r.status = MapfRunStatus::Skipped;
           r.message = "not run: failed at " + std::to_string(failed->second) + " agents";
           rows.push_back(r);
           continue;

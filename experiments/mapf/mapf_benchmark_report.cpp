@@ -19,15 +19,27 @@ std::string fileStem(const std::string& path) {
   return std::filesystem::path(path).stem().string();
 }
 
+const char* mapfRunStatusName(MapfRunStatus status) {
+  switch (status) {
+    case MapfRunStatus::Solved:
+      return "solved";
+    case MapfRunStatus::Failed:
+      return "failed";
+    case MapfRunStatus::Skipped:
+      return "skipped";
+  }
+  return "failed";
+}
+
 std::string mapfBenchmarkCsv(const std::string& map, const std::vector<MapfBenchmarkRow>& rows) {
   std::string csv =
       "map,scen,planner,agents,status,success,sum_of_costs,makespan,time_ms,first_solution_ms,"
       "first_cost,final_cost,conflicts,table_mb,peak_rss_mb,message\n";
   for (const MapfBenchmarkRow& r : rows) {
-    const bool run = r.status != "skipped";
+    const bool run = r.status != MapfRunStatus::Skipped;
     csv += csvField(fileStem(map)) + "," + csvField(fileStem(r.scen)) + "," + r.planner + "," +
-           std::to_string(r.agents) + "," + r.status + "," + (r.success ? "1" : "0") + "," +
-           (r.success ? std::to_string(r.sum_of_costs) : "") + "," +
+           std::to_string(r.agents) + "," + mapfRunStatusName(r.status) + "," +
+           (r.success ? "1" : "0") + "," + (r.success ? std::to_string(r.sum_of_costs) : "") + "," +
            (r.success ? std::to_string(r.makespan) : "") + "," +
            (run ? fixedDigits(r.time_ms, 3) : "") + "," +
            // A planner that is not anytime: its one solution is its first.

@@ -11,10 +11,16 @@
 
 namespace cosim {
 
+// How one planner's run on one instance ended: solved, failed (no solution within its limits), or
+// skipped (not run: the planner failed on this scenario file at fewer agents, without
+// --keep-going).
+enum class MapfRunStatus { Solved, Failed, Skipped };
+const char* mapfRunStatusName(MapfRunStatus status);  // "solved", "failed", "skipped"
+
 struct MapfBenchmarkRow {
   std::string scen, planner;
   int agents = 0;
-  std::string status;  // solved, failed, skipped
+  MapfRunStatus status = MapfRunStatus::Failed;
   bool success = false;
   long sum_of_costs = 0;
   int makespan = 0;

@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 #include <sys/wait.h>
+
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.h"
@@ -25,6 +26,13 @@ const char* jobStatusName(JobStatus s) {
       return "bad_input";
   }
   return "crashed";
+}
+
+std::optional<JobStatus> jobStatusNamed(const std::string& name) {
+  for (const JobStatus s : {JobStatus::Ok, JobStatus::Failed, JobStatus::Timeout,
+                            JobStatus::Crashed, JobStatus::BadInput})
+    if (name == jobStatusName(s)) return s;
+  return std::nullopt;
 }
 
 JobStatus classifyJobExit(int wait_status, bool timed_out) {
@@ -54,7 +62,7 @@ void writeJobResult(const std::filesystem::path& job_dir, const JobResult& r) {
   j.add("job", r.job)
       .add("fingerprint", r.fingerprint)
       .add("scenario", r.scenario)
-      .add("status", r.status)
+      .add("status", jobStatusName(r.status))
       .add("exit_code", r.exit_code)
       .add("signal", r.signal)
       .add("wall_time_s", r.wall_time_s)
@@ -71,7 +79,9 @@ std::optional<JobResult> readJobResult(const std::filesystem::path& job_dir) {
     r.job = n.at("job").get<std::size_t>();
     r.fingerprint = n.at("fingerprint").get<std::string>();
     r.scenario = n.at("scenario").get<std::string>();
-    r.status = n.at("status").get<std::string>();
+    const std::optional<JobStatus> status = jobStatusNamed(n.at("status").get<std::string>());
+    if (!status) return std::nullopt;  // a status no runner writes
+    r.status = *status;
     r.exit_code = n.at("exit_code").get<int>();
     r.signal = n.at("signal").get<int>();
     r.wall_time_s = n.at("wall_time_s").get<double>();

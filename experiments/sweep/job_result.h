@@ -10,6 +10,8 @@ namespace cosim {
 
 enum class JobStatus { Ok, Failed, Timeout, Crashed, BadInput };
 const char* jobStatusName(JobStatus s);  // ok, failed, timeout, crashed, bad_input
+// The status of a name jobStatusName gives; nullopt for any other text.
+std::optional<JobStatus> jobStatusNamed(const std::string& name);
 
 // From waitpid's status (-1: unknown) and whether the runner killed the job for its time limit.
 // `cosim run` exits 0 (ok), 1 (task failed), 2 (bad input); anything else, or a signal, is a crash.
@@ -19,8 +21,8 @@ struct JobResult {
   std::size_t job = 0;
   std::string fingerprint;
   std::string scenario;
-  std::string status;  // jobStatusName
-  int exit_code = -1;  // -1 when ended by a signal
+  JobStatus status = JobStatus::Crashed;  // result.json holds its jobStatusName
+  int exit_code = -1;                     // -1 when ended by a signal
   int signal = 0;
   double wall_time_s = 0.0;
   // Which build of the job program ran it (size and modification time of the executable): a

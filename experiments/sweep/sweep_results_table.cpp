@@ -66,7 +66,7 @@ SweepTable mergeSweepResults(const SweepSpec& spec, const std::vector<SweepJob>&
     Row row;
     row.fixed = {std::to_string(job.id), job.scenario};
     row.fixed.insert(row.fixed.end(), job.values.begin(), job.values.end());
-    row.fixed.push_back(result->status);
+    row.fixed.push_back(jobStatusName(result->status));
     for (auto& [name, value] : readMetrics(dir / "metrics.json")) {
       if (fixed_columns.count(name)) continue;
       if (metric_index.emplace(name, metric_names.size()).second) metric_names.push_back(name);

@@ -82,12 +82,12 @@ struct SweepProgress {
 // The line after each finished job: done over the shard, by status, the rate and the ETA; a job
 // that neither succeeded nor failed is named with its log.
 void reportFinished(const SweepProgress& p, const SweepRunReport& report, const RunningJob& r,
-                    const std::string& status) {
+                    JobStatus status) {
   const std::string& tag = p.tag;
-  if (status != "ok" && status != "failed")
+  if (status != JobStatus::Ok && status != JobStatus::Failed)
     std::cerr << tag << ": job " << sweepJobDirName(r.job->id, p.job_count) << " ("
-              << describe(*r.job) << ") " << status << "; log: " << (r.dir / "log.txt").string()
-              << "\n";
+              << describe(*r.job) << ") " << jobStatusName(status)
+              << "; log: " << (r.dir / "log.txt").string() << "\n";
   const std::size_t done = report.already_finished + report.ran;
   const double elapsed = secondsSince(p.t0);
   const double per_job = elapsed / static_cast<double>(report.ran);
@@ -116,15 +116,15 @@ void finishJob(const RunningJob& r, int wait_status, const std::string& build,
   res.job = r.job->id;
   res.fingerprint = r.job->fingerprint;
   res.scenario = r.job->scenario;
-  res.status = jobStatusName(classifyJobExit(wait_status, r.timed_out));
+  res.status = classifyJobExit(wait_status, r.timed_out);
   res.exit_code = wait_status != -1 && WIFEXITED(wait_status) ? WEXITSTATUS(wait_status) : -1;
   res.signal = wait_status != -1 && WIFSIGNALED(wait_status) ? WTERMSIG(wait_status) : 0;
   res.wall_time_s = secondsSince(r.started);
   res.program_build = build;
   writeJobResult(r.dir, res);
   ++report.ran;
-  ++report.statuses[res.status];
-  ++progress.finished_statuses[res.status];
+  ++report.statuses[jobStatusName(res.status)];
+  ++progress.finished_statuses[jobStatusName(res.status)];
   if (progress.o.progress) reportFinished(progress, report, r, res.status);
 }
 
@@ -154,7 +154,8 @@ std::vector<const SweepJob*> pendingJobs(const std::vector<SweepJob>& jobs,
     ++report.in_shard;
     if (sweepJobFinished(sweepJobDir(o.out_dir, job, jobs.size()), job)) {
       ++report.already_finished;
-      ++finished_statuses[readJobResult(sweepJobDir(o.out_dir, job, jobs.size()))->status];
+      ++finished_statuses[jobStatusName(
+          readJobResult(sweepJobDir(o.out_dir, job, jobs.size()))->status)];
     } else
       pending.push_back(&job);
   }

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/output_files.h"
+#include "experiments/sweep/job_result.h"
 
 namespace cosim {
 
@@ -42,6 +43,7 @@ SweepSummary summarizeSweep(const SweepTable& t) {
   std::vector<std::size_t> group_cols = {1};  // scenario
   s.group_columns = {"scenario"};
   std::size_t status_col = 0;
+  const std::string ok = jobStatusName(JobStatus::Ok);  // the status column holds the names
   for (std::size_t c = 2; c < t.first_metric_column; ++c) {
     if (t.header[c] == "status") {
       status_col = c;
@@ -59,7 +61,7 @@ SweepSummary summarizeSweep(const SweepTable& t) {
     bool any = false, numeric = true;
     for (const auto& r : t.rows) {
       double v;
-      if (r[status_col] != "ok" || r[c].empty()) continue;
+      if (r[status_col] != ok || r[c].empty()) continue;
       any = true;
       numeric = numeric && numericValue(r[c], v);
     }
@@ -77,14 +79,14 @@ SweepSummary summarizeSweep(const SweepTable& t) {
   }
   for (const auto& key : order) {
     const auto& members = groups[key];
-    std::vector<double> ok;
-    for (const auto* r : members) ok.push_back((*r)[status_col] == "ok" ? 1.0 : 0.0);
-    s.rows.push_back({key, "ok_rate", members.size(), describeSample(ok)});
+    std::vector<double> ok_rate;
+    for (const auto* r : members) ok_rate.push_back((*r)[status_col] == ok ? 1.0 : 0.0);
+    s.rows.push_back({key, "ok_rate", members.size(), describeSample(ok_rate)});
     for (std::size_t c : metric_cols) {
       std::vector<double> values;
       for (const auto* r : members) {
         double v;
-        if ((*r)[status_col] == "ok" && numericValue((*r)[c], v)) values.push_back(v);
+        if ((*r)[status_col] == ok && numericValue((*r)[c], v)) values.push_back(v);
       }
       // A metric no ok job of the group has (all failed, or it does not apply) has no row.
       if (!values.empty())

@@ -97,15 +97,31 @@ WidestPassage widestPassage(const World& world, const OccupancyGrid& layout, con
   return result;
 }
 
+const char* blockingName(OccupancyGrid::Blocking blocking) {
+  switch (blocking) {
+    case OccupancyGrid::Blocking::Exact:
+      return "exact";
+    case OccupancyGrid::Blocking::Centre:
+      return "centre";
+    case OccupancyGrid::Blocking::AnyPoint:
+      break;
+  }
+  return "cell";
+}
+
+const char* pathEndName(PathEnd end) {
+  return end == PathEnd::Start ? "start" : "goal";
+}
+
 std::string explainNoGridPath(const World& world, const OccupancyGrid& grid, const Cell& start,
                               const Cell& goal, double inflation, bool planar,
                               bool search_exhausted, const std::string& search_message,
-                              const char* blocking_name) {
+                              OccupancyGrid::Blocking blocking) {
   const double r = grid.cellSize();
   const std::string where =
       format("at resolution %g m, obstacles inflated by %g m (vehicle radius + margin)", r,
              inflation) +
-      ", cell_blocking " + blocking_name;
+      ", cell_blocking " + blockingName(blocking);
   if (!search_exhausted) return search_message + " " + where;
   // Look a little beyond the inflation: enough to tell "too narrow" from "too coarse".
   const WidestPassage p = widestPassage(world, grid, start, goal, planar, inflation + 2.0 * r);
@@ -125,23 +141,23 @@ std::string explainNoGridPath(const World& world, const OccupancyGrid& grid, con
              "%.3g m from obstacles exists, more than the inflation, so the grid is too coarse "
              "or too conservative for it; try a finer resolution (e.g. %g m)",
              p.clearance, 0.5 * r) +
-         (std::string(blocking_name) == "cell" ? " or cell_blocking exact" : "");
+         (blocking == OccupancyGrid::Blocking::AnyPoint ? " or cell_blocking exact" : "");
 }
 
-std::string explainBlockedEnd(const World& world, const OccupancyGrid& grid, const char* which,
+std::string explainBlockedEnd(const World& world, const OccupancyGrid& grid, PathEnd which,
                               const Eigen::Vector3d& p, double inflation, bool planar) {
   const Cell cell = grid.cellOf(p);
   Eigen::Vector3d centre = grid.cellCenter(cell);
   if (planar) centre.z() = p.z();
   const std::string point = format("(%g, %g, %g)", p.x(), p.y(), p.z());
   if (!grid.inside(cell) || !world.insideBounds(centre))
-    return std::string(which) + " " + point +
+    return std::string(pathEndName(which)) + " " + point +
            format(" is outside the world bounds at resolution %g m", grid.cellSize());
   double d = world.distanceToObstacles(centre);
   if (!planar) d = std::min(d, centre.z() - world.bounds_min.z());
   double own = world.distanceToObstacles(p);
   if (!planar) own = std::min(own, p.z() - world.bounds_min.z());
-  return std::string(which) +
+  return std::string(pathEndName(which)) +
          format(
              " cell is blocked at resolution %g m, obstacles inflated by %g m (vehicle radius "
              "+ margin): its centre is %g m from the nearest obstacle or the floor; the point ",

@@ -24,15 +24,22 @@ WidestPassage widestPassage(const World& world, const OccupancyGrid& layout, con
 
 // What a grid planner on `grid` reports when it found no path. `search_message` is the search's
 // own ("no path", "time limit"); when the search was exhausted (GridPlanResult::exhausted) the
-// message says why no path exists; `blocking_name` is the cell_blocking mode in force.
+// message says why no path exists; `blocking` is the cell_blocking mode in force.
 std::string explainNoGridPath(const World& world, const OccupancyGrid& grid, const Cell& start,
                               const Cell& goal, double inflation, bool planar,
                               bool search_exhausted, const std::string& search_message,
-                              const char* blocking_name);
+                              OccupancyGrid::Blocking blocking);
+
+// The cell_blocking name of a blocking mode: "exact", "cell" (AnyPoint) or "centre".
+const char* blockingName(OccupancyGrid::Blocking blocking);
+
+// Which end of a path a point is.
+enum class PathEnd { Start, Goal };
+const char* pathEndName(PathEnd end);  // "start", "goal"
 
 // Why the start or goal cell is blocked: its centre's distance to the nearest obstacle against
-// the inflation. `which` is "start" or "goal"; p is the exact point.
-std::string explainBlockedEnd(const World& world, const OccupancyGrid& grid, const char* which,
+// the inflation. p is the exact point.
+std::string explainBlockedEnd(const World& world, const OccupancyGrid& grid, PathEnd which,
                               const Eigen::Vector3d& p, double inflation, bool planar);
 
 }  // namespace cosim

@@ -3,26 +3,12 @@
 #include <memory>
 #include <tuple>
 
+#include "core/input_error.h"
 #include "core/stop_token.h"
 #include "planning/grid/grid_passage_diagnosis.h"
 #include "planning/grid/grid_segment_checker.h"
-#include "core/input_error.h"
 
 namespace cosim {
-
-namespace {
-const char* blockingName(OccupancyGrid::Blocking b) {
-  switch (b) {
-    case OccupancyGrid::Blocking::Exact:
-      return "exact";
-    case OccupancyGrid::Blocking::Centre:
-      return "centre";
-    case OccupancyGrid::Blocking::AnyPoint:
-      break;
-  }
-  return "cell";
-}
-}  // namespace
 
 PlanResult GridWorldPlanner::solve(const PlanningProblem& problem, const StopToken& stop) {
   const StopToken clock(problem.time_limit_s, stop);
@@ -48,11 +34,11 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem, const StopTok
     result.time_ms = clock.elapsedMs();
     return result;
   };
-  for (const auto& [which, p, c] : {std::tuple("start", problem.start, query.start),
-                                    std::tuple("goal", problem.goal, query.goal)})
+  for (const auto& [which, p, c] : {std::tuple(PathEnd::Start, problem.start, query.start),
+                                    std::tuple(PathEnd::Goal, problem.goal, query.goal)})
     if (grid.blocked(c)) {
-      result.status = std::string(which) == "start" ? PlannerStatus::InvalidStart
-                                                    : PlannerStatus::InvalidGoal;
+      result.status =
+          which == PathEnd::Start ? PlannerStatus::InvalidStart : PlannerStatus::InvalidGoal;
       result.message =
           explainBlockedEnd(*problem.world, grid, which, p, problem.inflation, problem.planar);
       return finish();
@@ -66,12 +52,12 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem, const StopTok
     if (problem.planar) centre.z() = p.z();
     return !segments || segments->pointsClear(p, centre);
   };
-  for (const auto& [which, p, centre] : {std::tuple("start", problem.start, start_centre),
-                                         std::tuple("goal", problem.goal, goal_centre)})
+  for (const auto& [which, p, centre] : {std::tuple(PathEnd::Start, problem.start, start_centre),
+                                         std::tuple(PathEnd::Goal, problem.goal, goal_centre)})
     if (!joined(p, centre)) {
-      result.status = std::string(which) == "start" ? PlannerStatus::InvalidStart
-                                                    : PlannerStatus::InvalidGoal;
-      result.message = std::string(which) +
+      result.status =
+          which == PathEnd::Start ? PlannerStatus::InvalidStart : PlannerStatus::InvalidGoal;
+      result.message = std::string(pathEndName(which)) +
                        " cannot reach the centre of its cell in a straight "
                        "line at resolution " +
                        std::to_string(resolution_) +
@@ -86,7 +72,7 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem, const StopTok
   if (!g.success)
     result.message =
         explainNoGridPath(*problem.world, grid, query.start, query.goal, problem.inflation,
-                          problem.planar, g.exhausted, g.message, blockingName(blocking_));
+                          problem.planar, g.exhausted, g.message, blocking_);
   if (g.success) {
     // Every segment between centres was checked by the planner (an any-angle segment from the
     // exact point itself could clip a blocked cell).

@@ -66,7 +66,7 @@ class SweepRunnerTest : public ::testing::Test {
   }
   std::string status(const SweepJob& job, std::size_t count) {
     const auto r = readJobResult(sweepJobDir(root_ / "out", job, count));
-    return r ? r->status : "unfinished";
+    return r ? jobStatusName(r->status) : "unfinished";
   }
   // What a real `cosim run` does as it ends: record the files it wrote in its folder
   // (core/output_manifest.h), so that a later attempt of the job may replace them. The fake
