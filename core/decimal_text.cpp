@@ -1,6 +1,7 @@
 #include "core/decimal_text.h"
 
 #include <cctype>
+#include <sstream>
 
 namespace cosim {
 
@@ -34,6 +35,13 @@ bool isDecimalNumberText(const std::string& text) {
     if (skipDigits(text, at) == 0) return false;
   }
   return at == text.size();
+}
+
+std::string tenSignificantDigits(double v) {
+  std::ostringstream s;
+  s.precision(10);
+  s << v;
+  return s.str();
 }
 
 }  // namespace cosim

@@ -10,4 +10,9 @@ namespace cosim {
 // ("1", "-0.5", ".5", "5.", "1e-3"); false for anything else, leading or trailing spaces too.
 bool isDecimalNumberText(const std::string& text);
 
+// `v` written with ten significant digits (as std::ostream writes it at precision 10: "0.1",
+// "1e-05", "12345.6789"): the text cosim writes numbers into the MJCF it composes with, enough
+// to carry a float's seven digits and the scenario's decimal values unchanged.
+std::string tenSignificantDigits(double v);
+
 }  // namespace cosim

@@ -1,18 +1,10 @@
 #include "sim/moving_obstacle_motion.h"
 
 #include <cmath>
-#include <sstream>
+
+#include "core/decimal_text.h"
 
 namespace cosim {
-
-namespace {
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-}  // namespace
 
 Eigen::Vector2d movingObstaclePosition(const MovingObstacleSpec& o, double t) {
   if (o.path.size() < 2 || !(o.speed > 0)) return o.path.front();
@@ -54,19 +46,24 @@ void addMovingObstacleBodies(tinyxml2::XMLDocument& doc, tinyxml2::XMLElement* w
     body->SetAttribute("name", movingObstacleName(i).c_str());
     body->SetAttribute("mocap", "true");
     const double z = s.world.bounds_min.z() + lift + 0.5 * o.height;
-    body->SetAttribute("pos", (fmt(p.x()) + " " + fmt(p.y()) + " " + fmt(z)).c_str());
+    body->SetAttribute("pos", (tenSignificantDigits(p.x()) + " " + tenSignificantDigits(p.y()) +
+                               " " + tenSignificantDigits(z))
+                                  .c_str());
     tinyxml2::XMLElement* g = doc.NewElement("geom");
     body->InsertEndChild(g);
     g->SetAttribute("name", movingObstacleName(i).c_str());
     g->SetAttribute("rgba", "0.85 0.2 0.25 1");
     if (o.type == ObstacleType::Box) {
       g->SetAttribute("type", "box");
-      g->SetAttribute(
-          "size", (fmt(0.5 * o.size.x()) + " " + fmt(0.5 * o.size.y()) + " " + fmt(0.5 * o.height))
-                      .c_str());
+      g->SetAttribute("size", (tenSignificantDigits(0.5 * o.size.x()) + " " +
+                               tenSignificantDigits(0.5 * o.size.y()) + " " +
+                               tenSignificantDigits(0.5 * o.height))
+                                  .c_str());
     } else {
       g->SetAttribute("type", "cylinder");
-      g->SetAttribute("size", (fmt(o.radius) + " " + fmt(0.5 * o.height)).c_str());
+      g->SetAttribute(
+          "size",
+          (tenSignificantDigits(o.radius) + " " + tenSignificantDigits(0.5 * o.height)).c_str());
     }
   }
 }

@@ -2,22 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
+#include "core/decimal_text.h"
 #include "core/input_error.h"
 #include "sim/airframe_file.h"
 
 namespace cosim {
 
 namespace {
-
-// A number as the composed model writes it (ten significant digits).
-std::string tenDigits(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
 
 // The value of the vehicle's <custom><numeric name="<prefix><name>"> (see models/quad_1500g.xml),
 // which must be one finite number within [lo, hi].
@@ -29,7 +21,8 @@ double rotorConstant(const mjModel* m, const std::string& prefix, const char* na
   const double v = m->numeric_data[m->numeric_adr[id]];
   if (m->numeric_size[id] != 1 || !std::isfinite(v) || v < lo || v > hi)
     throw InputError(file, std::string("<numeric name=\"") + name + "\">",
-                     "must be one number in [" + tenDigits(lo) + ", " + tenDigits(hi) + "]");
+                     "must be one number in [" + tenSignificantDigits(lo) + ", " +
+                         tenSignificantDigits(hi) + "]");
   return v;
 }
 

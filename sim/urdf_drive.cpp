@@ -34,7 +34,7 @@ void UrdfDrive::addVelocityServo(const std::string& joint, double inertia, doubl
   servo_joints_ += joint;
   for (double x : {inertia / kDriveTimeConstant, force, speed}) {
     if (!servo_data_.empty()) servo_data_ += ' ';
-    servo_data_ += fmt(x);
+    servo_data_ += tenSignificantDigits(x);
   }
 }
 
@@ -55,11 +55,11 @@ void UrdfDrive::recordDrive(const GroundDrive& d) {
   joints->SetAttribute("data", servo_joints_.c_str());
   XMLElement* n = add(doc_, custom, "numeric");
   n->SetAttribute("name", (prefix_ + "ground_drive").c_str());
-  n->SetAttribute(
-      "data",
-      (fmt(d.kind == GroundDrive::Kind::Holonomic ? 0 : 1) + " " + fmt(d.planar_root ? 1 : 0) +
-       " " + fmt3(d.max_speed, d.max_yaw_rate, d.wheel_radius) + " " + fmt(d.wheel_separation))
-          .c_str());
+  n->SetAttribute("data", (tenSignificantDigits(d.kind == GroundDrive::Kind::Holonomic ? 0 : 1) +
+                           " " + tenSignificantDigits(d.planar_root ? 1 : 0) + " " +
+                           fmt3(d.max_speed, d.max_yaw_rate, d.wheel_radius) + " " +
+                           tenSignificantDigits(d.wheel_separation))
+                              .c_str());
 }
 
 void UrdfDrive::addHolonomic(const urdf::Joint& planar, const urdf::Link& base,

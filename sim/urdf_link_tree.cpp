@@ -51,7 +51,7 @@ void UrdfLinkTree::addLinkContents(XMLElement* body, const urdf::Link& link,
     XMLElement* e = add(doc_, body, "inertial");
     e->SetAttribute("pos",
                     fmt3(i.origin.position.x, i.origin.position.y, i.origin.position.z).c_str());
-    e->SetAttribute("mass", fmt(i.mass).c_str());
+    e->SetAttribute("mass", tenSignificantDigits(i.mass).c_str());
     // MuJoCo takes a full inertia only in the body frame: rotate it there, I_b = R I R^T.
     Eigen::Matrix3d I;
     I << i.ixx, i.ixy, i.ixz, i.ixy, i.iyy, i.iyz, i.ixz, i.iyz, i.izz;
@@ -88,7 +88,8 @@ void UrdfLinkTree::addLinkContents(XMLElement* body, const urdf::Link& link,
     g->SetAttribute("group", 1);
     if (vis.material) {
       const urdf::Color& col = vis.material->color;
-      g->SetAttribute("rgba", (fmt3(col.r, col.g, col.b) + " " + fmt(col.a)).c_str());
+      g->SetAttribute("rgba",
+                      (fmt3(col.r, col.g, col.b) + " " + tenSignificantDigits(col.a)).c_str());
     }
   }
 }
@@ -112,13 +113,15 @@ XMLElement* UrdfLinkTree::addGeom(XMLElement* body, const urdf::Link& link, cons
       // URDF and MuJoCo cylinders both lie along their frame's z axis.
       const auto& c = static_cast<const urdf::Cylinder&>(*geometry);
       g->SetAttribute("type", "cylinder");
-      g->SetAttribute("size", (fmt(c.radius) + " " + fmt(0.5 * c.length)).c_str());
+      g->SetAttribute(
+          "size",
+          (tenSignificantDigits(c.radius) + " " + tenSignificantDigits(0.5 * c.length)).c_str());
       break;
     }
     case urdf::Geometry::SPHERE: {
       const auto& s = static_cast<const urdf::Sphere&>(*geometry);
       g->SetAttribute("type", "sphere");
-      g->SetAttribute("size", fmt(s.radius).c_str());
+      g->SetAttribute("size", tenSignificantDigits(s.radius).c_str());
       break;
     }
     case urdf::Geometry::MESH: {
@@ -229,12 +232,13 @@ UrdfLinkTree::AddedBody UrdfLinkTree::addChild(XMLElement* parent, const urdf::J
           throw InputError(file_, place + " <limit>", "lower must be below upper");
         // URDF angles are radians; the composed model reads angles in degrees.
         const double k = j.type == urdf::Joint::REVOLUTE ? 180.0 / M_PI : 1.0;
-        e->SetAttribute("range",
-                        (fmt(k * j.limits->lower) + " " + fmt(k * j.limits->upper)).c_str());
+        e->SetAttribute("range", (tenSignificantDigits(k * j.limits->lower) + " " +
+                                  tenSignificantDigits(k * j.limits->upper))
+                                     .c_str());
       }
       if (j.dynamics) {
-        e->SetAttribute("damping", fmt(j.dynamics->damping).c_str());
-        e->SetAttribute("frictionloss", fmt(j.dynamics->friction).c_str());
+        e->SetAttribute("damping", tenSignificantDigits(j.dynamics->damping).c_str());
+        e->SetAttribute("frictionloss", tenSignificantDigits(j.dynamics->friction).c_str());
       }
       break;
     }

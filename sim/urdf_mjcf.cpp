@@ -1,20 +1,12 @@
 #include "sim/urdf_mjcf.h"
 
-#include <sstream>
-
 namespace cosim::urdf_mjcf {
 
 using tinyxml2::XMLDocument;
 using tinyxml2::XMLElement;
 
-std::string fmt(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
 std::string fmt3(double a, double b, double c) {
-  return fmt(a) + " " + fmt(b) + " " + fmt(c);
+  return tenSignificantDigits(a) + " " + tenSignificantDigits(b) + " " + tenSignificantDigits(c);
 }
 
 XMLElement* add(XMLDocument& doc, XMLElement* parent, const char* tag) {
@@ -44,7 +36,7 @@ Eigen::Isometry3d pose(const urdf::Pose& p) {
 void setPose(XMLElement* e, const urdf::Pose& p) {
   e->SetAttribute("pos", fmt3(p.position.x, p.position.y, p.position.z).c_str());
   const Eigen::Quaterniond q = quat(p.rotation).normalized();
-  e->SetAttribute("quat", (fmt(q.w()) + " " + fmt3(q.x(), q.y(), q.z())).c_str());
+  e->SetAttribute("quat", (tenSignificantDigits(q.w()) + " " + fmt3(q.x(), q.y(), q.z())).c_str());
 }
 
 }  // namespace cosim::urdf_mjcf

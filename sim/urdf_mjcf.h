@@ -8,10 +8,11 @@
 #include <Eigen/Geometry>
 #include <string>
 
+#include "core/decimal_text.h"
+
 namespace cosim::urdf_mjcf {
 
-std::string fmt(double v);
-std::string fmt3(double a, double b, double c);  // "a b c"
+std::string fmt3(double a, double b, double c);  // "a b c", each tenSignificantDigits
 
 tinyxml2::XMLElement* add(tinyxml2::XMLDocument& doc, tinyxml2::XMLElement* parent,
                           const char* tag);

@@ -60,7 +60,7 @@ bool addUrdfVehicle(XMLDocument& doc, XMLElement* worldbody, const VehicleSpec& 
   } else {
     body->SetAttribute("pos",
                        urdf_mjcf::fmt3(vehicle.start.x(), vehicle.start.y(), floor_z).c_str());
-    body->SetAttribute("euler", ("0 0 " + urdf_mjcf::fmt(vehicle.yaw_deg)).c_str());
+    body->SetAttribute("euler", ("0 0 " + tenSignificantDigits(vehicle.yaw_deg)).c_str());
     urdf_mjcf::add(doc, body, "freejoint")->SetAttribute("name", (prefix + "root").c_str());
   }
   UrdfLinkTree links(doc, *model, file, prefix, vehicle.model_file.parent_path());

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <utility>
 
+#include "core/decimal_text.h"
 #include "core/input_error.h"
 #include "core/input_file.h"
 #include "sim/ground_vehicle_handles.h"
@@ -24,14 +25,9 @@ using tinyxml2::XMLDocument;
 using tinyxml2::XMLElement;
 using tinyxml2::XMLNode;
 
-std::string xmlText(double v) {
-  std::ostringstream s;
-  s.precision(10);
-  s << v;
-  return s.str();
-}
-std::string xmlText(const Eigen::Vector3d& v) {
-  return xmlText(v.x()) + " " + xmlText(v.y()) + " " + xmlText(v.z());
+std::string vectorText(const Eigen::Vector3d& v) {
+  return tenSignificantDigits(v.x()) + " " + tenSignificantDigits(v.y()) + " " +
+         tenSignificantDigits(v.z());
 }
 
 // Attributes that name something (prefixed) or refer to a named thing (prefixed the same way).
@@ -55,21 +51,23 @@ XMLElement* add(XMLDocument& doc, XMLNode* parent, const char* tag) {
 void addObstacleGeom(XMLDocument& doc, XMLElement* worldbody, const Obstacle& o, std::size_t i) {
   XMLElement* g = add(doc, worldbody, "geom");
   g->SetAttribute("name", ("obstacle" + std::to_string(i)).c_str());
-  g->SetAttribute("pos", xmlText(o.pos).c_str());
+  g->SetAttribute("pos", vectorText(o.pos).c_str());
   g->SetAttribute("material", "obstacle");
   switch (o.type) {
     case ObstacleType::Box:
       g->SetAttribute("type", "box");
-      g->SetAttribute("size", xmlText(0.5 * o.size).c_str());
-      g->SetAttribute("euler", ("0 0 " + xmlText(o.yaw_deg)).c_str());
+      g->SetAttribute("size", vectorText(0.5 * o.size).c_str());
+      g->SetAttribute("euler", ("0 0 " + tenSignificantDigits(o.yaw_deg)).c_str());
       break;
     case ObstacleType::Cylinder:
       g->SetAttribute("type", "cylinder");
-      g->SetAttribute("size", (xmlText(o.radius) + " " + xmlText(0.5 * o.height)).c_str());
+      g->SetAttribute(
+          "size",
+          (tenSignificantDigits(o.radius) + " " + tenSignificantDigits(0.5 * o.height)).c_str());
       break;
     case ObstacleType::Sphere:
       g->SetAttribute("type", "sphere");
-      g->SetAttribute("size", xmlText(o.radius).c_str());
+      g->SetAttribute("size", tenSignificantDigits(o.radius).c_str());
       break;
   }
 }
@@ -88,13 +86,13 @@ void setTotalMass(XMLElement* base, const VehicleSpec& v) {
                          "' sets mass: the model needs one base body with an "
                          "<inertial mass=...> and no child bodies");
   const double ratio = v.mass / mass;
-  inertial->SetAttribute("mass", xmlText(v.mass).c_str());
+  inertial->SetAttribute("mass", tenSignificantDigits(v.mass).c_str());
   if (const char* d = inertial->Attribute("diaginertia")) {
     std::istringstream in(d);
     Eigen::Vector3d j;
     if (!(in >> j.x() >> j.y() >> j.z()))
       throw InputError(v.model_file.string(), "<inertial diaginertia>", "needs three numbers");
-    inertial->SetAttribute("diaginertia", xmlText(ratio * j).c_str());
+    inertial->SetAttribute("diaginertia", vectorText(ratio * j).c_str());
   } else if (inertial->Attribute("fullinertia")) {
     throw InputError(v.model_file.string(), "<inertial>",
                      "vehicle '" + v.name + "' sets mass: use diaginertia, not fullinertia");
@@ -118,8 +116,8 @@ void addVehicle(XMLDocument& doc, XMLElement* worldbody, XMLElement* custom, con
   XMLElement* copy = body->DeepClone(&doc)->ToElement();
   prefixNames(copy, prefix);
   // The start pose is the body's own pose, so qpos0 (and a reset) puts the vehicle at its start.
-  copy->SetAttribute("pos", xmlText(v.start).c_str());
-  copy->SetAttribute("euler", ("0 0 " + xmlText(v.yaw_deg)).c_str());
+  copy->SetAttribute("pos", vectorText(v.start).c_str());
+  copy->SetAttribute("euler", ("0 0 " + tenSignificantDigits(v.yaw_deg)).c_str());
   if (v.mass > 0.0) setTotalMass(copy, v);
   worldbody->InsertEndChild(copy);
 
@@ -189,7 +187,7 @@ void addVisual(XMLDocument& doc, XMLElement* mujoco, const Scenario& s) {
   quality->SetAttribute("numslices", 16);
   quality->SetAttribute("numstacks", 8);
   XMLElement* map = add(doc, visual, "map");
-  map->SetAttribute("znear", xmlText(0.05 / std::max(extent, 1.0)).c_str());
+  map->SetAttribute("znear", tenSignificantDigits(0.05 / std::max(extent, 1.0)).c_str());
   map->SetAttribute("zfar", "10");
   XMLElement* headlight = add(doc, visual, "headlight");
   headlight->SetAttribute("ambient", "0.35 0.35 0.35");
@@ -225,9 +223,9 @@ void addAssets(XMLDocument& doc, XMLElement* mujoco, const Scenario& s) {
   floor_mat->SetAttribute("texture", "grid");
   floor_mat->SetAttribute("specular", "0");
   // One checker square per 2 m of world.
-  floor_mat->SetAttribute(
-      "texrepeat",
-      (xmlText((hi.x() - lo.x()) / 4.0) + " " + xmlText((hi.y() - lo.y()) / 4.0)).c_str());
+  floor_mat->SetAttribute("texrepeat", (tenSignificantDigits((hi.x() - lo.x()) / 4.0) + " " +
+                                        tenSignificantDigits((hi.y() - lo.y()) / 4.0))
+                                           .c_str());
   XMLElement* obstacle_mat = add(doc, asset, "material");
   obstacle_mat->SetAttribute("name", "obstacle");
   obstacle_mat->SetAttribute("rgba", "0.55 0.6 0.68 1");
@@ -244,17 +242,17 @@ XMLElement* addStaticWorld(XMLDocument& doc, XMLElement* mujoco, const Scenario&
   XMLElement* light = add(doc, worldbody, "light");
   light->SetAttribute("directional", "true");
   light->SetAttribute("pos",
-                      xmlText(Eigen::Vector3d(centre.x(), centre.y(), hi.z() + extent)).c_str());
+                      vectorText(Eigen::Vector3d(centre.x(), centre.y(), hi.z() + extent)).c_str());
   light->SetAttribute("dir", "-0.3 -0.4 -1");
   light->SetAttribute("diffuse", "0.6 0.6 0.6");
   light->SetAttribute("castshadow", "true");
   XMLElement* floor = add(doc, worldbody, "geom");
   floor->SetAttribute("name", "floor");
   floor->SetAttribute("type", "plane");
-  floor->SetAttribute("pos", xmlText(Eigen::Vector3d(centre.x(), centre.y(), lo.z())).c_str());
-  floor->SetAttribute(
-      "size",
-      (xmlText(0.5 * (hi.x() - lo.x())) + " " + xmlText(0.5 * (hi.y() - lo.y())) + " 0.1").c_str());
+  floor->SetAttribute("pos", vectorText(Eigen::Vector3d(centre.x(), centre.y(), lo.z())).c_str());
+  floor->SetAttribute("size", (tenSignificantDigits(0.5 * (hi.x() - lo.x())) + " " +
+                               tenSignificantDigits(0.5 * (hi.y() - lo.y())) + " 0.1")
+                                  .c_str());
   floor->SetAttribute("material", "floor");
   for (std::size_t i = 0; i < s.world.obstacles.size(); ++i)
     addObstacleGeom(doc, worldbody, s.world.obstacles[i], i);
@@ -296,7 +294,7 @@ std::string composeWorldXml(const Scenario& s) {
   compiler->SetAttribute("autolimits", "true");  // MuJoCo 2.2.2 needs it for ctrlrange
   compiler->SetAttribute("angle", "degree");
   XMLElement* option = add(doc, mujoco, "option");
-  option->SetAttribute("timestep", xmlText(s.sim.timestep).c_str());
+  option->SetAttribute("timestep", tenSignificantDigits(s.sim.timestep).c_str());
   option->SetAttribute("gravity", "0 0 -9.81");
   addVisual(doc, mujoco, s);
   addAssets(doc, mujoco, s);
