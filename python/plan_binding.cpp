@@ -16,7 +16,8 @@ namespace cosim::python {
 
 namespace {
 
-struct PlanResult {
+// What Python sees as cosim.PlanResult (named apart from the planners' PlanResult).
+struct PythonPlanResult {
   bool success = false;
   std::string status;  // plan.json's: how the search ended (planning/planner_status.h)
   double length_m = 0.0;
@@ -28,8 +29,8 @@ struct PlanResult {
   std::map<std::string, std::string> params;
 };
 
-PlanResult plan(const py::object& scenario, const py::object& planner,
-                const py::object& overrides) {
+PythonPlanResult plan(const py::object& scenario, const py::object& planner,
+                      const py::object& overrides) {
   const std::string path = scenarioPath(scenario);
   const std::vector<std::string> sets = overrideAssignments(overrides);
   if (!planner.is_none() && !py::isinstance<py::str>(planner))
@@ -54,7 +55,7 @@ PlanResult plan(const py::object& scenario, const py::object& planner,
     p.message = "interrupted";
   }
 
-  PlanResult r;
+  PythonPlanResult r;
   r.success = p.success;
   r.status = toString(p.status);
   r.length_m = p.success ? p.path.length() : 0.0;
@@ -71,22 +72,22 @@ PlanResult plan(const py::object& scenario, const py::object& planner,
 }  // namespace
 
 void bindPlan(py::module_& m) {
-  py::class_<PlanResult>(m, "PlanResult", "What cosim.plan returns (plan.json's fields).")
-      .def_readonly("success", &PlanResult::success)
-      .def_readonly("status", &PlanResult::status,
+  py::class_<PythonPlanResult>(m, "PlanResult", "What cosim.plan returns (plan.json's fields).")
+      .def_readonly("success", &PythonPlanResult::success)
+      .def_readonly("status", &PythonPlanResult::status,
                     "how the search ended: exact_solution, timeout, no_solution, "
                     "limit_reached, invalid_start, ... (plan.json's status)")
-      .def_readonly("length_m", &PlanResult::length_m, "path length, m (0 without a path)")
-      .def_readonly("time_ms", &PlanResult::time_ms, "planning time, ms")
-      .def_readonly("path", &PlanResult::path, "waypoints, an (N, 3) NumPy array, metres")
-      .def_readonly("planner", &PlanResult::planner)
-      .def_readonly("message", &PlanResult::message, "why there is no path ('' with one)")
-      .def_readonly("inflation_m", &PlanResult::inflation_m,
+      .def_readonly("length_m", &PythonPlanResult::length_m, "path length, m (0 without a path)")
+      .def_readonly("time_ms", &PythonPlanResult::time_ms, "planning time, ms")
+      .def_readonly("path", &PythonPlanResult::path, "waypoints, an (N, 3) NumPy array, metres")
+      .def_readonly("planner", &PythonPlanResult::planner)
+      .def_readonly("message", &PythonPlanResult::message, "why there is no path ('' with one)")
+      .def_readonly("inflation_m", &PythonPlanResult::inflation_m,
                     "vehicle radius + margin the planner kept clear of obstacles, m")
-      .def_readonly("counters", &PlanResult::counters,
+      .def_readonly("counters", &PythonPlanResult::counters,
                     "planner counters (expansions, los_checks, iterations, nodes, ...)")
-      .def_readonly("params", &PlanResult::params, "the planner's parameters in force")
-      .def("__repr__", [](const PlanResult& r) {
+      .def_readonly("params", &PythonPlanResult::params, "the planner's parameters in force")
+      .def("__repr__", [](const PythonPlanResult& r) {
         return "PlanResult(success=" + std::string(r.success ? "True" : "False") +
                ", length_m=" + std::to_string(r.length_m) +
                ", time_ms=" + std::to_string(r.time_ms) + ", planner='" + r.planner + "')";
@@ -99,7 +100,7 @@ scenario: path of a scenario YAML file (None: the bundled default).
 planner: a planner name (overrides planner.name), e.g. "rrt_connect"; None: the scenario's.
 overrides: dict of scenario keys to values, as for cosim.run.
 
-Returns a PlanResult (success, length_m, time_ms, path as an (N, 3) array, counters, params).
+Returns a PythonPlanResult (success, length_m, time_ms, path as an (N, 3) array, counters, params).
 Raises cosim.InputError for bad input, KeyboardInterrupt on Ctrl-C.)");
 }
 

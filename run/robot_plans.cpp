@@ -38,17 +38,17 @@ double largestRadius(const RunSetup& setup, const WorldModel& world) {
 }
 
 // planner.* of a team plan, and the grid it plans on.
-struct TeamGrid {
+struct TeamGridSettings {
   double resolution = 0.5;
   int connectivity = 4;
   double time_limit = 30.0;
 };
 
-TeamGrid readTeamGrid(const Scenario& s, ParamSet& p) {
+TeamGridSettings readTeamGridSettings(const Scenario& s, ParamSet& p) {
   if (s.grid_map.present() && p.has("resolution"))
     throw InputError(s.file, "planner.resolution",
                      "a team plan on world.grid_map uses the map's cells (world.grid_map.cell)");
-  TeamGrid g;
+  TeamGridSettings g;
   g.resolution =
       s.grid_map.present() ? s.grid_map.cell : p.getDouble("resolution", 0.5, 0.01, 100.0);
   g.connectivity = p.getInt("connectivity", 4, 4, 8);
@@ -58,7 +58,7 @@ TeamGrid readTeamGrid(const Scenario& s, ParamSet& p) {
   return g;
 }
 
-MapfInstance teamInstance(const Scenario& s, const RunSetup& setup, const TeamGrid& g,
+MapfInstance teamInstance(const Scenario& s, const RunSetup& setup, const TeamGridSettings& g,
                           double radius, double inflation) {
   MapfInstance instance;
   if (s.grid_map.present()) {
@@ -117,7 +117,7 @@ void planTeam(const Scenario& s, const RunSetup& setup, const WorldModel& world,
               const MapfResult* given, RobotPlans& plans) {
   const PlannerSection& section = setup.robot_sections.planner;
   ParamSet p = section.params;
-  const TeamGrid g = readTeamGrid(s, p);
+  const TeamGridSettings g = readTeamGridSettings(s, p);
   const double radius = largestRadius(setup, world);
   plans.summary.inflation = radius + section.margin;
   const MapfInstance instance = teamInstance(s, setup, g, radius, plans.summary.inflation);
@@ -157,9 +157,8 @@ void planTeam(const Scenario& s, const RunSetup& setup, const WorldModel& world,
 void planEach(const Scenario& s, const RunSetup& setup, const WorldModel& world,
               RobotPlans& plans) {
   for (std::size_t v : setup.robots) {
-    const VehiclePlan& p = plans.plans.emplace_back(
-        planVehicle(s, setup.robot_sections.planner, s.vehicles[v],
-                    world.vehicles()[v].params.radius));
+    const VehiclePlan& p = plans.plans.emplace_back(planVehicle(
+        s, setup.robot_sections.planner, s.vehicles[v], world.vehicles()[v].params.radius));
     if (!p.success) {
       plans.status = PlanStatus::NoPath;
       plans.message = "no path found for " + s.vehicles[v].name + ": " + p.message;
@@ -184,9 +183,8 @@ void planNavigation(const Scenario& s, const RunSetup& setup, const WorldModel& 
   p.requireAllUsed("planner '" + name + "' (in cosim run: resolution and sight)");
   plans.summary.params = p.effective();
   const std::size_t robot = setup.robots.front();
-  NavigationWorld nav =
-      navigationWorld(s, world, robot, resolution, plans.cruise_speed, section.margin,
-                      plans.summary.inflation);
+  NavigationWorld nav = navigationWorld(s, world, robot, resolution, plans.cruise_speed,
+                                        section.margin, plans.summary.inflation);
   plans.paths.resize(1);
   plans.navigator = std::make_unique<NavigationDriver>(
       std::move(navigator), std::move(nav), s.file, s.vehicles[robot],

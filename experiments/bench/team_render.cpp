@@ -56,17 +56,17 @@ RunLog teamLog(const Scenario& s) {
   return log;
 }
 
-struct Measured {
+struct RenderTiming {
   double frame_ms = 0.0;  // mean over the frames
   FrameTimings phases;    // summed over the frames
 };
 
-Measured measure(const WorldModel& world, const Scenario& s, const RunLog& log, int width,
-                 int height, int frames) {
+RenderTiming measure(const WorldModel& world, const Scenario& s, const RunLog& log, int width,
+                     int height, int frames) {
   RunRenderer renderer(world, s, log, width, height);
   std::vector<std::uint8_t> rgb;
   renderer.render(1.0, CameraKind::Overview, rgb);  // warm-up: textures, trail decimation
-  Measured m;
+  RenderTiming m;
   const auto t0 = std::chrono::steady_clock::now();
   for (int k = 0; k < frames; ++k) {
     renderer.render(2.0 + 16.0 * k / std::max(1, frames - 1), CameraKind::Overview, rgb);
@@ -109,14 +109,14 @@ Section benchTeamRender(bool quick) {
   const WorldModel team_world = WorldModel::build(team), single_world = WorldModel::build(single);
   const WorldModel standard_world = WorldModel::build(standard);
   // Alternated, best of the rounds: all see the same load on a shared machine.
-  Measured best_team, best_single, best_plans, best_standard;
+  RenderTiming best_team, best_single, best_plans, best_standard;
   best_team.frame_ms = best_single.frame_ms = best_plans.frame_ms = best_standard.frame_ms =
       HUGE_VAL;
   for (int round = 0; round < (quick ? 1 : 3); ++round) {
-    const Measured a = measure(single_world, single, single_log, width, height, frames);
-    const Measured b = measure(team_world, team, team_log, width, height, frames);
-    const Measured c = measure(team_world, with_plans, team_log, width, height, frames);
-    const Measured d = measure(standard_world, standard, standard_log, width, height, frames);
+    const RenderTiming a = measure(single_world, single, single_log, width, height, frames);
+    const RenderTiming b = measure(team_world, team, team_log, width, height, frames);
+    const RenderTiming c = measure(team_world, with_plans, team_log, width, height, frames);
+    const RenderTiming d = measure(standard_world, standard, standard_log, width, height, frames);
     if (a.frame_ms < best_single.frame_ms) best_single = a;
     if (b.frame_ms < best_team.frame_ms) best_team = b;
     if (c.frame_ms < best_plans.frame_ms) best_plans = c;

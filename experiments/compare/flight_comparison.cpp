@@ -26,7 +26,7 @@ struct RebasedLog {
 };
 
 // What compareFlights works with: the problem to fit and the log's pieces.
-struct Setting {
+struct ComparisonSetting {
   const RunFlight* run = nullptr;
   const FlightLog* log = nullptr;
   RebasedLog rebased;
@@ -41,7 +41,7 @@ double medianSpacing(const std::vector<double>& t) {
 }
 
 // Refuses a log that no time offset can place over the run's window.
-void requireOverlap(const FlightComparison& c, const Setting& st) {
+void requireOverlap(const FlightComparison& c, const ComparisonSetting& st) {
   const SampledPath& path = st.log->hasReference() ? st.log->reference : st.log->position;
   const std::string log_span = seconds(path.start(), path.end());
   const std::string window = seconds(c.windowStart(), c.windowEnd());
@@ -64,7 +64,7 @@ void requireOverlap(const FlightComparison& c, const Setting& st) {
 }
 
 // The given offset (rebased), or nothing if the log does not cover the window there.
-std::optional<double> givenOffset(const Setting& st, double offset) {
+std::optional<double> givenOffset(const ComparisonSetting& st, double offset) {
   double lo, hi;
   offsetRange(st.problem, lo, hi);
   const double tau = offset - st.rebased.origin;
@@ -74,7 +74,7 @@ std::optional<double> givenOffset(const Setting& st, double offset) {
 }
 
 // The real error at run sample k for the log at rebased offset tau and translation d.
-double realError(const FlightComparison& c, const Setting& st, std::size_t k, double tau,
+double realError(const FlightComparison& c, const ComparisonSetting& st, std::size_t k, double tau,
                  const Eigen::Vector3d& d) {
   const double t_log = c.t[k] + tau;
   const Eigen::Vector3d p = st.rebased.position.at(t_log);
@@ -89,7 +89,8 @@ double rms(const std::vector<double>& e) {
 }
 
 // Every mode's alignment (the given offset instead of a fitted one, if there is one).
-std::vector<std::pair<AlignMode, Alignment>> alignAllModes(const FlightComparison& c, Setting& st,
+std::vector<std::pair<AlignMode, Alignment>> alignAllModes(const FlightComparison& c,
+                                                           ComparisonSetting& st,
                                                            const ComparisonOptions& options,
                                                            const StopToken& stop) {
   std::vector<std::pair<AlignMode, Alignment>> out;
@@ -107,7 +108,7 @@ std::vector<std::pair<AlignMode, Alignment>> alignAllModes(const FlightCompariso
   return out;
 }
 
-AlignmentOutcome outcomeOf(const FlightComparison& c, const Setting& st, AlignMode m,
+AlignmentOutcome outcomeOf(const FlightComparison& c, const ComparisonSetting& st, AlignMode m,
                            const Alignment& a) {
   AlignmentOutcome o;
   o.mode = m;
@@ -122,7 +123,7 @@ AlignmentOutcome outcomeOf(const FlightComparison& c, const Setting& st, AlignMo
 }
 
 // The chosen alignment's errors, statistics and mean offset.
-void errorsAndStatistics(FlightComparison& c, const Setting& st, const Alignment& a) {
+void errorsAndStatistics(FlightComparison& c, const ComparisonSetting& st, const Alignment& a) {
   Eigen::Vector3d offset_sum = Eigen::Vector3d::Zero();
   for (std::size_t k = 0; k < c.t.size(); ++k) {
     const Eigen::Vector3d p = st.rebased.position.at(c.t[k] + a.time_offset);
@@ -147,9 +148,9 @@ void simulatedErrors(FlightComparison& c) {
   c.sim_rmse_m = rms(c.sim_error);
 }
 
-Setting settingFor(const FlightComparison& c, const RunFlight& run, const FlightLog& log,
-                   const ComparisonOptions& options) {
-  Setting st;
+ComparisonSetting settingFor(const FlightComparison& c, const RunFlight& run, const FlightLog& log,
+                             const ComparisonOptions& options) {
+  ComparisonSetting st;
   st.run = &run;
   st.log = &log;
   st.rebased.origin = log.position.start();
@@ -203,7 +204,7 @@ FlightComparison compareFlights(const RunFlight& run, const FlightLog& log,
   c.alignment = options.align ? *options.align : defaultAlignMode(log.hasReference());
   c.alignment_target = targetInWords(log, options);
   c.real_against_log_reference = log.hasReference();
-  Setting st = settingFor(c, run, log, options);
+  ComparisonSetting st = settingFor(c, run, log, options);
   const auto aligned = alignAllModes(c, st, options, stop);
   const auto chosen = std::find_if(aligned.begin(), aligned.end(),
                                    [&](const auto& m) { return m.first == c.alignment; });

@@ -63,14 +63,14 @@ Scenario studyScenario(const FigureEightShape& shape, double seconds, std::uint6
   return s;
 }
 
-struct Row {
+struct StudyRow {
   std::string controller;
   double speed = 0.0;
   FlightMetrics metrics;
   RunEnd end_reason = RunEnd::Running;
 };
 
-Row fly(const StudyController& c, double speed, const Options& options) {
+StudyRow fly(const StudyController& c, double speed, const Options& options) {
   FigureEightShape shape;
   shape.centre = {15, 10, 3};
   shape.amplitude = 8.0;
@@ -92,7 +92,7 @@ Row fly(const StudyController& c, double speed, const Options& options) {
   FlightOptions flight;
   flight.settings = s.sim;
   const RunLog log = simulateFlight(world, s, pilots, flight);
-  Row row;
+  StudyRow row;
   row.controller = c.label;
   row.speed = speed;
   row.metrics = computeFlightMetrics(log.vehicles[0], s.world, true);
@@ -103,7 +103,7 @@ Row fly(const StudyController& c, double speed, const Options& options) {
 // RMSE against speed, one line per controller, axes named in words. indi and indi_drag lie close
 // together at low speed, so each controller gets its own point type and dash, its points are
 // shifted by a few hundredths of a m/s (stated in the key), and the y axis is logarithmic.
-void writeStudyChart(const std::vector<Row>& rows, const std::filesystem::path& out_base) {
+void writeStudyChart(const std::vector<StudyRow>& rows, const std::filesystem::path& out_base) {
   GnuplotScratch scratch(out_base, "controller-study");
   std::ostringstream body;
   body << "set key outside right top box lc rgb '#bbbbbb' font ',10'\n"
@@ -119,7 +119,7 @@ void writeStudyChart(const std::vector<Row>& rows, const std::filesystem::path& 
   for (std::size_t c = 0; c < n; ++c) {
     const double shift = 0.06 * (static_cast<double>(c) - 2.0);
     std::ostringstream data;
-    for (const Row& r : rows)
+    for (const StudyRow& r : rows)
       if (r.controller == kControllers[c].label)
         data << r.speed + shift << ' ' << r.metrics.rmse_m << '\n';
     const std::string file = std::string(kControllers[c].label) + ".dat";
@@ -135,10 +135,11 @@ void writeStudyChart(const std::vector<Row>& rows, const std::filesystem::path& 
 }
 
 // controller-study.json's rows (docs/reproductions.md); writes the CSV behind the figure.
-std::vector<JsonObject> studyRows(const std::vector<Row>& rows, const std::filesystem::path& dir) {
+std::vector<JsonObject> studyRows(const std::vector<StudyRow>& rows,
+                                  const std::filesystem::path& dir) {
   std::vector<JsonObject> json_rows;
   std::string csv = "controller,speed_mps,rmse_m,max_error_m,reached_goal,estimation_rmse_m\n";
-  for (const Row& r : rows) {
+  for (const StudyRow& r : rows) {
     JsonObject j;
     j.add("controller", r.controller)
         .add("speed_mps", r.speed)
@@ -159,7 +160,7 @@ std::vector<JsonObject> studyRows(const std::vector<Row>& rows, const std::files
 }
 
 // The RMSE table (with indi_drag / geometric per speed) and the max-error table.
-std::string studyTables(const std::vector<double>& speeds, const std::vector<Row>& rows) {
+std::string studyTables(const std::vector<double>& speeds, const std::vector<StudyRow>& rows) {
   std::ostringstream md;
   md << "| speed [m/s] |";
   for (const StudyController& c : kControllers) md << " " << c.label << " RMSE [m] |";
@@ -170,7 +171,7 @@ std::string studyTables(const std::vector<double>& speeds, const std::vector<Row
   for (std::size_t k = 0; k < speeds.size(); ++k) {
     md << "| " << fixed(speeds[k], 1) << " |";
     for (std::size_t c = 0; c < per_speed; ++c) {
-      const Row& r = rows[k * per_speed + c];
+      const StudyRow& r = rows[k * per_speed + c];
       const std::string ended = runEndName(r.end_reason);
       md << " " << fixed(r.metrics.rmse_m, 4)
          << (r.end_reason == RunEnd::Goal ? "" : " (" + ended + ")") << " |";
@@ -198,7 +199,7 @@ std::string studyTables(const std::vector<double>& speeds, const std::vector<Row
 Report controllerStudy(const Options& options) {
   const std::vector<double> speeds =
       options.quick ? std::vector<double>{2.0, 8.0} : std::vector<double>{2.0, 4.0, 6.0, 8.0};
-  std::vector<Row> rows;
+  std::vector<StudyRow> rows;
   for (double v : speeds)
     for (const StudyController& c : kControllers) rows.push_back(fly(c, v, options));
 

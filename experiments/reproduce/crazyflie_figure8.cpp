@@ -39,7 +39,7 @@ namespace cosim::reproduce {
 
 namespace {
 
-struct Row {
+struct Figure8Row {
   std::string controller;
   double timescale = 1.0, peak_speed = 0.0, rmse = 0.0, max_error = 0.0;
   RunEnd end_reason = RunEnd::Running;
@@ -57,7 +57,7 @@ struct Row {
 
 // Lag and amplitude per axis, and the RMSE with the reference's start fitted, of `v`'s flight
 // over the reference's duration.
-void followTheReference(Row& row, const VehicleLog& v, double reference_end) {
+void followTheReference(Figure8Row& row, const VehicleLog& v, double reference_end) {
   std::vector<double> t;
   std::vector<Eigen::Vector3d> reference;
   SampledPath flown;
@@ -92,7 +92,7 @@ void followTheReference(Row& row, const VehicleLog& v, double reference_end) {
   row.rmse_offset_removed = std::sqrt(sum / static_cast<double>(t.size()));
 }
 
-Row fly(const FigureEightVariant& v, double timescale, const Options& options) {
+Figure8Row fly(const FigureEightVariant& v, double timescale, const Options& options) {
   const Scenario s = figureEightScenario(v, timescale, options.seed);
   const WorldModel world = WorldModel::fromXml(figureEightModelXml(v, s), s);
   FlightOptions flight;
@@ -100,7 +100,7 @@ Row fly(const FigureEightVariant& v, double timescale, const Options& options) {
   const RunLog log = flyGivenReference(s, world, flight);
   const double reference_end = s.vehicles[0].reference->duration();
 
-  Row row;
+  Figure8Row row;
   row.controller = v.label;
   row.timescale = timescale;
   row.end_reason = log.end_reason;
@@ -113,8 +113,8 @@ Row fly(const FigureEightVariant& v, double timescale, const Options& options) {
   return row;
 }
 
-const Row& find(const std::vector<Row>& rows, const std::string& label, double ts) {
-  for (const Row& r : rows)
+const Figure8Row& find(const std::vector<Figure8Row>& rows, const std::string& label, double ts) {
+  for (const Figure8Row& r : rows)
     if (r.controller == label && std::abs(r.timescale - ts) < 1e-9) return r;
   throw std::logic_error("no row " + label);
 }
@@ -135,7 +135,7 @@ std::string orDash(double v, int decimals) {
 }
 
 // How each variant's flight follows the reference from its true start.
-std::string followingTable(const std::vector<Row>& rows, const std::vector<double>& scales,
+std::string followingTable(const std::vector<Figure8Row>& rows, const std::vector<double>& scales,
                            const std::vector<const FigureEightVariant*>& variants) {
   std::ostringstream md;
   md << "\n| timescale | configuration | lag x, y [s] | amplitude x, y | fitted start [s] | "
@@ -143,7 +143,7 @@ std::string followingTable(const std::vector<Row>& rows, const std::vector<doubl
         "|---|---|---|---|---|---|---|\n";
   for (double ts : scales)
     for (const FigureEightVariant* c : variants) {
-      const Row& r = find(rows, c->label, ts);
+      const Figure8Row& r = find(rows, c->label, ts);
       md << "| " << fixed(ts, 1) << " | " << c->label << " | " << orDash(r.axes.lag_s.x(), 3)
          << ", " << orDash(r.axes.lag_s.y(), 3) << " | " << orDash(r.axes.amplitude_ratio.x(), 3)
          << ", " << orDash(r.axes.amplitude_ratio.y(), 3) << " | " << orDash(r.fitted_start, 3)
@@ -165,7 +165,7 @@ constexpr char kFollowingIntro[] =
     "battery's charge at take-off, the mass the firmware believes) rests on. The figure-eight is "
     "flat: z has neither lag nor amplitude.\n";
 
-std::string markdown(const std::vector<Row>& rows, const std::vector<double>& scales,
+std::string markdown(const std::vector<Figure8Row>& rows, const std::vector<double>& scales,
                      const std::vector<const FigureEightVariant*>& controllers,
                      const std::vector<const FigureEightVariant*>& effects,
                      const Options& options) {
@@ -191,7 +191,7 @@ std::string markdown(const std::vector<Row>& rows, const std::vector<double>& sc
     md << "| " << fixed(ts, 1) << " | "
        << fixed(find(rows, controllers[0]->label, ts).peak_speed, 2) << " |";
     for (const FigureEightVariant* c : controllers) {
-      const Row& r = find(rows, c->label, ts);
+      const Figure8Row& r = find(rows, c->label, ts);
       const std::string ended = runEndName(r.end_reason);
       md << " " << fixed(r.rmse, 4) << " / " << fixed(r.max_error, 4)
          << (r.end_reason == RunEnd::Goal ? "" : " (" + ended + ")") << " |";
@@ -250,7 +250,7 @@ Report crazyflieFigure8(const Options& options) {
     if (!options.quick || std::string(v.controller) == "crazyflie_lee") controllers.push_back(&v);
   if (!options.quick)
     for (const FigureEightVariant& v : kFigureEightEffects) effects.push_back(&v);
-  std::vector<Row> rows;
+  std::vector<Figure8Row> rows;
   for (double ts : scales) {
     for (const FigureEightVariant* v : controllers) rows.push_back(fly(*v, ts, options));
     for (const FigureEightVariant* v : effects) rows.push_back(fly(*v, ts, options));
@@ -259,7 +259,7 @@ Report crazyflieFigure8(const Options& options) {
   const std::filesystem::path dir(options.out_dir);
   std::vector<JsonObject> json_rows;
   std::string csv = "controller,timescale,peak_speed_mps,rmse_m,max_error_m\n";
-  for (const Row& r : rows) {
+  for (const Figure8Row& r : rows) {
     JsonObject j;
     j.add("controller", r.controller)
         .add("timescale", r.timescale)

@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
-struct Setting {
+struct SacodmSetting {
   int ants = 3, iterations = 10;
   double beta = 1.0;
   int gamma = 0;
@@ -29,7 +29,7 @@ struct Setting {
   int max_walk_factor = 20;  // SacoParams::max_walk_factor (a walk's cap, x the cell count)
 };
 
-Saco makeSaco(const Setting& s) {
+Saco makeSaco(const SacodmSetting& s) {
   SacoParams p;
   p.name = s.beta == 0.0 && s.gamma == 0 ? "saco" : "sacodm";
   p.ants = s.ants;
@@ -47,16 +47,16 @@ Saco makeSaco(const Setting& s) {
 }
 
 // One column: its label, our setting and the seed's average time, average and minimum length.
-struct Column {
+struct SacodmColumn {
   std::string label;
-  Setting setting;
+  SacodmSetting setting;
   double seed_time_s, seed_mean, seed_min;
 };
 
 struct Table {
   std::string title, swept;
   int scene;  // 0 free, 1 scene 1, 2 scene 2
-  std::vector<Column> columns;
+  std::vector<SacodmColumn> columns;
 };
 
 // The seed's Tables 6.8-6.16 (settings as {ants, iterations, beta, gamma, rolling, EAS weight}).
@@ -123,7 +123,7 @@ std::vector<std::vector<Seed000Column>> sacodmTables(const Seed000SceneSet& scen
   std::vector<std::vector<Seed000Column>> results;
   for (const Table& t : seedTables()) {
     std::vector<Seed000Column> cols;
-    for (const Column& c : t.columns) {
+    for (const SacodmColumn& c : t.columns) {
       Saco saco = makeSaco(c.setting);
       cols.push_back({c.label, c.seed_time_s, c.seed_mean, c.seed_min,
                       runSeed000(saco, *scene_of[t.scene], runs, seed)});
@@ -196,7 +196,7 @@ Fig65 firstWalks(const Seed000Scene* scene, int runs, std::uint64_t seed) {
   double raw_sum = 0, raw_max = 0, loop_free = 0, smoothed = 0;
   int n = 0;
   for (int i = 0; i < runs; ++i) {
-    Setting s;
+    SacodmSetting s;
     s.beta = 0;
     s.iterations = 1;
     s.ants = 1;

@@ -58,7 +58,7 @@ std::string offsetsText(const std::vector<double>& h) {
 
 // One algorithm's runs summed up: successes, sums of length, iterations to converge, iterations
 // run and time, and its best run's offsets and path.
-struct Summary {
+struct MaklinkTally {
   double sum = 0, best = 1e300, conv = 0, iters = 0, time_ms = 0;
   int ok = 0;
   std::vector<double> best_offsets;
@@ -73,7 +73,7 @@ double mean(double sum, int n) {
 struct MaklinkStudy {
   int runs = 0, ga_generations = 0;
   MaklinkRoute route;                        // Dijkstra over the midpoints
-  Summary acs[2], ga;                        // ACS with 11 and 21 levels, the real-coded GA
+  MaklinkTally acs[2], ga;                   // ACS with 11 and 21 levels, the real-coded GA
   double per_iter_acs = 0, per_iter_ga = 0;  // mean CPU seconds per iteration
 };
 
@@ -87,7 +87,7 @@ void runAcs(const Options& options, const Seed002MaklinkMap& map, MaklinkStudy& 
       const AcsMaklinkResult res = optimiseMaklinkRoute(map.graph, map.start, map.goal, p,
                                                         options.seed + r, StopToken(60.0));
       if (!res.success) continue;
-      Summary& s = study.acs[v];
+      MaklinkTally& s = study.acs[v];
       ++s.ok;
       s.sum += res.length;
       s.conv += convergedAt(res.history);
@@ -105,7 +105,7 @@ void runAcs(const Options& options, const Seed002MaklinkMap& map, MaklinkStudy& 
 void runGa(const Options& options, const Seed002MaklinkMap& map, MaklinkStudy& study,
            std::ostringstream& csv) {
   const MaklinkRoute& route = study.route;
-  Summary& ga = study.ga;
+  MaklinkTally& ga = study.ga;
   for (int r = 0; r < study.runs && route.found; ++r) {
     const GaRun g = realCodedGa(map, route.lines, options.seed + r, study.ga_generations);
     ++ga.ok;
@@ -124,8 +124,8 @@ std::string maklinkTable(const Options& options, const MaklinkGraph& graph,
                          const MaklinkStudy& study) {
   const int runs = study.runs, ga_generations = study.ga_generations;
   const MaklinkRoute& route = study.route;
-  const Summary* acs = study.acs;
-  const Summary& ga = study.ga;
+  const MaklinkTally* acs = study.acs;
+  const MaklinkTally& ga = study.ga;
   const double per_iter_acs = study.per_iter_acs, per_iter_ga = study.per_iter_ga;
   std::ostringstream md;
   md << "# Seed 002, part B: ACS on a MAKLINK graph\n\n"
@@ -182,8 +182,8 @@ std::string maklinkTable(const Options& options, const MaklinkGraph& graph,
 // The seed's claims against the study.
 std::vector<Finding> maklinkFindings(const MaklinkGraph& graph, const MaklinkStudy& study) {
   const MaklinkRoute& route = study.route;
-  const Summary* acs = study.acs;
-  const Summary& ga = study.ga;
+  const MaklinkTally* acs = study.acs;
+  const MaklinkTally& ga = study.ga;
   const double per_iter_acs = study.per_iter_acs, per_iter_ga = study.per_iter_ga;
   const double acs_conv = mean(acs[0].conv, acs[0].ok), ga_conv = mean(ga.conv, ga.ok);
   std::vector<Finding> findings;
@@ -235,8 +235,8 @@ std::vector<Finding> maklinkFindings(const MaklinkGraph& graph, const MaklinkStu
 std::vector<JsonObject> maklinkRows(const MaklinkGraph& graph, const MaklinkStudy& study) {
   const int runs = study.runs;
   const MaklinkRoute& route = study.route;
-  const Summary* acs = study.acs;
-  const Summary& ga = study.ga;
+  const MaklinkTally* acs = study.acs;
+  const MaklinkTally& ga = study.ga;
   const double per_iter_ga = study.per_iter_ga;
   std::vector<JsonObject> rows;
   {
@@ -293,7 +293,7 @@ Report seed002Maklink(const Options& options) {
   runAcs(options, map, study, csv);
   study.route = graph.shortestRoute(map.start, map.goal);
   runGa(options, map, study, csv);
-  const Summary* acs = study.acs;
+  const MaklinkTally* acs = study.acs;
   study.per_iter_acs = acs[0].time_ms / std::max(1.0, acs[0].iters) / 1000.0;
   study.per_iter_ga = study.ga.time_ms / std::max(1.0, study.ga.iters) / 1000.0;
   md << maklinkTable(options, graph, study);

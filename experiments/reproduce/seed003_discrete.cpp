@@ -16,10 +16,10 @@
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/reproduction_map.h"
+#include "experiments/reproduce/seed003_maps.h"
 #include "planning/grid/astar.h"
 #include "planning/grid/basic_theta_star.h"
 #include "planning/grid/lazy_theta_star.h"
-#include "experiments/reproduce/seed003_maps.h"
 
 namespace cosim::reproduce {
 
@@ -48,7 +48,7 @@ const char* kLabels[kPlanners] = {"A*", "Basic Theta*", "Lazy Theta* (thesis var
 const char* kJsonNames[kPlanners] = {"astar", "basic_theta_star", "lazy_theta_star",
                                      "lazy_theta_star_requeue"};
 
-struct Measured {
+struct DiscreteRunMeasures {
   bool success = false;
   double length = 0, time_ms = 0, los = 0, expansions = 0;
   std::vector<double> times_ms;
@@ -56,7 +56,7 @@ struct Measured {
 };
 
 struct MapResult {
-  Measured ours[kPlanners];
+  DiscreteRunMeasures ours[kPlanners];
   // The lattice (8/26-connected) length of Basic Theta*'s own segments over their Euclidean
   // length, minus 1: what A* pays for the directions the any-angle path takes.
   double theta_segments_lattice_excess = 0;
@@ -92,7 +92,7 @@ MapResult runMap(const GridQuery& q, int runs) {
       std::make_unique<LazyThetaStar>()};
   MapResult out;
   for (int p = 0; p < kPlanners; ++p) {
-    Measured& m = out.ours[p];
+    DiscreteRunMeasures& m = out.ours[p];
     for (int r = 0; r < runs; ++r) {
       const GridPlanResult res = planners[p]->solveGrid(q, StopToken::untimed());
       m.success = res.success;
@@ -126,7 +126,7 @@ int seedColumn(int p) {
 }
 
 std::string mapTable(const PublishedRow& pub, const MapResult& r) {
-  const Measured* ours = r.ours;
+  const DiscreteRunMeasures* ours = r.ours;
   const char* seed_labels[3] = {"A*", "Basic Theta*", "Lazy Theta*"};
   std::string md = "|";
   for (int p = 0; p < 3; ++p)
@@ -164,7 +164,7 @@ std::string mapTable(const PublishedRow& pub, const MapResult& r) {
 void addJsonRows(const Seed003Map& m, const PublishedRow& pub, const MapResult& r,
                  std::vector<JsonObject>& rows) {
   for (int p = 0; p < kPlanners; ++p) {
-    const Measured& o = r.ours[p];
+    const DiscreteRunMeasures& o = r.ours[p];
     const int s = seedColumn(p);
     JsonObject j;
     j.add("map", m.name)
@@ -273,7 +273,7 @@ namespace {
 
 // Basic Theta*'s check count on 3D map 1 and the times, appended to f.
 void countAndTimeFindings(const std::vector<MapResult>& results, std::vector<Finding>& f) {
-  const Measured* m1 = results[1].ours;
+  const DiscreteRunMeasures* m1 = results[1].ours;
   const double per_expansion = m1[1].los / m1[1].expansions;
   f.push_back(checkedFinding(
       "Basic Theta* makes 12 323 line-of-sight checks on 3D map 1 (Tab. 2)",
@@ -306,7 +306,7 @@ std::vector<Finding> findings(const std::vector<MapResult>& results) {
   std::vector<double> astar_excess, lattice_excess, lazy_excess, los_ratio;
   int lazy_longer = 0;
   for (const MapResult& r : results) {
-    const Measured* o = r.ours;
+    const DiscreteRunMeasures* o = r.ours;
     theta_shorter = theta_shorter && o[1].length < o[0].length;
     astar_excess.push_back(o[0].length / o[1].length - 1);
     lattice_excess.push_back(r.theta_segments_lattice_excess);
@@ -344,7 +344,7 @@ std::vector<Finding> findings(const std::vector<MapResult>& results) {
       "mostly finds Basic Theta*'s path, and why the thesis's layouts fooled it more cannot be "
       "checked without them",
       false));
-  const Measured* m1 = results[1].ours;
+  const DiscreteRunMeasures* m1 = results[1].ours;
   f.push_back(checkedFinding("Lazy Theta* is longer than A* on 3D map 1 (36.04 vs 35.56 m, Tab. 2)",
                              m1[2].length > m1[0].length,
                              fmt("%.2f", m1[2].length) + " vs " + fmt("%.2f", m1[0].length) +

@@ -21,10 +21,10 @@
 #include "experiments/reproduce/report_rows.h"
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/run_spread.h"
+#include "experiments/reproduce/seed003_maps.h"
 #include "experiments/reproduce/seed003_sampling_findings.h"
 #include "experiments/reproduce/seed003_sampling_tables.h"
 #include "planning/planner_registry.h"
-#include "experiments/reproduce/seed003_maps.h"
 
 namespace cosim::reproduce {
 
@@ -32,15 +32,15 @@ namespace {
 
 // One column of a table: the row name in NAME.json, the registered planner, its choose-parent
 // rule and the RRT*FN cap (0: none); seed_index: the thesis's column (-1: not in the thesis).
-struct Column {
+struct SamplingColumn {
   std::string label, json_name, planner;
   bool thesis_parent;
   int cap;
   int seed_index;
 };
 
-std::vector<Column> columnsOf(const Seed003SamplingTable& t) {
-  std::vector<Column> c = {
+std::vector<SamplingColumn> columnsOf(const Seed003SamplingTable& t) {
+  std::vector<SamplingColumn> c = {
       {"RRT", "rrt", "rrt", false, 0, 0},
       {"RRT* (thesis, Fig. 16)", "rrt_star_thesis", "rrt_star_thesis", true, 0, 1},
       {"RRT* (Karaman-Frazzoli)", "rrt_star", "rrt_star", false, 0, -1}};
@@ -64,7 +64,7 @@ struct RunVariant {
   bool linear_scan = false;
 };
 
-Samples runColumn(const Seed003SamplingTable& t, const Seed003Map& map, const Column& col,
+Samples runColumn(const Seed003SamplingTable& t, const Seed003Map& map, const SamplingColumn& col,
                   const Options& options, int runs, RunVariant variant = {}) {
   Samples s;
   for (int i = 0; i < runs; ++i) {
@@ -177,7 +177,7 @@ JsonObject columnRow(const Seed003SamplingTable& t, const std::string& planner,
 
 // One column of a table: its line in the report and the CSV, and its row of NAME.json.
 // ref_length and ref_time: the thesis's RRT* (the percentages' base).
-JsonObject writeColumn(const Seed003SamplingTable& t, const Column& col, const Samples& s,
+JsonObject writeColumn(const Seed003SamplingTable& t, const SamplingColumn& col, const Samples& s,
                        double ref_length, double ref_time, std::ostringstream& md,
                        std::ostringstream& csv) {
   const Spread length = spreadOf(s.lengths), time = spreadOf(s.times_ms);
@@ -221,9 +221,9 @@ TableFinding runTable(const Seed003SamplingTable& t, const Seed003Map& map, cons
      << "| planner | success | length [m] | % of RRT* | time [ms] median [IQR] | time % of "
         "RRT* | first path after (nodes) | seed length [m] | seed % of RRT* | seed time [s] "
         "| seed time % of RRT* |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
-  const std::vector<Column> columns = columnsOf(t);
+  const std::vector<SamplingColumn> columns = columnsOf(t);
   std::vector<Samples> samples;
-  for (const Column& c : columns) samples.push_back(runColumn(t, map, c, options, runs));
+  for (const SamplingColumn& c : columns) samples.push_back(runColumn(t, map, c, options, runs));
   const double ref_length = spreadOf(samples[1].lengths).mean;
   const double ref_time = spreadOf(samples[1].times_ms).median;
   for (std::size_t c = 0; c < columns.size(); ++c)
@@ -257,7 +257,7 @@ std::string goalRuleSection(const Options& options, int runs, const std::vector<
     const Seed003SamplingTable& t = *f.table;
     if (t.mode != 1) continue;
     const Seed003Map* map = mapNamed(maps, t.map);
-    const Column rrt = columnsOf(t)[0];
+    const SamplingColumn rrt = columnsOf(t)[0];
     const Samples loose = runColumn(t, *map, rrt, options, runs);
     const Samples tight = runColumn(t, *map, rrt, options, runs, {0.5, false});
     md << "| " << t.label << " | " << loose.successes << "/" << loose.runs << " | "
@@ -279,7 +279,7 @@ std::string linearScanSection(const Options& options, int runs, const std::vecto
     const Seed003SamplingTable& t = *f.table;
     if (std::string(t.label) != "Tab. 10") continue;
     const Seed003Map* map = mapNamed(maps, t.map);
-    const std::vector<Column> columns = columnsOf(t);
+    const std::vector<SamplingColumn> columns = columnsOf(t);
     const Samples star = runColumn(t, *map, columns[1], options, runs, {-1.0, true});
     const Samples fn = runColumn(t, *map, columns[3], options, runs, {-1.0, true});
     const double ratio = spreadOf(fn.times_ms).median / spreadOf(star.times_ms).median;

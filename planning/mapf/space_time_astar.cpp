@@ -10,7 +10,7 @@ namespace cosim {
 
 namespace {
 
-struct Node {
+struct SpaceTimeNode {
   int cell, t, g, conflicts, parent;
 };
 
@@ -42,7 +42,7 @@ SpaceTimePlan SpaceTimeAStar::plan(const SpaceTimeRequest& r) {
   if (r.conflict_counter) horizon = std::max(horizon, r.conflict_counter->staticFrom());
   const auto mergedTime = [&](int t) { return windowed ? t : std::min(t, horizon); };
 
-  std::vector<Node> nodes;
+  std::vector<SpaceTimeNode> nodes;
   std::unordered_map<std::uint64_t, StateRecord> states;
   states.reserve(4096);
   // (f, soft conflicts, -t, node): lowest f, then fewest conflicts, then deepest, then oldest.
@@ -56,7 +56,7 @@ SpaceTimePlan SpaceTimeAStar::plan(const SpaceTimeRequest& r) {
   while (!open.empty()) {
     const int index = std::get<3>(open.top());
     open.pop();
-    const Node node = nodes[index];
+    const SpaceTimeNode node = nodes[index];
     StateRecord& record = states[stateKey(node.cell, mergedTime(node.t))];
     if (record.closed || node.g > record.g ||
         (node.g == record.g && node.conflicts > record.conflicts))

@@ -36,7 +36,7 @@ std::vector<int> distancesTo(const MapfGraph& graph, int goal) {
   return d;
 }
 
-struct Node {
+struct ReservationSearchNode {
   int vertex, t, g, parent;
 };
 
@@ -59,7 +59,7 @@ Outcome searchAgent(const DenseTeamQuery& q, const EllipsoidReservations& reserv
     return Outcome::NoPath;
   const int horizon = reserved.staticFrom();
   const auto merged = [&](int t) { return std::min(t, horizon); };
-  std::vector<Node> nodes{{start, 0, 0, -1}};
+  std::vector<ReservationSearchNode> nodes{{start, 0, 0, -1}};
   std::unordered_map<std::uint64_t, std::pair<int, bool>> states;  // g, closed
   states[stateKey(start, 0)] = {0, false};
   using Entry = std::tuple<int, int, int>;  // f, -t (deepest first), node
@@ -69,7 +69,7 @@ Outcome searchAgent(const DenseTeamQuery& q, const EllipsoidReservations& reserv
   while (!open.empty()) {
     const int index = std::get<2>(open.top());
     open.pop();
-    const Node n = nodes[index];
+    const ReservationSearchNode n = nodes[index];
     auto& record = states[stateKey(n.vertex, merged(n.t))];
     if (record.second || n.g > record.first) continue;
     record.second = true;

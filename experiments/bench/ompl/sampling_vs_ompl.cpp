@@ -194,7 +194,7 @@ Outcome runOmpl(const BenchWorld& b, const CollisionWorld& cw, const std::string
 
 // ---- statistics and table -------------------------------------------------------------------
 
-struct Summary {
+struct SampledRuns {
   int runs = 0, successes = 0;
   std::vector<double> values;  // time (first solution) or cost (fixed time) of successes
   double median() const {
@@ -210,9 +210,9 @@ struct Summary {
   }
 };
 
-struct Row {
+struct ComparisonRow {
   std::string world, planner, metric;
-  Summary ours, ompl;
+  SampledRuns ours, ompl;
   bool lower_is_target;  // ours <= OMPL is the target
 };
 
@@ -244,14 +244,15 @@ std::vector<Job> benchJobs() {
 
 // One job on one world over `seeds` seeds, ours and (for jobs without a variant in brackets)
 // OMPL's.
-Row runJob(const BenchWorld& b, const CollisionWorld& cw, const Job& job, int seeds,
-           double first_limit, double fixed_time) {
-  Row row{b.name,
-          job.label,
-          job.first_solution ? "time to first solution [ms]" : "path length after fixed time [m]",
-          {},
-          {},
-          true};
+ComparisonRow runJob(const BenchWorld& b, const CollisionWorld& cw, const Job& job, int seeds,
+                     double first_limit, double fixed_time) {
+  ComparisonRow row{
+      b.name,
+      job.label,
+      job.first_solution ? "time to first solution [ms]" : "path length after fixed time [m]",
+      {},
+      {},
+      true};
   const double limit = job.first_solution ? first_limit : fixed_time;
   for (int s = 0; s < seeds; ++s) {
     const Outcome o = runOurs(b, job.planner, job.params, 1 + s, limit);
@@ -268,7 +269,7 @@ Row runJob(const BenchWorld& b, const CollisionWorld& cw, const Job& job, int se
 }
 
 // The markdown table and the verdict line.
-void printTable(const std::vector<Row>& rows, int seeds, double fixed_time, bool quick) {
+void printTable(const std::vector<ComparisonRow>& rows, int seeds, double fixed_time, bool quick) {
   std::printf(
       "Sampling planners vs OMPL 1.5.2, same exact collision world (inflation %.1f m), "
       "%d seeds, fixed time %.2f s%s\n\n",
@@ -278,7 +279,7 @@ void printTable(const std::vector<Row>& rows, int seeds, double fixed_time, bool
       "OMPL mean | ours success | OMPL success | target |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   int missed = 0, compared_rows = 0;
-  for (const Row& r : rows) {
+  for (const ComparisonRow& r : rows) {
     const bool has_ompl = r.ompl.successes > 0;
     const double ratio = has_ompl && r.ompl.median() > 0 ? r.ours.median() / r.ompl.median() : 0;
     const bool met = !has_ompl || (r.ours.successes >= r.ompl.successes && ratio <= 1.0);
@@ -326,7 +327,7 @@ int main(int argc, char** argv) {
   ompl::msg::setLogLevel(ompl::msg::LOG_NONE);
   ompl::RNG::setSeed(1);  // OMPL seeds once per process; each run continues the stream
 
-  std::vector<Row> rows;
+  std::vector<ComparisonRow> rows;
   for (const BenchWorld& b : benchWorlds()) {
     const CollisionWorld cw(b.world, kInflation);
     for (const Job& job : benchJobs())
