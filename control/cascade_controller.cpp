@@ -120,6 +120,8 @@ const GainTable<CascadeGains>& cascadeGains() {
           .rollPitchAndYaw("att_kp", &G::att_kp, 1e4, "attitude error -> body rate command, 1/s")
           .rollPitchAndYaw("rate_kp", &G::rate_kp, 1e4, "rate error -> angular acceleration, 1/s")
           .rollPitchAndYaw("rate_ki", &G::rate_ki, 1e4, "integral of the rate error, 1/s^2")
+          .rollPitchAndYaw("rate_i_limit", &G::rate_i_limit, 1e4,
+                           "bound on the rate integral's contribution, rad/s^2")
           .gain("max_rate", &G::max_rate, 0.1, 100.0, "roll and pitch rate command limit, rad/s");
   return table;
 }
