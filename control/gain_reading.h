@@ -1,7 +1,8 @@
 #pragma once
 // Reading a controller's gains from its `gains:` parameters where axes share a gain: a vehicle
 // symmetric about z takes one gain for x and y (or for roll and pitch) and its own for z (or
-// yaw). Every controller factory reads them this way, so the keys follow one pattern.
+// yaw). Every controller's GainTable (control/controller_gains.h) reads paired gains this way, so
+// the keys follow one pattern.
 #include <Eigen/Core>
 #include <string>
 

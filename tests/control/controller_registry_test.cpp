@@ -136,6 +136,14 @@ std::vector<std::string> documentedTable(const std::string& doc, const std::stri
   return rows;
 }
 
+// The text of docs/controllers.md under "### `NAME`", to the next heading.
+std::string documentedSection(const std::string& doc, const std::string& name) {
+  const auto from = doc.find("### `" + name + "`\n");
+  if (from == std::string::npos) return "";
+  const auto to = doc.find("\n### ", from + 1);
+  return doc.substr(from, to == std::string::npos ? std::string::npos : to - from);
+}
+
 TEST(ControllerRegistry, DocsGainTablesAreTheDeclarations) {
   std::ifstream file(COSIM_SOURCE_DIR "/docs/controllers.md");
   ASSERT_TRUE(file) << "docs/controllers.md";
@@ -151,6 +159,15 @@ TEST(ControllerRegistry, DocsGainTablesAreTheDeclarations) {
     EXPECT_EQ(documentedTable(doc, e.name), expected)
         << "docs/controllers.md, ### `" << e.name << "` should hold:\n"
         << as_text;
+    // Its line of properties: the team shortfall, drag compensation, the Crazyflie thrust path.
+    std::ostringstream shortfall;
+    shortfall << "team shortfall " << e.team_shortfall << " (";
+    const std::string section = documentedSection(doc, e.name);
+    EXPECT_NE(section.find(shortfall.str()), std::string::npos) << e.name << ": " << section;
+    EXPECT_EQ(section.find("takes `drag_compensation`") != std::string::npos, e.compensates_drag)
+        << e.name;
+    EXPECT_EQ(section.find("Crazyflie thrust path") != std::string::npos, e.crazyflie_thrust_path)
+        << e.name;
   }
 }
 
