@@ -83,7 +83,7 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     request.interrupt = &interrupt;
     RunConsole console(!a->quiet);
     request.observer = console.observer();
-    const RunSummary s = executeRun(scenario, request);
+    const RunRecord s = executeRun(scenario, request);
     console.finish();
     manifest.finish(s.outcome == RunOutcome::Interrupted ? "unfinished" : "complete");
     if (s.outcome == RunOutcome::Interrupted) {
@@ -92,10 +92,10 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
       ctx.status = 1;
       return;
     }
-    // metrics.json's top level: for a team, the whole team's figures.
+    // The record's top-level figures (metrics.json's): for a team, the whole team's.
     // The folder's name is the user's bytes: control characters escaped (core/input_error.h).
     std::cout << "run: " << printableText(request.out_dir.string()) << "\n"
-              << "  " << runSummaryLine(s.metrics_json.json()) << "\n";
+              << "  " << runSummaryLine(s) << "\n";
     if (s.outcome == RunOutcome::TaskFailed)
       std::cerr << "cosim: " << printableText(s.message) << "\n";
     std::cout << printableText(runPagesLine(request.out_dir)) << "\n";

@@ -16,6 +16,7 @@
 #include "python/overrides.h"
 #include "python/python_values.h"
 #include "python/unknown_vehicle_error.h"
+#include "run/metrics_json.h"
 #include "run/run_files.h"
 #include "run/run_pipeline.h"
 #include "run/scenario_checks.h"
@@ -80,7 +81,8 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
 
   InterruptGuard guard;
   RunRequest request;
-  RunSummary summary;
+  RunRecord summary;
+  std::optional<JsonObject> metrics;  // metrics.json's object, from the record
   {
     py::gil_scoped_release release;
     // As `cosim run` does (cli/cmd_run.cpp): the folder is touched only once the scenario passed
@@ -107,6 +109,7 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
       if (e.kind == RunEventKind::Warning) std::cerr << "cosim: warning: " << e.text << "\n";
     };
     summary = executeRun(s, request);
+    if (summary.outcome != RunOutcome::Interrupted) metrics = runMetricsJson(s, summary);
     if (manifest)
       manifest->finish(summary.outcome == RunOutcome::Interrupted ? "unfinished" : "complete");
   }
@@ -114,7 +117,7 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
   RunResult r;
   r.status = summary.exitStatus();
   r.message = summary.message;
-  if (summary.outcome != RunOutcome::Interrupted) r.metrics = jsonValue(summary.metrics_json.str());
+  if (metrics) r.metrics = jsonValue(metrics->json());
   r.log = std::move(summary.log);
   if (out_dir) r.out = request.out_dir.string();
   return r;

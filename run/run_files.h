@@ -10,6 +10,7 @@
 
 #include "core/json_writer.h"
 #include "render/run_outputs.h"
+#include "run/record/run_record.h"
 #include "run/run_events.h"
 #include "sim/run_log.h"
 #include "sim/scenario.h"
@@ -34,21 +35,19 @@ void clearRunFolder(const std::filesystem::path& dir, const std::string& option 
 void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario,
                       const RunLog& log);
 
-// The render stage: final.png, figures/ and the videos the request asks for, into its out_dir.
-// Returns with `interrupted` set if the request's interrupt flag stopped it.
-RenderedRun renderRunFiles(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+// The render stage: final.png, figures/ and the videos the request asks for, into its out_dir,
+// from the record. Returns with `interrupted` set if the request's interrupt flag stopped it.
+RenderedRun renderRunFiles(const Scenario& scenario, const RunRecord& record,
                            const RunRequest& request, const RunReporter& report);
 
 // The replay stage: dir/viewer.html (render/viewer_page.h). Returns "" when written, else why
 // not (three.js is missing), for the front end to say once; the run goes on without it.
-std::string writeRunViewerFile(const std::filesystem::path& dir, const WorldModel& world,
-                               const Scenario& scenario, const RunLog& log,
-                               const std::string& failure);
+std::string writeRunViewerFile(const std::filesystem::path& dir, const Scenario& scenario,
+                               const RunRecord& record);
 
 // The finishing marks: index.html (showing `rendered`; only with `report_page`: --no-images
-// writes no page), then metrics.json. `failure`: why the run failed its task ("" if it did not).
+// writes no page), then metrics.json, written from the record (run/metrics_json.h).
 void finishRunFolder(const std::filesystem::path& dir, const Scenario& scenario,
-                     const JsonObject& metrics, const std::string& failure,
-                     const RenderedRun& rendered, bool report_page);
+                     const RunRecord& record, const RenderedRun& rendered, bool report_page);
 
 }  // namespace cosim

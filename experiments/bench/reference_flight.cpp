@@ -56,7 +56,7 @@ FlightSet measureFlights(const Scenario& s, int flights) {
     out.bare_s += bare;
     out.sim_s += log.sim_time;
     out.steps += log.physics_steps;
-    out.rmse = computeFlightMetrics(log.vehicles[0], s.world, true).rmse_m;
+    out.rmse = computeFlightMetrics(log.vehicles[0], s.world, ErrorReference::Trajectory).rmse_m;
   }
   std::sort(ratios.begin(), ratios.end());
   out.ratio = ratios[ratios.size() / 2];

@@ -95,7 +95,7 @@ Row fly(const StudyController& c, double speed, const Options& options) {
   Row row;
   row.controller = c.label;
   row.speed = speed;
-  row.metrics = computeFlightMetrics(log.vehicles[0], s.world, true);
+  row.metrics = computeFlightMetrics(log.vehicles[0], s.world, ErrorReference::Trajectory);
   row.end_reason = log.end_reason;
   return row;
 }

@@ -104,7 +104,8 @@ Row fly(const FigureEightVariant& v, double timescale, const Options& options) {
   row.controller = v.label;
   row.timescale = timescale;
   row.end_reason = log.end_reason;
-  const FlightMetrics m = computeFlightMetrics(log.vehicles[0], s.world, true);
+  const FlightMetrics m =
+      computeFlightMetrics(log.vehicles[0], s.world, ErrorReference::Trajectory);
   row.rmse = m.rmse_m;
   row.max_error = m.max_error_m;
   for (const LogSample& x : log.vehicles[0].samples)
