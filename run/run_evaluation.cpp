@@ -114,6 +114,10 @@ PlanFigures planFigures(const RunSetup& setup, const RunPlan& plan) {
 
 }  // namespace
 
+FlightMetrics evaluateReferenceFlight(const Scenario& s, const RunLog& log) {
+  return computeFlightMetrics(log.vehicles.at(0), s.world, ErrorReference::Trajectory);
+}
+
 void trackVehicles(const RunSetup& setup, const RunLog& log, RunMetrics& m) {
   m.tracking_errors.clear();
   for (std::size_t v = 0; v < log.vehicles.size(); ++v)

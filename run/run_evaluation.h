@@ -22,6 +22,10 @@ RunRecord evaluateRun(const Scenario& scenario, const RunSetup& setup,
 void evaluateVehicles(const Scenario& scenario, const RunSetup& setup, const RunLog& log,
                       RunMetrics& metrics);
 
+// The flight metrics of a reference flight's vehicle (run/given_reference_flight.h): it flies a
+// reference in time, so its error is measured against that trajectory.
+FlightMetrics evaluateReferenceFlight(const Scenario& scenario, const RunLog& log);
+
 // Each vehicle's per-sample tracking errors against its error reference, into `metrics`: they
 // depend on the logged samples alone.
 void trackVehicles(const RunSetup& setup, const RunLog& log, RunMetrics& metrics);
