@@ -67,17 +67,8 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     if (a->seed >= 0) overrides.push_back("sim.seed=" + std::to_string(a->seed));
     if (a->video_speed > 0) overrides.push_back("render.speed=" + std::to_string(a->video_speed));
     const Scenario scenario = loadCheckedScenario(path, overrides, PlannerUse::Run);
-    // The folder is this run's alone until it ends (core/output_dir_lock.h): locked before its
-    // earlier results go.
-    OutputDirLock lock;
-    if (!a->out.empty() && std::filesystem::is_directory(a->out)) {
-      lock.acquire(a->out, "--out");
-      clearRunFolder(a->out);
-    }
-    request.out_dir = prepareOutputDir(a->out, "run");
-    lock.acquire(request.out_dir, "--out");
-    // What the run writes is recorded in the folder's manifest, last, however it ends.
-    OutputManifestScope manifest(request.out_dir, "run");
+    RunFolderSession folder(a->out, "--out");
+    request.out_dir = folder.dir();
     request.video = !a->no_video;
     request.images = !a->no_images;
     request.interrupt = &interrupt;
@@ -85,7 +76,7 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     request.observer = console.observer();
     const RunRecord s = executeRun(scenario, request);
     console.finish();
-    manifest.finish(s.outcome == RunOutcome::Interrupted ? "unfinished" : "complete");
+    folder.finish(s.outcome == RunOutcome::Interrupted);
     if (s.outcome == RunOutcome::Interrupted) {
       std::cerr << "cosim: interrupted; " << printableText(request.out_dir.string())
                 << " holds no finished run\n";

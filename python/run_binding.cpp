@@ -86,22 +86,11 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
   {
     py::gil_scoped_release release;
     // As `cosim run` does (cli/cmd_run.cpp): the folder is touched only once the scenario passed
-    // its checks; then it loses an earlier run's results (only files cosim can prove it wrote:
-    // anything else there is refused) and is locked, this run's alone until it ends
-    // (core/output_dir_lock.h).
-    OutputDirLock lock;
+    // its checks (run/run_files.h RunFolderSession).
     if (out_dir) checkOutputDir(*out_dir);
     const Scenario s = loadCheckedScenario(path, sets, PlannerUse::Run);
-    std::optional<OutputManifestScope> manifest;
-    if (out_dir) {
-      if (!out_dir->empty() && std::filesystem::is_directory(*out_dir)) {
-        lock.acquire(*out_dir, "out");
-        clearRunFolder(*out_dir, "out");
-      }
-      request.out_dir = prepareOutputDir(*out_dir, "run");
-      lock.acquire(request.out_dir, "out");
-      manifest.emplace(request.out_dir, "run");
-    }
+    std::optional<RunFolderSession> folder;
+    if (out_dir) request.out_dir = folder.emplace(*out_dir, "out").dir();
     request.video = video;
     request.interrupt = &stopRequestFlag();
     // Warnings as the program prints them; the rest of its progress lines stay unsaid.
@@ -110,8 +99,7 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
     };
     summary = executeRun(s, request);
     if (summary.outcome != RunOutcome::Interrupted) metrics = runMetricsJson(s, summary);
-    if (manifest)
-      manifest->finish(summary.outcome == RunOutcome::Interrupted ? "unfinished" : "complete");
+    if (folder) folder->finish(summary.outcome == RunOutcome::Interrupted);
   }
   guard.finish();  // Ctrl-C: KeyboardInterrupt from here
   RunResult r;

@@ -26,6 +26,16 @@ void clearRunFolder(const std::filesystem::path& dir, const std::string& option)
   removeStaleResults(dir, kRunResultNames, option);
 }
 
+RunFolderSession::RunFolderSession(const std::string& out, const std::string& option) {
+  if (!out.empty() && std::filesystem::is_directory(out)) {
+    lock_.acquire(out, option);
+    clearRunFolder(out, option);
+  }
+  dir_ = prepareOutputDir(out, "run");
+  lock_.acquire(dir_, option);
+  manifest_.emplace(dir_, "run");
+}
+
 void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario,
                       const RunLog& log) {
   // A folder reused with --out lost an earlier run's results when this run started

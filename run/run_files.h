@@ -5,10 +5,13 @@
 // videos rendered from the log, index.html, and metrics.json last: its presence means the run's
 // files are complete.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/json_writer.h"
+#include "core/output_dir_lock.h"
+#include "core/output_manifest.h"
 #include "render/run_outputs.h"
 #include "run/record/run_record.h"
 #include "run/run_events.h"
@@ -30,6 +33,29 @@ extern const std::vector<std::string> kRunReplacedNames;
 // any name a run writes holds a file cosim cannot prove it wrote (core/output_manifest.h), else
 // removes kRunResultNames.
 void clearRunFolder(const std::filesystem::path& dir, const std::string& option = "--out");
+
+// The folder of one run, for `cosim run` and cosim.run alike, made ready once the scenario and
+// its planners passed their checks (bad input neither removes an earlier run's results nor
+// leaves an empty folder behind; checkOutputDir, core/output_files.h, checks `out` before the
+// scenario is loaded): locked (core/output_dir_lock.h) before an earlier run's results go
+// (clearRunFolder: only files cosim can prove it wrote), created (a new folder under out/ for an
+// empty `out`), and what the run writes recorded in its manifest, last, however it ends. Throws
+// InputError naming `option` for a folder that cannot be used.
+class RunFolderSession {
+ public:
+  RunFolderSession(const std::string& out, const std::string& option);
+  RunFolderSession(const RunFolderSession&) = delete;
+  RunFolderSession& operator=(const RunFolderSession&) = delete;
+
+  const std::filesystem::path& dir() const { return dir_; }
+  // The manifest's state: "complete", or "unfinished" for an interrupted run.
+  void finish(bool interrupted) { manifest_->finish(interrupted ? "unfinished" : "complete"); }
+
+ private:
+  OutputDirLock lock_;  // released after the manifest is written
+  std::filesystem::path dir_;
+  std::optional<OutputManifestScope> manifest_;
+};
 
 // The write stage: the log's files in `dir`, once an earlier run's finishing marks are gone.
 void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario,
