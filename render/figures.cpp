@@ -235,8 +235,7 @@ std::string pathPlot(const RunLog& log, int h, int v, const std::vector<ErrorRef
   return p.str();
 }
 
-// Every vehicle's data files in `work_dir`: its samples with their tracking errors (the
-// record's), its planned path and its goal.
+// Each vehicle's data files in `work_dir`: samples with the record's errors, planned path, goal.
 void writeFigureData(const RunRecord& record, const std::filesystem::path& work_dir) {
   const RunLog& log = record.log;
   for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
@@ -258,8 +257,8 @@ double largestError(const RunRecord& record) {
   return max_error;
 }
 
-// The error figure's series (one per vehicle, reading the data files writeFigureData wrote):
-// the plot command, and the RMSE and arrival marks from each vehicle's metrics in the record.
+// The error figure's series (one per vehicle, from writeFigureData's files): the plot command,
+// and the RMSE and arrival marks from each vehicle's metrics in the record.
 struct ErrorSeries {
   std::string plot, marks;
 };
