@@ -66,8 +66,8 @@ class RunRenderer {
   const RunRecord& record() const { return record_; }
   const RunLog& log() const { return log_; }
   // m, the top of the colour scale vehicle's trail is coloured on. Vehicles whose errors are
-  // measured against the same kind of reference (sim/error_reference.h) share a scale; a mixed run has
-  // one for the robots and one for the quadrotors, each with its own bar and title.
+  // measured against the same kind of reference (sim/error_reference.h) share a scale; a mixed run
+  // has one for the robots and one for the quadrotors, each with its own bar and title.
   double errorScale(std::size_t vehicle) const { return scales_[scale_of_[vehicle]].top; }
   ErrorReference errorReferenceOf(std::size_t vehicle) const {
     return record_.errorReferenceOf(vehicle);
