@@ -67,7 +67,8 @@ int compareReal(const CompareArgs& a) {
   log_options.reference_vars = threeNames(a.reference_vars, "--reference-vars");
   // The run as render and export-mcap read it: the rows run.json recorded, inside its time.
   const Scenario scenario = cli::readRunScenario(a.run_dir);
-  const RunFlight run = runFlightOf(cli::readRunLog(a.run_dir, scenario), a.run_dir, a.vehicle);
+  const RunFlight run =
+      runFlightOf(cli::readRunRecord(a.run_dir, scenario).log, a.run_dir, a.vehicle);
   const FlightLog log = readFlightLog(a.log, log_options);
   if (interrupt.load()) return interrupted();
   std::cerr << "cosim: placing the log on the run's clock\n";

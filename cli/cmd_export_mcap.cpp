@@ -36,11 +36,8 @@ void addExportMcapCommand(CLI::App& app, CommandContext& ctx) {
     const std::filesystem::path out =
         a->out.empty() ? dir / "run.mcap" : std::filesystem::path(a->out);
     checkOutputPath(out, a->out.empty() ? "run folder" : "--out");
-    RunLog log = readRunLog(dir, s);
-    const WorldModel world = WorldModel::build(s);
-    completeRunLog(log, s, world);
-    const McapExport file =
-        runToMcap(world, s, log, a->rate, std::string("cosim ") + COSIM_VERSION);
+    const RunRecord record = readRunRecord(dir, s);
+    const McapExport file = runToMcap(s, record, a->rate, std::string("cosim ") + COSIM_VERSION);
     writeFileAtomically(out, file.bytes);
     writeOutputManifestOf(out, "export-mcap");  // proves the file cosim's to a later export
     std::cout << "written: " << out.string() << " (" << file.messages << " messages on "

@@ -9,7 +9,6 @@
 #include "core/output_files.h"
 #include "core/output_manifest.h"
 #include "render/run_outputs.h"
-#include "sim/world_model.h"
 
 namespace cosim::cli {
 
@@ -65,15 +64,14 @@ void renderRun(const RenderArgs& a, CommandContext& ctx) {
                      ".png (or use --frames for a folder of PNG frames)");
   // Replaces only a file or folder of frames cosim can prove it wrote (core/output_manifest.h).
   checkOutputPath(out, a.out.empty() ? "run folder" : "--out", a.frames);
-  RunLog log = readRunLog(dir, s);
+  // Its world is composed for the frame size asked for (its off-screen buffer fits it).
+  const RunRecord record = readRunRecord(dir, s);
   if (interrupt.load()) {
     std::cerr << "cosim: interrupted; " << printableText(out.string()) << " was not written\n";
     ctx.status = 1;
     return;
   }
-  const WorldModel world = WorldModel::build(s);  // its off-screen buffer fits the frame size
-  completeRunLog(log, s, world);
-  RunRenderer renderer(world, s, log, s.render.width, s.render.height);
+  RunRenderer renderer(s, record, s.render.width, s.render.height);
   if (one_frame) {
     std::vector<std::uint8_t> rgb;
     renderer.render(a.at >= 0 ? a.at : renderer.endTime(), camera, rgb);

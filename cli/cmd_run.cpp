@@ -86,35 +86,26 @@ void addRunCommand(CLI::App& app, CommandContext& ctx) {
     if (a->seed >= 0) overrides.push_back("sim.seed=" + std::to_string(a->seed));
     if (a->video_speed > 0) overrides.push_back("render.speed=" + std::to_string(a->video_speed));
     const Scenario scenario = loadCheckedScenario(path, overrides, PlannerUse::Run);
-    // The folder is this run's alone until it ends (core/output_dir_lock.h): locked before its
-    // earlier results go.
-    OutputDirLock lock;
-    if (!a->out.empty() && std::filesystem::is_directory(a->out)) {
-      lock.acquire(a->out, "--out");
-      clearRunFolder(a->out);
-    }
-    request.out_dir = prepareOutputDir(a->out, "run");
-    lock.acquire(request.out_dir, "--out");
-    // What the run writes is recorded in the folder's manifest, last, however it ends.
-    OutputManifestScope manifest(request.out_dir, "run");
+    RunFolderSession folder(a->out, "--out");
+    request.out_dir = folder.dir();
     request.video = !a->no_video;
     request.images = !a->no_images;
     request.interrupt = &interrupt;
     RunConsole console(!a->quiet);
     request.observer = console.observer();
-    const RunSummary s = executeRun(scenario, request);
+    const RunRecord s = executeRun(scenario, request);
     console.finish();
-    manifest.finish(s.outcome == RunOutcome::Interrupted ? "unfinished" : "complete");
+    folder.finish(s.outcome == RunOutcome::Interrupted);
     if (s.outcome == RunOutcome::Interrupted) {
       std::cerr << "cosim: interrupted; " << printableText(request.out_dir.string())
                 << " holds no finished run\n";
       ctx.status = 1;
       return;
     }
-    // metrics.json's top level: for a team, the whole team's figures.
+    // The record's top-level figures (metrics.json's): for a team, the whole team's.
     // The folder's name is the user's bytes: control characters escaped (core/input_error.h).
     std::cout << "run: " << printableText(request.out_dir.string()) << "\n"
-              << "  " << runSummaryLine(s.metrics_json.json()) << "\n";
+              << "  " << runSummaryLine(s) << "\n";
     if (s.outcome == RunOutcome::TaskFailed)
       std::cerr << "cosim: " << printableText(s.message) << "\n";
     std::cout << printableText(runPagesLine(request.out_dir)) << "\n";

@@ -138,7 +138,7 @@ int executePlan(const MapfArgs& a, Scenario execution, const MapfResult& plan,
   request.given_team_plan = &plan;  // the plan just written, not a second search
   RunConsole console(true);
   request.observer = console.observer();
-  const RunSummary run = executeRun(execution, request);
+  const RunRecord run = executeRun(execution, request);
   console.finish();
   if (run.outcome == RunOutcome::Interrupted) {
     std::cerr << "cosim: interrupted; " << exec_dir.string() << " holds no finished run\n";
@@ -146,12 +146,12 @@ int executePlan(const MapfArgs& a, Scenario execution, const MapfResult& plan,
   }
   int contacts = 0, arrived = 0;
   double deviation = 0.0;
-  for (const FlightMetrics& m : run.metrics) {
+  for (const FlightMetrics& m : run.metrics.vehicles) {
     contacts += m.collisions;
     arrived += m.reached_goal ? 1 : 0;
     deviation = std::max(deviation, m.max_error_m);
   }
-  std::cout << "executed in physics: " << arrived << "/" << run.metrics.size()
+  std::cout << "executed in physics: " << arrived << "/" << run.metrics.vehicles.size()
             << " robots arrived, " << contacts << " contacts, max deviation from the plan "
             << deviation << " m\nwritten: " << exec_dir.string() << "/ (metrics.json)\n";
   if (run.outcome == RunOutcome::TaskFailed)

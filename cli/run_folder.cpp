@@ -8,7 +8,9 @@
 #include "core/input_error.h"
 #include "core/input_file.h"
 #include "core/json_reading.h"
+#include "run/run_evaluation.h"
 #include "sim/run_log_io.h"
+#include "sim/world_model.h"
 
 namespace cosim::cli {
 
@@ -61,17 +63,6 @@ LogBounds logBoundsFor(const Scenario& s) {
   return b;
 }
 
-}  // namespace
-
-Scenario readRunScenario(const std::filesystem::path& dir) {
-  const std::filesystem::path file = dir / "scenario.yaml";
-  const std::string yaml = readText(file);
-  // Its errors name this file, whose lines they count; its relative paths were written for the
-  // original's folder; its references are the copies the run kept here.
-  const std::filesystem::path original = recordedRun(dir).scenario_file;
-  return parseRunFolderScenario(yaml, file.string(), original.parent_path(), dir);
-}
-
 RunLog readRunLog(const std::filesystem::path& dir, const Scenario& scenario) {
   RunLog log;
   // The time series first: it names the vehicles, and a single vehicle's path.csv has no
@@ -90,6 +81,7 @@ RunLog readRunLog(const std::filesystem::path& dir, const Scenario& scenario) {
   return log;
 }
 
+// What the files do not hold, from the scenario and its composed world.
 void completeRunLog(RunLog& log, const Scenario& scenario, const WorldModel& world) {
   for (std::size_t v = 0; v < log.vehicles.size() && v < scenario.vehicles.size(); ++v) {
     log.vehicles[v].goal = scenario.vehicles[v].goal();
@@ -99,6 +91,27 @@ void completeRunLog(RunLog& log, const Scenario& scenario, const WorldModel& wor
     if (scenario.vehicles[v].kind == VehicleKind::Quadrotor)
       log.vehicles[v].max_thrust = world.vehicles()[v].params.max_thrust;
   }
+}
+
+}  // namespace
+
+Scenario readRunScenario(const std::filesystem::path& dir) {
+  const std::filesystem::path file = dir / "scenario.yaml";
+  const std::string yaml = readText(file);
+  // Its errors name this file, whose lines they count; its relative paths were written for the
+  // original's folder; its references are the copies the run kept here.
+  const std::filesystem::path original = recordedRun(dir).scenario_file;
+  return parseRunFolderScenario(yaml, file.string(), original.parent_path(), dir);
+}
+
+RunRecord readRunRecord(const std::filesystem::path& dir, const Scenario& scenario) {
+  RunRecord record;
+  record.log = readRunLog(dir, scenario);
+  record.world = std::make_shared<const WorldModel>(WorldModel::build(scenario));
+  completeRunLog(record.log, scenario, *record.world);
+  record.setup = resolveRun(scenario, false);
+  trackVehicles(record.setup, record.log, record.metrics);
+  return record;
 }
 
 }  // namespace cosim::cli

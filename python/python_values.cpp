@@ -4,8 +4,31 @@ namespace py = pybind11;
 
 namespace cosim::python {
 
-py::object jsonValue(const std::string& text) {
-  return py::module_::import("json").attr("loads")(text);
+py::object jsonValue(const nlohmann::ordered_json& value) {
+  switch (value.type()) {
+    case nlohmann::ordered_json::value_t::object: {
+      py::dict d;
+      for (const auto& [key, item] : value.items()) d[py::str(key)] = jsonValue(item);
+      return d;
+    }
+    case nlohmann::ordered_json::value_t::array: {
+      py::list l;
+      for (const auto& item : value) l.append(jsonValue(item));
+      return l;
+    }
+    case nlohmann::ordered_json::value_t::string:
+      return py::str(value.get_ref<const std::string&>());
+    case nlohmann::ordered_json::value_t::boolean:
+      return py::bool_(value.get<bool>());
+    case nlohmann::ordered_json::value_t::number_integer:
+      return py::int_(value.get<std::int64_t>());
+    case nlohmann::ordered_json::value_t::number_unsigned:
+      return py::int_(value.get<std::uint64_t>());
+    case nlohmann::ordered_json::value_t::number_float:
+      return py::float_(value.get<double>());
+    default:
+      return py::none();
+  }
 }
 
 py::array_t<double> vectorArray(const std::vector<double>& values) {

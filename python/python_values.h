@@ -1,11 +1,12 @@
 #pragma once
-// The library's values as Python's: JSON text as dicts (metrics.json's exact content), points as
+// The library's values as Python's: JSON values as dicts (metrics.json's exact content), points as
 // (N, 3) NumPy arrays, vectors and quaternions as 1-D arrays, a vehicle state as a dict.
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -13,8 +14,10 @@
 
 namespace cosim::python {
 
-// json.loads(text).
-pybind11::object jsonValue(const std::string& text);
+// A JSON value as json.loads would give it from its text, built from the value itself (no text
+// is written or parsed): objects as dicts in their order, integers as int, other numbers as
+// float, null as None.
+pybind11::object jsonValue(const nlohmann::ordered_json& value);
 
 pybind11::array_t<double> vectorArray(const std::vector<double>& values);
 pybind11::array_t<double> vectorArray(const Eigen::VectorXd& values);

@@ -16,6 +16,7 @@
 #include "python/overrides.h"
 #include "python/python_values.h"
 #include "python/unknown_vehicle_error.h"
+#include "run/metrics_json.h"
 #include "run/run_files.h"
 #include "run/run_pipeline.h"
 #include "run/scenario_checks.h"
@@ -80,26 +81,16 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
 
   InterruptGuard guard;
   RunRequest request;
-  RunSummary summary;
+  RunRecord summary;
+  std::optional<JsonObject> metrics;  // metrics.json's object, from the record
   {
     py::gil_scoped_release release;
     // As `cosim run` does (cli/cmd_run.cpp): the folder is touched only once the scenario passed
-    // its checks; then it loses an earlier run's results (only files cosim can prove it wrote:
-    // anything else there is refused) and is locked, this run's alone until it ends
-    // (core/output_dir_lock.h).
-    OutputDirLock lock;
+    // its checks (run/run_files.h RunFolderSession).
     if (out_dir) checkOutputDir(*out_dir);
     const Scenario s = loadCheckedScenario(path, sets, PlannerUse::Run);
-    std::optional<OutputManifestScope> manifest;
-    if (out_dir) {
-      if (!out_dir->empty() && std::filesystem::is_directory(*out_dir)) {
-        lock.acquire(*out_dir, "out");
-        clearRunFolder(*out_dir, "out");
-      }
-      request.out_dir = prepareOutputDir(*out_dir, "run");
-      lock.acquire(request.out_dir, "out");
-      manifest.emplace(request.out_dir, "run");
-    }
+    std::optional<RunFolderSession> folder;
+    if (out_dir) request.out_dir = folder.emplace(*out_dir, "out").dir();
     request.video = video;
     request.interrupt = &stopRequestFlag();
     // Warnings as the program prints them; the rest of its progress lines stay unsaid.
@@ -107,14 +98,14 @@ RunResult run(const py::object& scenario, const py::object& overrides, const py:
       if (e.kind == RunEventKind::Warning) std::cerr << "cosim: warning: " << e.text << "\n";
     };
     summary = executeRun(s, request);
-    if (manifest)
-      manifest->finish(summary.outcome == RunOutcome::Interrupted ? "unfinished" : "complete");
+    if (summary.outcome != RunOutcome::Interrupted) metrics = runMetricsJson(s, summary);
+    if (folder) folder->finish(summary.outcome == RunOutcome::Interrupted);
   }
   guard.finish();  // Ctrl-C: KeyboardInterrupt from here
   RunResult r;
   r.status = summary.exitStatus();
   r.message = summary.message;
-  if (summary.outcome != RunOutcome::Interrupted) r.metrics = jsonValue(summary.metrics_json.str());
+  if (metrics) r.metrics = jsonValue(metrics->json());
   r.log = std::move(summary.log);
   if (out_dir) r.out = request.out_dir.string();
   return r;

@@ -117,7 +117,7 @@ class Simulation {
     while (!sim_->done() && sim_->time() < t - 1e-9) stepOnce();
   }
 
-  py::object metrics() const { return jsonValue(sim_->metricsJson().str()); }
+  py::object metrics() const { return jsonValue(sim_->metricsJson().json()); }
   void close() {
     notStepping("close()");  // the loop under way would run on freed data
     sim_->close();

@@ -4,6 +4,7 @@
 
 #include "core/input_error.h"
 #include "core/stop_request.h"
+#include "run/metrics_json.h"
 #include "run/run_simulation.h"
 #include "run/scenario_checks.h"
 
@@ -67,7 +68,7 @@ void SteppedSimulation::setController(std::size_t vehicle, FlightController* con
 
 JsonObject SteppedSimulation::metricsJson() const {
   const RunLog log = loop_ ? loop_->snapshot() : final_log_;
-  JsonObject json = summarizeRun(run_, log).metrics_json;
+  JsonObject json = runMetricsJson(scenario_, summarizeRun(run_, log));
   if (log.end_reason == RunEnd::Running)
     json.add("message",
              "running: the simulation has not ended (t = " + std::to_string(log.sim_time) + " s)");

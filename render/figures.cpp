@@ -235,33 +235,44 @@ std::string pathPlot(const RunLog& log, int h, int v, const std::vector<ErrorRef
   return p.str();
 }
 
-// The error figure's series (one per vehicle, its data files written into `work_dir`): the
-// plot command, the RMSE and arrival marks, and the largest error (the colour scale's top).
-struct ErrorSeries {
-  std::string plot, marks;
-  double max_error = 0.0;
-};
-
-ErrorSeries errorSeries(const RunLog& log, const World& world,
-                        const std::vector<ErrorReference>& refs,
-                        const std::filesystem::path& work_dir) {
-  double max_error = 0.0;
-  std::ostringstream error_plot, error_marks;
-  error_plot << "plot ";
+// Each vehicle's data files in `work_dir`: samples with the record's errors, planned path, goal.
+void writeFigureData(const RunRecord& record, const std::filesystem::path& work_dir) {
+  const RunLog& log = record.log;
   for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
     const VehicleLog& v = log.vehicles[a];
-    const std::vector<double> err = trackingErrors(v, refs[a]);
-    for (double e : err) max_error = std::max(max_error, e);
-    writeVehicleData(v, err, work_dir / dataFile('v', a));
+    writeVehicleData(v, record.metrics.tracking_errors[a], work_dir / dataFile('v', a));
     std::vector<Eigen::Vector3d> planned = v.planned_path;
     if (planned.empty() && !v.samples.empty()) planned.push_back(v.samples.front().pos);
     if (planned.empty()) planned.push_back(v.goal);
     writePathData(planned, work_dir / dataFile('p', a));
     writePathData({v.goal}, work_dir / dataFile('g', a));
+  }
+}
+
+// The largest tracking error of any vehicle (the colour scale's top).
+double largestError(const RunRecord& record) {
+  double max_error = 0.0;
+  for (const std::vector<double>& err : record.metrics.tracking_errors)
+    for (double e : err) max_error = std::max(max_error, e);
+  return max_error;
+}
+
+// The error figure's series (one per vehicle, from writeFigureData's files): the plot command,
+// and the RMSE and arrival marks from each vehicle's metrics in the record.
+struct ErrorSeries {
+  std::string plot, marks;
+};
+
+ErrorSeries errorSeries(const RunRecord& record) {
+  const RunLog& log = record.log;
+  std::ostringstream error_plot, error_marks;
+  error_plot << "plot ";
+  for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
+    const VehicleLog& v = log.vehicles[a];
     const bool several = log.vehicles.size() > 1;
     const std::string colour =
         hexColour(several ? agentColour(a) : Eigen::Vector3f(0.13f, 0.35f, 0.65f));
-    const FlightMetrics m = computeFlightMetrics(v, world, refs[a] != ErrorReference::PlannedPath);
+    const FlightMetrics& m = record.metrics.vehicles[a];
     error_plot << (a ? ", \\\n     " : "") << "'v" << a
                << ".dat' using 1:8 with lines lw 2 lc rgb '" << colour << "' title "
                << gnuplotString((several ? v.name + ": " : std::string()) + "RMSE " +
@@ -281,7 +292,7 @@ ErrorSeries errorSeries(const RunLog& log, const World& world,
                 << gnuplotNumber(m.rmse_m) << " left offset 0,0.6 tc rgb '" << colour
                 << "' font ',9'\n";
   }
-  return {error_plot.str(), error_marks.str(), max_error};
+  return {error_plot.str(), error_marks.str()};
 }
 
 // What the colour bar measures against: the reference every vehicle shares, or each one's own.
@@ -300,13 +311,10 @@ const char* kCommonStyle =
     "font ',10' Left reverse\n";
 
 // The top view's script: equal axes over the whole world.
-std::string topView(const RunLog& log, const Scenario& scenario,
+std::string topView(const RunLog& log, const World& world, const std::string& planner,
                     const std::vector<ErrorReference>& refs, const std::string& palette,
                     bool plans) {
-  const World& world = scenario.world;
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
-  const std::string planner =
-      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
   std::ostringstream top;
   top << kCommonStyle << palette << obstacleObjects(world, 0, 1) << "set title "
       << gnuplotString(
@@ -347,19 +355,21 @@ std::string sideView(const RunLog& log, const World& world, const std::vector<Er
 
 }  // namespace
 
-std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scenario,
+std::vector<std::string> writeRunFigures(const Scenario& scenario, const RunRecord& record,
                                          const std::filesystem::path& dir) {
   WorkDir work(dir);
+  const RunLog& log = record.log;
   const World& world = scenario.world;
-  // Each vehicle's error against its own reference, as in its metrics (log_lookup.h).
+  // Each vehicle's error against its own reference, as in its metrics (the record's).
   std::vector<ErrorReference> refs;
-  for (std::size_t a = 0; a < log.vehicles.size(); ++a) refs.push_back(errorReference(scenario, a));
-  const ErrorSeries series = errorSeries(log, world, refs, work.path());
+  for (std::size_t a = 0; a < log.vehicles.size(); ++a) refs.push_back(record.errorReferenceOf(a));
+  writeFigureData(record, work.path());
+  const ErrorSeries series = errorSeries(record);
   const double scale =
-      errorScaleMax(series.max_error, errorScaleFloor(scenario.sim.goal_tolerance));
+      errorScaleMax(largestError(record), errorScaleFloor(scenario.sim.goal_tolerance));
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
-  const std::string planner =
-      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
+  const std::string& planner_name = record.setup.primarySections().planner.name;
+  const std::string planner = planner_name.empty() ? "given waypoints" : planner_name;
   const std::string reference_name = referenceName(refs);
   const std::string palette = errorPalette(scale, "error to " + reference_name + " [m]");
 
@@ -378,8 +388,8 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
   const int top_height = 2 * static_cast<int>(std::clamp(95.0 + 380.0 * aspect, 250.0, 700.0));
   std::string script =
       plotBoth("error", 1000, 480, error.str()) + "reset\n" +
-      plotBoth("top", 1000, top_height, topView(log, scenario, refs, palette, plans)) + "reset\n" +
-      plotBoth("side", 1000, 560, sideView(log, world, refs, palette, plans));
+      plotBoth("top", 1000, top_height, topView(log, world, planner, refs, palette, plans)) +
+      "reset\n" + plotBoth("side", 1000, 560, sideView(log, world, refs, palette, plans));
   runGnuplot(script, work.path());
   const std::vector<std::string> names = {"error", "top", "side"};
   for (const auto& n : names)

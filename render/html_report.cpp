@@ -143,8 +143,7 @@ void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& r) {
     h << "<p><a href=\"" << attr(r.viewer) << "\">Open the interactive 3D replay ("
       << htmlEscape(r.viewer)
       << ")</a>: turn the camera, follow a vehicle, stop at any moment.</p>\n";
-  const GroupedMetrics metrics =
-      r.metrics_json.empty() ? GroupedMetrics{} : groupMetrics(flattenJson(r.metrics_json));
+  const GroupedMetrics metrics = r.metrics.empty() ? GroupedMetrics{} : groupMetrics(r.metrics);
   if (!metrics.headline.empty()) {
     h << "<div class=\"cards\">\n";
     for (const auto& [k, v] : metrics.headline)

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/json_flatten.h"
+
 namespace cosim {
 
 struct HtmlReport {
@@ -15,12 +17,13 @@ struct HtmlReport {
   std::vector<std::string> videos;  // paths relative to the report
   std::vector<std::string> images;  // PNGs shown as they are (e.g. final.png)
   std::vector<std::string>
-      figures;  // base paths relative to the report: <base>.png is shown, <base>.svg linked
-  std::string metrics_json;  // shown flattened as a key/value table (may be empty)
-  std::string viewer;        // the 3D replay page, linked under the subtitle (may be empty)
+      figures;       // base paths relative to the report: <base>.png is shown, <base>.svg linked
+  FlatJson metrics;  // metrics.json flattened (core/json_flatten.h), shown as tables
+
+  std::string viewer;  // the 3D replay page, linked under the subtitle (may be empty)
 };
 
-// Writes dir/index.html atomically. Throws std::runtime_error if metrics_json is malformed.
+// Writes dir/index.html atomically.
 void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& report);
 
 // Escapes &, <, >, " and ' for HTML text and attributes; control bytes and bytes that are not

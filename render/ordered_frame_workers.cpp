@@ -114,7 +114,7 @@ int defaultRenderWorkers() {
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 }
 
-int renderFramesInOrder(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+int renderFramesInOrder(const Scenario& scenario, const RunRecord& record,
                         const FrameSequence& sequence, int workers,
                         const std::function<void(std::vector<std::uint8_t>&)>& deliver,
                         const std::atomic<bool>* interrupt) {
@@ -125,8 +125,7 @@ int renderFramesInOrder(const WorldModel& world, const Scenario& scenario, const
       std::unique_ptr<RunRenderer> renderer;
       {
         std::lock_guard<std::mutex> lock(contextCreation());
-        renderer =
-            std::make_unique<RunRenderer>(world, scenario, log, sequence.width, sequence.height);
+        renderer = std::make_unique<RunRenderer>(scenario, record, sequence.width, sequence.height);
       }
       handover.workerReady();
       std::vector<std::uint8_t> rgb;

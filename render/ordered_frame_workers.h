@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "render/camera_rig.h"
+#include "run/record/run_record.h"
 #include "sim/run_log.h"
 #include "sim/scenario.h"
 #include "sim/world_model.h"
@@ -33,7 +34,7 @@ int defaultRenderWorkers();
 // swap the buffer for another of the same size). interrupt: polled while waiting; once set, the
 // workers stop and the result is the number of frames delivered so far. An exception in a
 // worker (or in deliver) stops the others and is rethrown here.
-int renderFramesInOrder(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+int renderFramesInOrder(const Scenario& scenario, const RunRecord& record,
                         const FrameSequence& sequence, int workers,
                         const std::function<void(std::vector<std::uint8_t>&)>& deliver,
                         const std::atomic<bool>* interrupt = nullptr);

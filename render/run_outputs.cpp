@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "core/input_error.h"
@@ -11,7 +12,6 @@
 #include "core/stop_requested_error.h"
 #include "render/figures.h"
 #include "render/html_report.h"
-#include "render/log_lookup.h"
 #include "render/long_render_warning.h"
 #include "render/ordered_frame_workers.h"
 #include "render/progress_bar.h"
@@ -82,7 +82,7 @@ int renderRunVideo(RunRenderer& renderer, const RenderSettings& settings, Camera
     const FrameSequence sequence{camera, frames, seconds_per_frame, renderer.width(),
                                  renderer.height()};
     done = renderFramesInOrder(
-        renderer.world(), renderer.scenario(), renderer.log(), sequence, workers,
+        renderer.scenario(), renderer.record(), sequence, workers,
         [&](std::vector<std::uint8_t>& rgb) {
           video.addFrame(rgb);
           bar(video.frames());
@@ -106,7 +106,7 @@ std::string videoFileName(const RenderSettings& settings, CameraKind camera) {
                                    : std::string("video_") + cameraName(camera) + ".mp4";
 }
 
-RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+RenderedRun renderRunOutputs(const Scenario& scenario, const RunRecord& record,
                              const std::filesystem::path& dir, const RunRenderRequest& request) {
   RenderedRun done;
   const auto say = [&](const std::string& what) {
@@ -123,7 +123,7 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
     };
   };
   const RenderSettings& rs = scenario.render;
-  RunRenderer renderer(world, scenario, log, rs.width, rs.height);
+  RunRenderer renderer(scenario, record, rs.width, rs.height);
   const auto stop = [&] { return done.interrupted = interrupted(request.interrupt); };
   if (request.images) {
     if (stop()) return done;
@@ -135,7 +135,7 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
     if (stop()) return done;
     say("plotting figures/");
     try {
-      done.figures = writeRunFigures(log, scenario, dir / "figures");
+      done.figures = writeRunFigures(scenario, record, dir / "figures");
     } catch (const StopRequestedError&) {
       done.interrupted = true;  // gnuplot was ended: no figure was published
       return done;
@@ -162,25 +162,17 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
   return done;
 }
 
-std::string runReportTitle(const Scenario& scenario) {
-  const std::string planner =
-      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
-  return "cosim run: " + std::filesystem::path(scenario.file).stem().string() + " (" + planner +
-         ", " + scenario.controller_name + " controller)";
-}
-
 void writeRunReport(const std::filesystem::path& dir, const Scenario& scenario,
-                    const std::string& metrics_json, const std::string& failure,
+                    const RunRecord& record, const JsonObject& metrics,
                     const RenderedRun& rendered) {
   HtmlReport r;
-  r.title = runReportTitle(scenario);
+  r.title = runTitle(scenario, record);
   r.viewer = rendered.viewer;
-  r.subtitle = failure.empty() ? "Every vehicle reached its goal without a collision."
-                               : "The run failed its task: " + failure;
+  r.subtitle = runStatusLine(record);
   r.videos = rendered.videos;
   for (const auto& f : rendered.figures) r.figures.push_back("figures/" + f);
   if (!rendered.final_image.empty()) r.images.push_back(rendered.final_image);
-  r.metrics_json = metrics_json;
+  r.metrics = flattenJsonDocument(metrics.json());
   writeHtmlReport(dir, r);
 }
 

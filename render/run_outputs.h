@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/json_writer.h"
 #include "render/run_renderer.h"
 #include "render/video_encoder.h"
 #include "sim/run_log.h"
@@ -73,17 +74,14 @@ struct RenderedRun {
   bool interrupted = false;          // stopped by the request's interrupt: outputs are missing
 };
 
-RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+// The outputs of the record of a run of `scenario`.
+RenderedRun renderRunOutputs(const Scenario& scenario, const RunRecord& record,
                              const std::filesystem::path& dir, const RunRenderRequest& request);
 
-// "cosim run: <scenario> (<planner>, <controller> controller)": index.html's and viewer.html's
-// title.
-std::string runReportTitle(const Scenario& scenario);
-
-// dir/index.html: the rendered files and the metrics table. failure: why the run failed its
-// task (empty if it succeeded).
+// dir/index.html: the record's title and status line (run/record/run_record.h), the rendered
+// files, and `metrics` (metrics.json's object, written from the record) as tables.
 void writeRunReport(const std::filesystem::path& dir, const Scenario& scenario,
-                    const std::string& metrics_json, const std::string& failure,
+                    const RunRecord& record, const JsonObject& metrics,
                     const RenderedRun& rendered);
 
 }  // namespace cosim

@@ -20,13 +20,16 @@ namespace {
 constexpr double kLineWidthFraction = 0.0055;
 }  // namespace
 
-RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, const RunLog& log,
-                         int width, int height)
-    : world_(world),
+RunRenderer::RunRenderer(const Scenario& scenario, const RunRecord& record, int width, int height)
+    : world_(*record.world),
       scenario_(scenario),
-      log_(log),
-      rig_(scenario, log, static_cast<double>(width) / height),
-      end_time_(logEndTime(log)) {
+      record_(record),
+      log_(record.log),
+      rig_(scenario, log_, static_cast<double>(width) / height),
+      errors_(record.metrics.tracking_errors),
+      end_time_(logEndTime(log_)) {
+  const RunLog& log = log_;
+  const WorldModel& world = world_;
   const mjModel* m = world.model();
   ctx_ = std::make_unique<OffscreenContext>(m, width, height);
   data_ = mj_makeData(m);
@@ -42,12 +45,12 @@ RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, cons
                         (trailBudget(log.vehicles.size()) + kReferenceDashBudget + 16));
   mjv_defaultCamera(&camera_);
   mjv_defaultOption(&option_);
-  // Each vehicle's error as its metrics measure it; one colour scale per kind of reference, so
-  // a quadrotor's millimetres are not drawn on the robots' centimetre scale (or vice versa).
+  // Each vehicle's error as its metrics measure it (the record's); one colour scale per kind of
+  // reference, so a quadrotor's millimetres are not drawn on the robots' centimetre scale (or
+  // vice versa).
   std::vector<double> max_error;
   for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
-    references_.push_back(errorReference(scenario, a));
-    errors_.push_back(trackingErrors(log.vehicles[a], references_.back()));
+    references_.push_back(record.errorReferenceOf(a));
     std::size_t k = 0;
     while (k < scales_.size() && scales_[k].reference != references_.back()) ++k;
     if (k == scales_.size()) {
@@ -55,7 +58,7 @@ RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, cons
       max_error.push_back(0.0);
     }
     scale_of_.push_back(k);
-    for (double e : errors_.back()) max_error[k] = std::max(max_error[k], e);
+    for (double e : errors_[a]) max_error[k] = std::max(max_error[k], e);
   }
   for (std::size_t k = 0; k < scales_.size(); ++k)
     scales_[k].top = errorScaleMax(max_error[k], errorScaleFloor(scenario.sim.goal_tolerance));

@@ -15,6 +15,7 @@
 #include "render/offscreen_context.h"
 #include "render/overlay_palette.h"
 #include "render/ribbon_batch.h"
+#include "run/record/run_record.h"
 #include "sim/run_log.h"
 #include "sim/world_model.h"
 
@@ -22,20 +23,21 @@ namespace cosim {
 
 // Where the last frame's time went (wall clock, seconds), for benchmarks comparing frames.
 struct FrameTimings {
-  double scene = 0.0;     // posing the vehicles, mjv_updateScene, camera and lights
-  double overlays = 0.0;  // adding paths, trails, markers and arrows to the scene
-  double render = 0.0;    // mjr_render, a team's ribbons, and OSMesa finishing the raster
-  double annotate = 0.0;  // the 2D state box, legend and colour scale
-  double read = 0.0;      // reading the pixels back
-  int model_geoms = 0;    // geoms from the model (world and vehicles)
-  int overlay_geoms = 0;  // geoms the overlays added
+  double scene = 0.0;       // posing the vehicles, mjv_updateScene, camera and lights
+  double overlays = 0.0;    // adding paths, trails, markers and arrows to the scene
+  double render = 0.0;      // mjr_render, a team's ribbons, and OSMesa finishing the raster
+  double annotate = 0.0;    // the 2D state box, legend and colour scale
+  double read = 0.0;        // reading the pixels back
+  int model_geoms = 0;      // geoms from the model (world and vehicles)
+  int overlay_geoms = 0;    // geoms the overlays added
   int ribbon_segments = 0;  // a team's line segments drawn as ribbons (render/ribbon_batch.h)
 };
 
 class RunRenderer {
  public:
-  RunRenderer(const WorldModel& world, const Scenario& scenario, const RunLog& log, int width,
-              int height);
+  // Draws the record of a run of `scenario` (its world, log and tracking errors); both must
+  // outlive the renderer.
+  RunRenderer(const Scenario& scenario, const RunRecord& record, int width, int height);
   ~RunRenderer();
   RunRenderer(const RunRenderer&) = delete;
   RunRenderer& operator=(const RunRenderer&) = delete;
@@ -61,14 +63,17 @@ class RunRenderer {
   // What this renderer draws from, for renderers of the same run on other threads.
   const WorldModel& world() const { return world_; }
   const Scenario& scenario() const { return scenario_; }
+  const RunRecord& record() const { return record_; }
   const RunLog& log() const { return log_; }
   // m, the top of the colour scale vehicle's trail is coloured on. Vehicles whose errors are
-  // measured against the same kind of reference (log_lookup.h) share a scale; a mixed run has
-  // one for the robots and one for the quadrotors, each with its own bar and title.
+  // measured against the same kind of reference (sim/error_reference.h) share a scale; a mixed run
+  // has one for the robots and one for the quadrotors, each with its own bar and title.
   double errorScale(std::size_t vehicle) const { return scales_[scale_of_[vehicle]].top; }
-  ErrorReference errorReferenceOf(std::size_t vehicle) const { return references_[vehicle]; }
+  ErrorReference errorReferenceOf(std::size_t vehicle) const {
+    return record_.errorReferenceOf(vehicle);
+  }
   const std::vector<double>& trackingErrorsOf(std::size_t vehicle) const {
-    return errors_[vehicle];
+    return record_.metrics.tracking_errors[vehicle];
   }
   int width() const { return ctx_->width(); }
   int height() const { return ctx_->height(); }
@@ -106,13 +111,15 @@ class RunRenderer {
 
   const WorldModel& world_;
   const Scenario& scenario_;
+  const RunRecord& record_;
   const RunLog& log_;
   CameraRig rig_;
-  std::vector<ErrorReference> references_;   // per vehicle
-  std::vector<std::vector<double>> errors_;  // per vehicle, per sample
-  std::vector<ErrorScale> scales_;           // one per kind of reference, in order of vehicles
-  std::vector<std::size_t> scale_of_;        // per vehicle, into scales_
-  std::vector<int> obstacle_geoms_;          // geom id of each scenario obstacle (-1 if absent)
+  std::vector<ErrorReference> references_;  // per vehicle, the record's
+  // Per vehicle, per sample: the record's tracking errors (RunMetrics::tracking_errors).
+  const std::vector<std::vector<double>>& errors_;
+  std::vector<ErrorScale> scales_;     // one per kind of reference, in order of vehicles
+  std::vector<std::size_t> scale_of_;  // per vehicle, into scales_
+  std::vector<int> obstacle_geoms_;    // geom id of each scenario obstacle (-1 if absent)
   std::vector<std::vector<Eigen::Vector3d>> planned_paths_;  // per vehicle, corners only
   Eigen::Vector3d eye_ = Eigen::Vector3d::Zero();            // the camera of the current frame
   double fovy_deg_ = 45.0;                                   // and its lens

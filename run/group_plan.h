@@ -22,14 +22,6 @@ inline bool drivable(PlanStatus status) {
   return status == PlanStatus::Ready || status == PlanStatus::Conflicting;
 }
 
-// The planner's figures of a group, as metrics.json reports them at the top level.
-struct PlanSummary {
-  double time_ms = 0.0;                       // planning time of the whole group
-  std::map<std::string, double> counters;     // a team plan's, or summed over separate plans
-  std::map<std::string, std::string> params;  // the planner's parameters in force
-  double inflation = 0.0;                     // the largest radius + margin kept clear
-};
-
 // The summary of plans made one vehicle at a time (times, counters summed; the largest inflation).
 PlanSummary summarizeSeparatePlans(const std::vector<VehiclePlan>& plans);
 

@@ -3,27 +3,38 @@
 #include <algorithm>
 
 #include "control/piecewise_polynomial_reference.h"
+#include "run/run_end.h"
 
 namespace cosim {
 
 namespace {
+
+// What metrics.json is made of: the record of a run of the scenario.
+struct RecordOf {
+  const Scenario& scenario;
+  const RunRecord& record;
+  const RunSetup& setup = record.setup;
+  const RunMetrics& metrics = record.metrics;
+  const RunLog& log = record.log;
+  const PlanFigures& plan = record.planning;
+};
 
 std::string plannerName(const std::string& name) {
   return name.empty() ? std::string("waypoints") : name;
 }
 
 // metrics.json's "fault": the simulation's end when it was a fault of the vehicles.
-std::string faultName(const RunRecord& r) {
+std::string faultName(const RecordOf& r) {
   return isFault(r.metrics.end) ? runEndName(r.log.end_reason) : "none";
 }
 
 // What every run reports first: the outcome and the top-level vehicles' tracking.
-void addHeadline(JsonObject& j, const RunRecord& r) {
+void addHeadline(JsonObject& j, const RecordOf& r) {
   const RunMetrics& m = r.metrics;
   j.add("reached_goal", m.reached_goal)
       .add("collisions", m.collisions)
       .add("planner", plannerName(r.scenario.planner_name))
-      .add("planning_time_ms", r.plan.primarySummary(r.setup).time_ms)
+      .add("planning_time_ms", r.plan.primary.time_ms)
       .add("planned_length_m", m.team.planned_length_m)
       .add("flown_length_m", m.team.flown_length_m)
       .add("flight_time_s", m.team.flight_time_s)
@@ -32,18 +43,16 @@ void addHeadline(JsonObject& j, const RunRecord& r) {
       .add("min_clearance_m", m.min_clearance_m)
       .add("sim_speed_x", m.sim_speed_x)
       // A robot's reference is its timed plan.
-      .add("error_reference", r.setup.primaryKind() == VehicleKind::GroundRobot
-                                  ? std::string("timed_plan")
-                                  : m.team.error_reference);
+      .add("error_reference", errorReferenceKey(m.team.error_reference));
 }
 
 // A flight: its quadrotors' airframe figures and how they were flown.
-void addFlight(JsonObject& j, const RunRecord& r) {
+void addFlight(JsonObject& j, const RecordOf& r) {
   const FlightMetrics& t = r.metrics.team;
   const Scenario& s = r.scenario;
   double radius = 0.0;
   for (std::size_t v : r.setup.quadrotors)
-    radius = std::max(radius, r.world.vehicles()[v].params.radius);
+    radius = std::max(radius, r.record.world->vehicles()[v].params.radius);
   j.add("peak_thrust_fraction", t.peak_thrust_fraction)
       .add("saturated_fraction", t.saturated_fraction)
       .add("energy_proxy", t.energy_proxy)
@@ -55,11 +64,11 @@ void addFlight(JsonObject& j, const RunRecord& r) {
       .add("drag_compensation", r.setup.primarySections().controller.drag_compensation)
       .add("trajectory_mode", trajectoryModeName(r.setup.primarySections().trajectory.mode))
       .add("vehicle_radius_m", radius)
-      .add("inflation_m", r.plan.quadrotors.summary.inflation);
+      .add("inflation_m", r.plan.quadrotor_inflation);
 }
 
 // A run with ground robots: their contacts, closest approaches and schedule.
-void addRobots(JsonObject& j, const RunRecord& r) {
+void addRobots(JsonObject& j, const RecordOf& r) {
   const TeamContacts& c = r.metrics.contacts;
   const RobotSchedule& s = r.metrics.schedule;
   j.add("robots", static_cast<int>(r.setup.robots.size()))
@@ -72,12 +81,12 @@ void addRobots(JsonObject& j, const RunRecord& r) {
       .add("planned_makespan_s", s.planned_makespan_s)
       .add("executed_makespan_s", s.executed_makespan_s)
       .add("sum_of_arrival_times_s", s.sum_of_arrival_times_s)
-      .add("cruise_speed_mps", r.plan.robots.cruise_speed)
-      .add("inflation_m", r.plan.robots.summary.inflation);
+      .add("cruise_speed_mps", r.plan.cruise_speed_mps)
+      .add("inflation_m", r.plan.robot_inflation);
 }
 
 // The quadrotors over ground robots, driven by the `aerial` sections.
-void addQuadrotorsOverRobots(JsonObject& j, const RunRecord& r) {
+void addQuadrotorsOverRobots(JsonObject& j, const RecordOf& r) {
   if (r.setup.quadrotors.empty()) return;
   const MotionSections& air = r.setup.quadrotor_sections;
   const RunMetrics& m = r.metrics;
@@ -97,9 +106,9 @@ void addQuadrotorsOverRobots(JsonObject& j, const RunRecord& r) {
 }
 
 // The run itself: its seed, its time, how it ended, and the planner's figures.
-void addRunFacts(JsonObject& j, const RunRecord& r) {
+void addRunFacts(JsonObject& j, const RecordOf& r) {
   const RunMetrics& m = r.metrics;
-  const PlanSummary& plan = r.plan.primarySummary(r.setup);
+  const PlanSummary& plan = r.plan.primary;
   j.add("seed", static_cast<long>(r.scenario.sim.seed))
       .add("sim_time_s", r.log.sim_time)
       .add("wall_time_s", r.log.wall_time)
@@ -107,19 +116,19 @@ void addRunFacts(JsonObject& j, const RunRecord& r) {
       .add("mujoco_warnings", r.log.mujoco_warnings);
   if (r.setup.primaryKind() != VehicleKind::GroundRobot)
     j.add("fault", faultName(r)).add("longest_saturation_s", m.longest_saturation_s);
-  j.add("status", m.status)
-      .add("message", m.message)
+  j.add("status", r.record.exitStatus())
+      .add("message", r.record.message)
       .add("planner_counters", plan.counters)
       .add("planner_params", plan.params);
   if (r.setup.primaryKind() == VehicleKind::GroundRobot) return;
-  j.add("trajectory_counters", r.plan.quadrotors.trajectory_counters);
+  j.add("trajectory_counters", r.plan.trajectory_counters);
   if (m.separation)  // a team of quadrotors: how close they came to each other
     j.add("uav_contacts", m.contacts.uav_contacts)
         .add("min_uav_separation_m", m.separation->min_uav_separation)
         .add("downwash_violations", m.separation->downwash_violations);
 }
 
-JsonObject quadrotorEntry(const RunRecord& r, std::size_t v) {
+JsonObject quadrotorEntry(const RecordOf& r, std::size_t v) {
   const VehicleLog& vl = r.log.vehicles[v];
   JsonObject j = flightMetricsJson(r.metrics.vehicles[v]);
   j.add("name", vl.name).add("model", r.scenario.vehicles[v].model);
@@ -133,7 +142,7 @@ JsonObject quadrotorEntry(const RunRecord& r, std::size_t v) {
 }
 
 // Robot k of the run, scenario.vehicles[v].
-JsonObject robotEntry(const RunRecord& r, std::size_t v, std::size_t k) {
+JsonObject robotEntry(const RecordOf& r, std::size_t v, std::size_t k) {
   const VehicleLog& vl = r.log.vehicles[v];
   const FlightMetrics& m = r.metrics.vehicles[v];
   JsonObject j;
@@ -154,12 +163,11 @@ JsonObject robotEntry(const RunRecord& r, std::size_t v, std::size_t k) {
   return j;
 }
 
-std::vector<JsonObject> vehicleEntries(const RunRecord& r) {
+std::vector<JsonObject> vehicleEntries(const RecordOf& r) {
   std::vector<JsonObject> entries;
   for (std::size_t v = 0, k = 0; v < r.log.vehicles.size(); ++v)
-    entries.push_back(r.scenario.vehicles[v].kind == VehicleKind::GroundRobot
-                          ? robotEntry(r, v, k++)
-                          : quadrotorEntry(r, v));
+    entries.push_back(r.setup.vehicles[v].kind == VehicleKind::GroundRobot ? robotEntry(r, v, k++)
+                                                                           : quadrotorEntry(r, v));
   return entries;
 }
 
@@ -174,7 +182,7 @@ JsonObject flightMetricsJson(const FlightMetrics& m) {
       .add("flight_time_s", m.flight_time_s)
       .add("rmse_m", m.rmse_m)
       .add("max_error_m", m.max_error_m)
-      .add("error_reference", m.error_reference)
+      .add("error_reference", errorReferenceKey(m.error_reference))
       .add("min_clearance_m", m.min_clearance_m)
       .add("peak_thrust_fraction", m.peak_thrust_fraction)
       .add("saturated_fraction", m.saturated_fraction)
@@ -184,7 +192,8 @@ JsonObject flightMetricsJson(const FlightMetrics& m) {
   return j;
 }
 
-JsonObject runMetricsJson(const RunRecord& r) {
+JsonObject runMetricsJson(const Scenario& scenario, const RunRecord& record) {
+  const RecordOf r{scenario, record};
   JsonObject j;
   addHeadline(j, r);
   if (r.setup.primaryKind() == VehicleKind::GroundRobot) {

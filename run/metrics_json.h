@@ -11,25 +11,16 @@
 // uav_* figures, pooled the same way. The outcome figures (reached_goal, collisions,
 // min_clearance_m) count every vehicle of the run, each touching pair of vehicles once.
 #include "core/json_writer.h"
+#include "run/record/run_setup.h"
 #include "run/run_evaluation.h"
 #include "run/run_plan.h"
-#include "run/run_setup.h"
 #include "sim/run_log.h"
 #include "sim/world_model.h"
 
 namespace cosim {
 
-// What metrics.json is made of.
-struct RunRecord {
-  const Scenario& scenario;
-  const RunSetup& setup;
-  const WorldModel& world;
-  const RunPlan& plan;
-  const RunMetrics& metrics;
-  const RunLog& log;
-};
-
-JsonObject runMetricsJson(const RunRecord& run);
+// metrics.json's object of a run of `scenario`: the one writer of metrics.json, from the record.
+JsonObject runMetricsJson(const Scenario& scenario, const RunRecord& record);
 
 // A quadrotor's entry in metrics.json's "vehicles" list (without its name and model).
 JsonObject flightMetricsJson(const FlightMetrics& m);

@@ -2,7 +2,7 @@
 // How a group of vehicles moves: its planner, trajectory and controller sections, as a run uses
 // them. A scenario has two such groups of keys (the top-level planner, trajectory and controller,
 // and the `aerial` ones that drive quadrotors over ground robots); a run reads each group into
-// one MotionSections value and resolves its defaults there (run/run_setup.h), never in the
+// one MotionSections value and resolves its defaults there (run/record/run_setup.h), never in the
 // loaded Scenario.
 #include <optional>
 #include <string>

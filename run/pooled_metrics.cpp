@@ -26,6 +26,7 @@ FlightMetrics poolFlightMetrics(const std::vector<FlightMetrics>& each, const Ru
                                 const std::vector<std::size_t>& members) {
   if (members.size() == 1) return each[members.front()];
   FlightMetrics p;
+  p.error_reference = ErrorReference::None;
   if (members.empty()) return p;
   p.reached_goal = true;
   p.min_clearance_m = std::numeric_limits<double>::infinity();
@@ -45,7 +46,7 @@ FlightMetrics poolFlightMetrics(const std::vector<FlightMetrics>& each, const Ru
     p.peak_thrust_fraction = std::max(p.peak_thrust_fraction, e.peak_thrust_fraction);
     p.max_speed_mps = std::max(p.max_speed_mps, e.max_speed_mps);
     p.min_clearance_m = std::min(p.min_clearance_m, e.min_clearance_m);
-    if (e.error_reference != p.error_reference) p.error_reference = "mixed";
+    if (e.error_reference != p.error_reference) p.error_reference = ErrorReference::Mixed;
     tracked += n_tracked;
     tracked_sq += e.rmse_m * e.rmse_m * n_tracked;
     samples += n;

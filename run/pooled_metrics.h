@@ -21,8 +21,8 @@ std::size_t trackedSamples(const VehicleLog& vehicle);
 //   rmse_m: the RMS error over every member's tracked samples (trackedSamples);
 //   estimation_rmse_m, saturated_fraction: over every member's samples;
 //   max_error_m, peak_thrust_fraction, max_speed_mps: the largest; min_clearance_m: the
-//   smallest; error_reference: the members' common reference, or "mixed".
-// No members: all zero, error_reference "".
+//   smallest; error_reference: the members' common reference, or Mixed.
+// No members: all zero, error_reference None.
 FlightMetrics poolFlightMetrics(const std::vector<FlightMetrics>& each, const RunLog& log,
                                 const std::vector<std::size_t>& members);
 

@@ -1,7 +1,6 @@
 #include "run/prepared_run.h"
 
 #include "core/input_error.h"
-#include "run/metrics_json.h"
 #include "run/run_evaluation.h"
 #include "run/run_files.h"
 #include "run/run_simulation.h"
@@ -15,42 +14,26 @@ RunSetup resolveStage(const Scenario& scenario, const RunRequest& request, RunRe
   return resolveRun(scenario, request.plan_as_point_mass);
 }
 
-// The scenario as the pictures and pages describe the run: the renderer reads the controller's
-// name (the report's title) and the trajectory mode (what tracking errors are measured against,
-// render/log_lookup.h) from a Scenario, so it gets a copy with the sections as resolved.
-Scenario describedScenario(const Scenario& scenario, const RunSetup& setup) {
-  Scenario described = scenario;
-  const MotionSections& primary = setup.primarySections();
-  described.controller_name = primary.controller.name;
-  described.trajectory_mode = primary.trajectory.mode;
-  if (setup.primaryKind() == VehicleKind::GroundRobot)
-    described.aerial.trajectory_mode = setup.quadrotor_sections.trajectory.mode;
-  return described;
-}
-
-// The write and render stages, into the request's folder. False if the interrupt flag stopped
-// the rendering: then there is no index.html and no metrics.json, nothing that looks finished.
-bool writeRunFolder(PreparedRun& run, const RunLog& log, const RunSummary& summary) {
+// The write and render stages, into the request's folder, from the record. False if the
+// interrupt flag stopped the rendering: then there is no index.html and no metrics.json, nothing
+// that looks finished.
+bool writeRunFolder(PreparedRun& run, const RunRecord& record) {
   const RunRequest& request = run.request;
   RunReporter& report = run.report;
   report.stage(RunStage::Write);
-  writeRunLogFiles(request.out_dir, run.scenario, log);
-  const Scenario described = describedScenario(run.scenario, run.setup);
+  writeRunLogFiles(request.out_dir, run.scenario, record.log);
   RenderedRun rendered;
   if (run.plan.drivable() && (request.images || request.video)) {
     report.stage(RunStage::Render);
-    rendered = renderRunFiles(run.world, described, log, request, report);
+    rendered = renderRunFiles(run.scenario, record, request, report);
     if (rendered.interrupted) return false;
   }
-  const std::string failure = summary.message;
-  const std::string no_viewer =
-      writeRunViewerFile(request.out_dir, run.world, described, log, failure);
+  const std::string no_viewer = writeRunViewerFile(request.out_dir, run.scenario, record);
   if (no_viewer.empty())
     rendered.viewer = "viewer.html";
   else
     report.warning("viewer.html was not written: " + no_viewer);
-  finishRunFolder(request.out_dir, described, summary.metrics_json, failure, rendered,
-                  request.images);
+  finishRunFolder(request.out_dir, run.scenario, record, rendered, request.images);
   return true;
 }
 
@@ -61,7 +44,8 @@ PreparedRun::PreparedRun(const Scenario& s, const RunRequest& r) try
       request(r),
       report(request.observer),
       setup(resolveStage(s, request, report)),
-      world(WorldModel::build(s)) {
+      shared_world(std::make_shared<const WorldModel>(WorldModel::build(s))),
+      world(*shared_world) {
   if (stopRequestedFor(request)) {
     stopped = true;
     return;
@@ -80,28 +64,18 @@ PreparedRun::PreparedRun(const Scenario& s, const RunRequest& r) try
   throw e.inFile(s.file);  // e.g. a planner's grid too large for the scenario's world
 }
 
-RunSummary summarizeRun(const PreparedRun& run, const RunLog& log) {
-  const RunMetrics metrics = evaluateRun(run.scenario, run.setup, run.world, run.plan, log);
-  RunSummary summary;
-  summary.outcome = metrics.status == 0 ? RunOutcome::Succeeded : RunOutcome::TaskFailed;
-  summary.message = metrics.message;
-  summary.metrics = metrics.vehicles;
-  summary.sim_speed_x = metrics.sim_speed_x;
-  summary.metrics_json =
-      runMetricsJson({run.scenario, run.setup, run.world, run.plan, metrics, log});
-  summary.plans = vehiclePlans(run.scenario, run.setup, run.plan);
-  return summary;
+RunRecord summarizeRun(const PreparedRun& run, RunLog log) {
+  return evaluateRun(run.scenario, run.setup, run.shared_world, run.plan, std::move(log));
 }
 
-RunSummary concludeRun(PreparedRun& run, RunLog log) try {
+RunRecord concludeRun(PreparedRun& run, RunLog log) try {
   run.report.stage(RunStage::Evaluate);
-  RunSummary summary = summarizeRun(run, log);
-  if (log.mujoco_warnings > 0)
-    run.report.warning("MuJoCo reported " + std::to_string(log.mujoco_warnings) +
+  RunRecord record = summarizeRun(run, std::move(log));
+  if (record.log.mujoco_warnings > 0)
+    run.report.warning("MuJoCo reported " + std::to_string(record.log.mujoco_warnings) +
                        " warning(s); see mujoco_warnings in metrics.json");
-  if (!run.request.out_dir.empty() && !writeRunFolder(run, log, summary)) return interruptedRun();
-  summary.log = std::move(log);
-  return summary;
+  if (!run.request.out_dir.empty() && !writeRunFolder(run, record)) return interruptedRun();
+  return record;
 } catch (const InputError& e) {
   throw e.inFile(run.scenario.file);  // e.g. a video of more frames than allowed
 }

@@ -4,11 +4,13 @@
 // stages), and the conclude stage that takes the log the loop made (evaluate -> write -> render).
 // `cosim run` and cosim.run go prepare -> fly -> conclude through executeRun; Python's
 // cosim.Simulation prepares the same way and steps the loop itself (startRunLoop,
-// run/run_simulation.h), with the same evaluation for its metrics (summarizeRun).
+// run/run_simulation.h), with the same evaluation for its record (summarizeRun).
+#include <memory>
+
+#include "run/record/run_setup.h"
 #include "run/run_pilots.h"
 #include "run/run_pipeline.h"
 #include "run/run_plan.h"
-#include "run/run_setup.h"
 #include "sim/run_log.h"
 #include "sim/scenario.h"
 #include "sim/simulation_loop.h"
@@ -28,7 +30,9 @@ struct PreparedRun {
   const RunRequest request;
   RunReporter report;  // to request.observer, for every stage of the run
   RunSetup setup;      // the vehicles' groups and their sections, defaults resolved
-  WorldModel world;
+  // The world, shared with the run's record (run/record/run_record.h).
+  const std::shared_ptr<const WorldModel> shared_world;
+  const WorldModel& world;
   RunPlan plan;
   RunPilots pilots;
   SimulationOptions loop;  // the simulation loop's (run/run_simulation.h runLoopOptions)
@@ -44,14 +48,14 @@ inline PreparedRun prepareRun(const Scenario& scenario, const RunRequest& reques
   return PreparedRun(scenario, request);
 }
 
-// The evaluate stage, silent and writing nothing: the outcome, metrics and metrics.json's
-// object of `log` (a whole run's, or a stepped loop's so far), and each vehicle's plan. The
-// summary's log is left empty.
-RunSummary summarizeRun(const PreparedRun& run, const RunLog& log);
+// The evaluate stage, silent and writing nothing: the run's record of `log` (a whole run's, or
+// a stepped loop's so far; the record keeps it).
+RunRecord summarizeRun(const PreparedRun& run, RunLog log);
 
-// The stages after the simulation: evaluate, then (with an out_dir) write and render. Returns
-// interruptedRun() if the interrupt flag stopped the rendering. Throws InputError for bad input
-// found while rendering (a video of too many frames), in the scenario's file.
-RunSummary concludeRun(PreparedRun& run, RunLog log);
+// The stages after the simulation: evaluate into the run's record, then (with an out_dir) write
+// and render from it. Returns interruptedRun() if the interrupt flag stopped the rendering.
+// Throws InputError for bad input found while rendering (a video of too many frames), in the
+// scenario's file.
+RunRecord concludeRun(PreparedRun& run, RunLog log);
 
 }  // namespace cosim

@@ -11,8 +11,8 @@
 #include "control/quadrotor_params.h"
 #include "control/reference_source.h"
 #include "run/group_plan.h"
+#include "run/record/run_setup.h"
 #include "run/run_events.h"
-#include "run/run_setup.h"
 #include "run/scenario_planning.h"
 #include "sim/world_model.h"
 
@@ -38,8 +38,8 @@ struct QuadrotorPlans {
 // planner and trajectory of `sections` (the team's controller too: its tracking error widens the
 // team's separation). Throws InputError for bad planner or trajectory parameters.
 QuadrotorPlans planQuadrotors(const Scenario& scenario, const MotionSections& sections,
-                              const WorldModel& world,
-                              const std::vector<std::size_t>& vehicles, Planning planning,
-                              const RunRequest& request, const RunReporter& report);
+                              const WorldModel& world, const std::vector<std::size_t>& vehicles,
+                              Planning planning, const RunRequest& request,
+                              const RunReporter& report);
 
 }  // namespace cosim

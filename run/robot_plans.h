@@ -12,7 +12,7 @@
 #include "planning/grid/occupancy_grid.h"
 #include "planning/mapf/mapf_problem.h"
 #include "run/group_plan.h"
-#include "run/run_setup.h"
+#include "run/record/run_setup.h"
 #include "run/scenario_planning.h"
 #include "sim/world_model.h"
 

@@ -7,25 +7,12 @@
 #include "control/piecewise_polynomial_reference.h"
 #include "run/navigation_driver.h"
 #include "run/pooled_metrics.h"
+#include "run/run_end.h"
+#include "run/team_contacts.h"
 
 namespace cosim {
 
 namespace {
-
-// A robot's tracking error is against its timed plan (a time-parametrised reference); a
-// quadrotor's against its trajectory or given reference, or its path when it switches between
-// waypoints.
-std::vector<FlightMetrics> eachVehicle(const Scenario& s, const RunSetup& setup,
-                                       const RunLog& log) {
-  const bool quadrotor_trajectory =
-      setup.quadrotor_sections.trajectory.mode != TrajectoryMode::Waypoints;
-  std::vector<FlightMetrics> each;
-  for (std::size_t v = 0; v < log.vehicles.size(); ++v)
-    each.push_back(computeFlightMetrics(log.vehicles[v], s.world,
-                                        s.vehicles[v].kind == VehicleKind::GroundRobot ||
-                                            quadrotor_trajectory || s.vehicles[v].reference));
-  return each;
-}
 
 RobotSchedule robotSchedule(const RunSetup& setup, const RunPlan& plan, const RunLog& log) {
   RobotSchedule s;
@@ -101,8 +88,9 @@ std::string failureMessage(const Scenario& s, const RunPlan& plan, const RunLog&
   return why;
 }
 
-void evaluateOutcome(const Scenario& s, const RunPlan& plan, const RunLog& log, RunMetrics& m) {
-  m.end = log.end_reason;
+void evaluateOutcome(const Scenario& s, const RunPlan& plan, RunRecord& r) {
+  RunMetrics& m = r.metrics;
+  m.end = r.log.end_reason;
   m.reached_goal = plan.drivable();
   m.min_clearance_m = m.vehicles.empty() ? 0.0 : std::numeric_limits<double>::infinity();
   for (const FlightMetrics& v : m.vehicles) {
@@ -110,30 +98,82 @@ void evaluateOutcome(const Scenario& s, const RunPlan& plan, const RunLog& log, 
     m.min_clearance_m = std::min(m.min_clearance_m, v.min_clearance_m);
   }
   m.collisions = m.contacts.total();
-  m.message = failureMessage(s, plan, log, m);
-  m.status = m.message.empty() ? 0 : 1;
+  r.message = failureMessage(s, plan, r.log, m);
+  r.outcome = r.message.empty() ? RunOutcome::Succeeded : RunOutcome::TaskFailed;
+}
+
+PlanFigures planFigures(const RunSetup& setup, const RunPlan& plan) {
+  PlanFigures f;
+  f.primary = plan.primarySummary(setup);
+  f.robot_inflation = plan.robots.summary.inflation;
+  f.quadrotor_inflation = plan.quadrotors.summary.inflation;
+  f.cruise_speed_mps = plan.robots.cruise_speed;
+  f.trajectory_counters = plan.quadrotors.trajectory_counters;
+  return f;
 }
 
 }  // namespace
 
-RunMetrics evaluateRun(const Scenario& scenario, const RunSetup& setup, const WorldModel& world,
-                       const RunPlan& plan, const RunLog& log) {
-  RunMetrics m;
-  m.sim_speed_x = log.wall_time > 0 ? log.sim_time / log.wall_time : 0.0;
-  m.vehicles = eachVehicle(scenario, setup, log);
-  std::vector<VehicleKind> kinds(log.vehicles.size());
-  for (std::size_t v = 0; v < kinds.size(); ++v) kinds[v] = scenario.vehicles[v].kind;
-  m.contacts = teamContacts(log, kinds);
-  m.team = poolFlightMetrics(m.vehicles, log, setup.primary());
+FlightMetrics evaluateReferenceFlight(const Scenario& s, const RunLog& log) {
+  return computeFlightMetrics(log.vehicles.at(0), s.world, ErrorReference::Trajectory);
+}
+
+void trackVehicles(const RunSetup& setup, const RunLog& log, RunMetrics& m) {
+  m.tracking_errors.clear();
+  for (std::size_t v = 0; v < log.vehicles.size(); ++v)
+    m.tracking_errors.push_back(trackingErrors(log.vehicles[v], setup.vehicles[v].error_reference));
+}
+
+void evaluateVehicles(const Scenario& s, const RunSetup& setup, const RunLog& log, RunMetrics& m) {
+  m.vehicles.clear();
+  for (std::size_t v = 0; v < log.vehicles.size(); ++v)
+    m.vehicles.push_back(
+        computeFlightMetrics(log.vehicles[v], s.world, setup.vehicles[v].error_reference));
+  trackVehicles(setup, log, m);
+}
+
+RunRecord recordOfLog(const Scenario& scenario, RunLog log,
+                      std::shared_ptr<const WorldModel> world) {
+  RunRecord r;
+  r.setup = resolveRun(scenario, false);
+  r.log = std::move(log);
+  r.world = std::move(world);
+  evaluateVehicles(scenario, r.setup, r.log, r.metrics);
+  return r;
+}
+
+RunRecord recordOfLog(const Scenario& scenario, RunLog log, const WorldModel& world) {
+  // Not owned: the aliasing constructor with an empty owner.
+  return recordOfLog(
+      scenario, std::move(log),
+      std::shared_ptr<const WorldModel>(std::shared_ptr<const WorldModel>(), &world));
+}
+
+RunRecord evaluateRun(const Scenario& scenario, const RunSetup& setup,
+                      const std::shared_ptr<const WorldModel>& world, const RunPlan& plan,
+                      RunLog log) {
+  RunRecord r;
+  r.setup = setup;
+  r.plans = vehiclePlans(scenario, setup, plan);
+  r.planning = planFigures(setup, plan);
+  r.world = world;
+  r.log = std::move(log);
+  RunMetrics& m = r.metrics;
+  m.sim_speed_x = r.log.wall_time > 0 ? r.log.sim_time / r.log.wall_time : 0.0;
+  evaluateVehicles(scenario, setup, r.log, m);
+  std::vector<VehicleKind> kinds(r.log.vehicles.size());
+  for (std::size_t v = 0; v < kinds.size(); ++v) kinds[v] = setup.vehicles[v].kind;
+  m.contacts = teamContacts(r.log, kinds);
+  m.team = poolFlightMetrics(m.vehicles, r.log, setup.primary());
   if (setup.primaryKind() == VehicleKind::GroundRobot) {
-    m.uavs = poolFlightMetrics(m.vehicles, log, setup.quadrotors);
-    m.schedule = robotSchedule(setup, plan, log);
+    m.uavs = poolFlightMetrics(m.vehicles, r.log, setup.quadrotors);
+    m.schedule = robotSchedule(setup, plan, r.log);
   }
-  m.separation = separation(setup, world, log);
+  m.separation = separation(setup, *world, r.log);
   for (std::size_t v : setup.quadrotors)
-    m.longest_saturation_s = std::max(m.longest_saturation_s, longestSaturation(log.vehicles[v]));
-  evaluateOutcome(scenario, plan, log, m);
-  return m;
+    m.longest_saturation_s = std::max(m.longest_saturation_s, longestSaturation(r.log.vehicles[v]));
+  evaluateOutcome(scenario, plan, r);
+  return r;
 }
 
 }  // namespace cosim

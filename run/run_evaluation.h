@@ -2,50 +2,40 @@
 // The evaluation stage of a run, from its log alone (and the plan's timing): every vehicle's
 // flight metrics (sim/flight_metrics.h), the team's pooled figures (run/pooled_metrics.h), its
 // contacts (run/team_contacts.h), the quadrotors' separation (sim/uav_separation_metrics.h), the
-// robots' arrivals against their timed plans, and the run's outcome: status and message.
-#include <optional>
-#include <string>
-#include <vector>
+// robots' arrivals against their timed plans, and the run's outcome and message.
+#include <memory>
 
-#include "run/run_end.h"
+#include "run/record/run_record.h"
 #include "run/run_plan.h"
-#include "run/team_contacts.h"
-#include "sim/flight_metrics.h"
-#include "sim/run_log.h"
-#include "sim/uav_separation_metrics.h"
 
 namespace cosim {
 
-// The robots' arrivals against their timed plans (runs with ground robots).
-struct RobotSchedule {
-  std::vector<double> planned_arrival_s;  // per robot: its timed plan's end, -1 if not planned
-  double planned_makespan_s = 0.0;
-  double executed_makespan_s = 0.0;     // latest arrival (robots that arrived)
-  double sum_of_arrival_times_s = 0.0;  // robots that arrived
-};
+// The evaluate stage: the run's record, with `log` in it (the setup, the plans and the planner's
+// figures, every metric, the outcome and its message). The only place a run's metrics are
+// computed.
+RunRecord evaluateRun(const Scenario& scenario, const RunSetup& setup,
+                      const std::shared_ptr<const WorldModel>& world, const RunPlan& plan,
+                      RunLog log);
 
-struct RunMetrics {
-  std::vector<FlightMetrics> vehicles;  // one per vehicle, in the scenario's order
-  // The top-level sections' vehicles (RunSetup::primary) pooled: metrics.json's top-level
-  // tracking figures. A team is reported as a whole, a single vehicle as itself.
-  FlightMetrics team;
-  FlightMetrics uavs;  // the quadrotors over ground robots pooled (runs with both)
-  TeamContacts contacts;
-  std::optional<UavSeparationMetrics> separation;  // two or more quadrotors
-  double longest_saturation_s = 0.0;               // of any quadrotor
-  RobotSchedule schedule;
+// Each vehicle's flight metrics and per-sample tracking errors against its error reference
+// (setup.vehicles), into `metrics`.
+void evaluateVehicles(const Scenario& scenario, const RunSetup& setup, const RunLog& log,
+                      RunMetrics& metrics);
 
-  // Outcome figures count every vehicle of the run.
-  bool reached_goal = false;  // every vehicle reached its goal (and the plan could be driven)
-  int collisions = 0;         // contacts, each touching pair once (TeamContacts::total)
-  double min_clearance_m = 0.0;
-  RunEnd end = RunEnd::Goal;
-  int status = 0;       // the exit status: 0 ok, 1 task failed
-  std::string message;  // why the task failed
-  double sim_speed_x = 0.0;
-};
+// The flight metrics of a reference flight's vehicle (run/given_reference_flight.h): it flies a
+// reference in time, so its error is measured against that trajectory.
+FlightMetrics evaluateReferenceFlight(const Scenario& scenario, const RunLog& log);
 
-RunMetrics evaluateRun(const Scenario& scenario, const RunSetup& setup, const WorldModel& world,
-                       const RunPlan& plan, const RunLog& log);
+// Each vehicle's per-sample tracking errors against its error reference, into `metrics`: they
+// depend on the logged samples alone.
+void trackVehicles(const RunSetup& setup, const RunLog& log, RunMetrics& metrics);
+
+// The record of a log the pipeline did not fly (a benchmark's or a test's hand-made flight):
+// the setup resolved from `scenario` as a run resolves it, `log`, and each vehicle's flight
+// metrics and tracking errors (evaluateVehicles). No plans, no pooled figures, outcome Succeeded.
+// `world` is shared; the reference form does not own it (it must outlive the record).
+RunRecord recordOfLog(const Scenario& scenario, RunLog log,
+                      std::shared_ptr<const WorldModel> world);
+RunRecord recordOfLog(const Scenario& scenario, RunLog log, const WorldModel& world);
 
 }  // namespace cosim

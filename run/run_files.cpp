@@ -5,6 +5,7 @@
 #include "core/output_manifest.h"
 #include "render/run_outputs.h"
 #include "render/viewer_page.h"
+#include "run/metrics_json.h"
 #include "run/run_pipeline.h"
 #include "sim/run_log_io.h"
 
@@ -23,6 +24,16 @@ const std::vector<std::string> kRunReplacedNames = {"scenario.yaml", "run.json"}
 void clearRunFolder(const std::filesystem::path& dir, const std::string& option) {
   for (const std::string& name : kRunReplacedNames) requireCosimOutput(dir / name, option);
   removeStaleResults(dir, kRunResultNames, option);
+}
+
+RunFolderSession::RunFolderSession(const std::string& out, const std::string& option) {
+  if (!out.empty() && std::filesystem::is_directory(out)) {
+    lock_.acquire(out, option);
+    clearRunFolder(out, option);
+  }
+  dir_ = prepareOutputDir(out, "run");
+  lock_.acquire(dir_, option);
+  manifest_.emplace(dir_, "run");
 }
 
 void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario,
@@ -59,7 +70,7 @@ void writeRunLogFiles(const std::filesystem::path& dir, const Scenario& scenario
     writeFileAtomically(dir / "moving_obstacles.csv", movingObstaclesCsv(log));
 }
 
-RenderedRun renderRunFiles(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+RenderedRun renderRunFiles(const Scenario& scenario, const RunRecord& record,
                            const RunRequest& request, const RunReporter& report) {
   RunRenderRequest r;
   r.images = request.images;
@@ -70,21 +81,19 @@ RenderedRun renderRunFiles(const WorldModel& world, const Scenario& scenario, co
     report.progress(what, done, total);
   };
   r.on_warning = [&report](const std::string& text) { report.warning(text); };
-  return renderRunOutputs(world, scenario, log, request.out_dir, r);
+  return renderRunOutputs(scenario, record, request.out_dir, r);
 }
 
-std::string writeRunViewerFile(const std::filesystem::path& dir, const WorldModel& world,
-                               const Scenario& scenario, const RunLog& log,
-                               const std::string& failure) {
-  const std::string status = failure.empty() ? "Every vehicle reached its goal without a collision."
-                                             : "The run failed its task: " + failure;
-  return writeRunViewer(dir, world, scenario, log, runReportTitle(scenario), status);
+std::string writeRunViewerFile(const std::filesystem::path& dir, const Scenario& scenario,
+                               const RunRecord& record) {
+  return writeRunViewer(dir, *record.world, scenario, record.log, runTitle(scenario, record),
+                        runStatusLine(record));
 }
 
 void finishRunFolder(const std::filesystem::path& dir, const Scenario& scenario,
-                     const JsonObject& metrics, const std::string& failure,
-                     const RenderedRun& rendered, bool report_page) {
-  if (report_page) writeRunReport(dir, scenario, metrics.str(), failure, rendered);
+                     const RunRecord& record, const RenderedRun& rendered, bool report_page) {
+  const JsonObject metrics = runMetricsJson(scenario, record);
+  if (report_page) writeRunReport(dir, scenario, record, metrics, rendered);
   writeFileAtomically(dir / "metrics.json", metrics.str() + "\n");
 }
 

@@ -157,8 +157,10 @@ json stateMessage(const LogSample& s, double max_thrust) {
 
 }  // namespace
 
-McapExport runToMcap(const WorldModel& world, const Scenario& scenario, const RunLog& log,
-                     double rate, const std::string& library) {
+McapExport runToMcap(const Scenario& scenario, const RunRecord& record, double rate,
+                     const std::string& library) {
+  const WorldModel& world = *record.world;
+  const RunLog& log = record.log;
   McapWriter w("", library);
   const auto schema = [&](const json& s) {
     return w.addSchema(s["title"].get<std::string>(), "jsonschema", s.dump());

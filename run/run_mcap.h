@@ -12,9 +12,8 @@
 #include <cstdint>
 #include <string>
 
-#include "sim/run_log.h"
+#include "run/record/run_record.h"
 #include "sim/scenario.h"
-#include "sim/world_model.h"
 
 namespace cosim {
 
@@ -24,9 +23,10 @@ struct McapExport {
   int channels = 0;
 };
 
-// rate: samples per second of /tf and the state topics (0: every logged sample). library: the
-// writer named in the file's Header ("cosim 0.1.0").
-McapExport runToMcap(const WorldModel& world, const Scenario& scenario, const RunLog& log,
-                     double rate, const std::string& library);
+// The record of a run of `scenario` (its world and log). rate: samples per second of /tf and the
+// state topics (0: every logged sample). library: the writer named in the file's Header
+// ("cosim 0.1.0").
+McapExport runToMcap(const Scenario& scenario, const RunRecord& record, double rate,
+                     const std::string& library);
 
 }  // namespace cosim

@@ -9,14 +9,14 @@ bool stopRequestedFor(const RunRequest& request) {
   return request.interrupt && request.interrupt->load();
 }
 
-RunSummary interruptedRun() {
-  RunSummary s;
+RunRecord interruptedRun() {
+  RunRecord s;
   s.outcome = RunOutcome::Interrupted;
   s.message = "interrupted";
   return s;
 }
 
-RunSummary executeRun(const Scenario& scenario, const RunRequest& request) {
+RunRecord executeRun(const Scenario& scenario, const RunRequest& request) {
   PreparedRun run = prepareRun(scenario, request);
   if (run.stopped) return interruptedRun();
   RunLog log = flyRun(run);

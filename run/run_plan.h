@@ -7,9 +7,9 @@
 
 #include "run/group_plan.h"
 #include "run/quadrotor_plans.h"
+#include "run/record/run_setup.h"
 #include "run/robot_plans.h"
 #include "run/run_events.h"
-#include "run/run_setup.h"
 
 namespace cosim {
 

@@ -23,14 +23,24 @@ double trackingEnd(const VehicleLog& log) {
   return log.samples.empty() ? 0.0 : log.samples.back().t;
 }
 
+std::vector<double> trackingErrors(const VehicleLog& v, ErrorReference reference) {
+  std::vector<double> e;
+  e.reserve(v.samples.size());
+  const bool to_path = reference == ErrorReference::PlannedPath && v.planned_path.size() >= 2;
+  for (const LogSample& s : v.samples)
+    e.push_back(to_path ? distanceToPolyline(s.pos, v.planned_path) : (s.pos - s.ref_pos).norm());
+  return e;
+}
+
 FlightMetrics computeFlightMetrics(const VehicleLog& log, const World& world,
-                                   bool error_against_trajectory) {
+                                   ErrorReference reference) {
+  const bool error_against_trajectory = reference != ErrorReference::PlannedPath;
   FlightMetrics m;
   m.reached_goal = log.reached_goal;
   m.collisions = static_cast<int>(log.collisions.size());
   for (std::size_t i = 1; i < log.planned_path.size(); ++i)
     m.planned_length_m += (log.planned_path[i] - log.planned_path[i - 1]).norm();
-  m.error_reference = error_against_trajectory ? "trajectory" : "path";
+  m.error_reference = reference;
   if (log.samples.empty()) return m;
 
   const double t_end = log.reached_goal ? log.arrival_time : log.samples.back().t;
@@ -49,7 +59,8 @@ FlightMetrics computeFlightMetrics(const VehicleLog& log, const World& world,
     }
     m.max_speed_mps = std::max(m.max_speed_mps, s.vel.norm());
     if (log.max_thrust > 0)
-      m.peak_thrust_fraction = std::max(m.peak_thrust_fraction, s.rotor_thrust.maxCoeff() / log.max_thrust);
+      m.peak_thrust_fraction =
+          std::max(m.peak_thrust_fraction, s.rotor_thrust.maxCoeff() / log.max_thrust);
     saturated += s.saturated ? 1 : 0;
     estimation_sq += (s.est_pos - s.pos).squaredNorm();
     // Clearance over the whole run (hovering at the goal can be close to something too).

@@ -6,6 +6,7 @@
 
 #include "experiments/bench/bare_replay.h"
 #include "run/given_reference_flight.h"
+#include "run/run_evaluation.h"
 #include "sim/flight_metrics.h"
 #include "sim/flight_simulation.h"
 
@@ -56,7 +57,7 @@ FlightSet measureFlights(const Scenario& s, int flights) {
     out.bare_s += bare;
     out.sim_s += log.sim_time;
     out.steps += log.physics_steps;
-    out.rmse = computeFlightMetrics(log.vehicles[0], s.world, true).rmse_m;
+    out.rmse = evaluateReferenceFlight(s, log).rmse_m;
   }
   std::sort(ratios.begin(), ratios.end());
   out.ratio = ratios[ratios.size() / 2];

@@ -11,6 +11,7 @@
 #include "render/ordered_frame_workers.h"
 #include "render/run_outputs.h"
 #include "render/run_renderer.h"
+#include "run/run_evaluation.h"
 #include "sim/world_model.h"
 
 namespace cosim::bench {
@@ -137,9 +138,8 @@ double fullPipelineSeconds(const RenderBenchSetup& b) {
   const int width = b.width, height = b.height, frames = b.frames;
   const std::filesystem::path& video = b.video;
   const Scenario& s = b.s;
-  const RunLog& log = b.log;
-  const WorldModel& world = b.world;
-  RunRenderer renderer(world, s, log, width, height);
+  const RunRecord record = recordOfLog(s, b.log, b.world);
+  RunRenderer renderer(s, record, width, height);
   std::vector<std::uint8_t> rgb;
   const auto t0 = std::chrono::steady_clock::now();
   VideoEncoder encoder(video, width, height, 30);
@@ -159,12 +159,11 @@ double parallelPipelineSeconds(const RenderBenchSetup& b, int workers) {
   const int width = b.width, height = b.height, frames = b.frames;
   const std::filesystem::path& video = b.video;
   const Scenario& s = b.s;
-  const RunLog& log = b.log;
-  const WorldModel& world = b.world;
+  const RunRecord record = recordOfLog(s, b.log, b.world);
   const FrameSequence sequence{CameraKind::Chase, frames, 1.0 / 30.0, width, height, 10.0};
   const auto t0 = std::chrono::steady_clock::now();
   VideoEncoder encoder(video, width, height, 30);
-  renderFramesInOrder(world, s, log, sequence, workers,
+  renderFramesInOrder(s, record, sequence, workers,
                       [&](std::vector<std::uint8_t>& rgb) { encoder.addFrame(rgb); });
   encoder.finish();
   const double elapsed = seconds(t0);

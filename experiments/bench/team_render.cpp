@@ -6,6 +6,7 @@
 #include <string>
 
 #include "render/run_renderer.h"
+#include "run/run_evaluation.h"
 #include "sim/world_model.h"
 
 namespace cosim::bench {
@@ -63,7 +64,8 @@ struct RenderTiming {
 
 RenderTiming measure(const WorldModel& world, const Scenario& s, const RunLog& log, int width,
                      int height, int frames) {
-  RunRenderer renderer(world, s, log, width, height);
+  const RunRecord record = recordOfLog(s, log, world);
+  RunRenderer renderer(s, record, width, height);
   std::vector<std::uint8_t> rgb;
   renderer.render(1.0, CameraKind::Overview, rgb);  // warm-up: textures, trail decimation
   RenderTiming m;

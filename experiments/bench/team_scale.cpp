@@ -141,9 +141,9 @@ double loopRate(Scenario s, int n, int threads, LoopProfile& profile) {
   request.images = false;
   request.loop_threads = threads;
   request.profile = &profile;
-  const RunSummary run = executeRun(s, request);
+  const RunRecord run = executeRun(s, request);
   std::filesystem::remove_all(request.out_dir);
-  return run.sim_speed_x;
+  return run.metrics.sim_speed_x;
 }
 
 }  // namespace

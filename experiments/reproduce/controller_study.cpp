@@ -12,16 +12,16 @@
 #include <iterator>
 #include <sstream>
 
-#include "control/controller_factory.h"
 #include "control/figure_eight_reference.h"
 #include "core/atomic_file.h"
 #include "core/json_writer.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
 #include "render/gnuplot.h"
+#include "run/given_reference_flight.h"
+#include "run/run_evaluation.h"
 #include "sim/flight_metrics.h"
 #include "sim/flight_simulation.h"
-#include "sim/model_error.h"
 #include "sim/sensors/sensor_presets.h"
 #include "sim/world_model.h"
 
@@ -80,22 +80,18 @@ StudyRow fly(const StudyController& c, double speed, const Options& options) {
   FigureEightReference reference(shape);
   const Scenario s = studyScenario(shape, reference.duration() + 5.0, options.seed);
   const WorldModel world = WorldModel::build(s);
-  const QuadrotorParams believed = believedAirframe(world.vehicles()[0].params, s.model_error);
-  ParamSet gains("controller-study");
-  std::unique_ptr<FlightController> controller =
-      makeFlightController(c.name, gains, believed, c.drag_compensation);
-  std::vector<VehiclePilot> pilots(1);
-  pilots[0].controller = controller.get();
-  pilots[0].reference = &reference;
-  pilots[0].goal = shape.centre;
-  pilots[0].believed_airframe = &believed;
+  // The study's controller with its default gains, flown as a run flies a reference.
+  ControllerSection controller;
+  controller.name = c.name;
+  controller.drag_compensation = c.drag_compensation;
+  controller.gains = ParamSet("controller-study");
   FlightOptions flight;
   flight.settings = s.sim;
-  const RunLog log = simulateFlight(world, s, pilots, flight);
+  const RunLog log = flyReference(s, world, controller, {&reference, shape.centre, -1.0}, flight);
   StudyRow row;
   row.controller = c.label;
   row.speed = speed;
-  row.metrics = computeFlightMetrics(log.vehicles[0], s.world, true);
+  row.metrics = evaluateReferenceFlight(s, log);
   row.end_reason = log.end_reason;
   return row;
 }

@@ -31,6 +31,7 @@
 #include "experiments/reproduce/reproduction.h"
 #include "render/comparison_chart.h"
 #include "run/given_reference_flight.h"
+#include "run/run_evaluation.h"
 #include "sim/flight_metrics.h"
 #include "sim/flight_simulation.h"
 #include "sim/world_model.h"
@@ -104,7 +105,7 @@ Figure8Row fly(const FigureEightVariant& v, double timescale, const Options& opt
   row.controller = v.label;
   row.timescale = timescale;
   row.end_reason = log.end_reason;
-  const FlightMetrics m = computeFlightMetrics(log.vehicles[0], s.world, true);
+  const FlightMetrics m = evaluateReferenceFlight(s, log);
   row.rmse = m.rmse_m;
   row.max_error = m.max_error_m;
   for (const LogSample& x : log.vehicles[0].samples)

@@ -96,11 +96,6 @@ std::string flightMap(const Options& options, const std::vector<MapPath>& planne
 }
 
 // How the run ended ("goal", "max_time", "saturated", ...): metrics.json's end_reason.
-std::string endReason(const std::filesystem::path& metrics_json) {
-  const nlohmann::ordered_json metrics = readJsonFile(metrics_json);
-  return metrics.value("end_reason", std::string("?"));
-}
-
 // The two planners' settings: the thesis's point-mass plan and ours.
 std::vector<PathSetting> flightPaths() {
   // RRT*FN: parameter set 4 with cap 400 (step 4 m, radius 6 m, 2000 nodes, mode 2: its Tab. 17,
@@ -218,10 +213,10 @@ JsonObject flyOne(const Options& options, const PathSetting& path, const Pipelin
   request.video = false;
   request.images = !options.quick;
   request.plan_as_point_mass = p.point_mass;
-  const RunSummary r = executeRun(scenario, request);
-  const FlightMetrics& f = r.metrics.front();
+  const RunRecord r = executeRun(scenario, request);
+  const FlightMetrics& f = r.metrics.vehicles.front();
   const double plan_clearance = planClearance(request.out_dir / "path.csv", scenario.world);
-  const std::string ended = endReason(request.out_dir / "metrics.json");
+  const std::string ended = runEndName(r.log.end_reason);
   const bool intrudes = f.collisions > 0 || f.min_clearance_m < 0.0;
   const std::string pipeline = p.name;
   if (pipeline == "thesis") {

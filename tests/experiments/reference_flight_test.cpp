@@ -23,7 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Flown {
-  RunSummary summary;
+  RunRecord summary;
   nlohmann::json metrics;
   std::vector<std::vector<double>> rows;  // timeseries.csv's t, ref_x, ref_y, ref_z, x, y, z
   Scenario scenario;

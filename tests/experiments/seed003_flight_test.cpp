@@ -22,9 +22,9 @@ FlightMetrics fly20s(const std::vector<std::string>& overrides, bool point_mass,
   request.video = false;
   request.images = false;
   request.plan_as_point_mass = point_mass;
-  const RunSummary r = executeRun(s, request);
+  const RunRecord r = executeRun(s, request);
   std::filesystem::remove_all(request.out_dir);
-  return r.metrics.front();
+  return r.metrics.vehicles.front();
 }
 
 TEST(Seed003Flight, ThesisPipelineIntrudesAndOursStaysClear) {

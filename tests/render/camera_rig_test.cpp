@@ -5,6 +5,7 @@
 
 #include "render/run_renderer.h"
 #include "render_test_scene.h"
+#include "run/run_evaluation.h"
 #include "sim/world_model.h"
 
 using namespace cosim;
@@ -38,7 +39,8 @@ TEST(CameraRig, TopViewIsNearlyOrthographicAndFitsTheWorld) {
   const Scenario s = renderTestScenario(320, 180);
   const WorldModel world = WorldModel::build(s);
   const RunLog log = straightFlightLog(2.0);
-  RunRenderer renderer(world, s, log, 320, 180);
+  const RunRecord renderer_record = recordOfLog(s, log, world);
+  RunRenderer renderer(s, renderer_record, 320, 180);
   std::vector<std::uint8_t> rgb;
   renderer.render(1.0, "top", rgb, false);
   Eigen::Vector2d lo, hi, high_point, low_point;
@@ -92,7 +94,8 @@ TEST(CameraRig, OverviewFramesTheWorldAndEveryStartAndGoalWithAMargin) {
   log.vehicles[0].goal = {19, 19, 0.5};
   log.vehicles[0].planned_path.back() = {19, 19, 0.5};
   const WorldModel world = WorldModel::build(s);
-  RunRenderer renderer(world, s, log, 320, 180);
+  const RunRecord renderer_record = recordOfLog(s, log, world);
+  RunRenderer renderer(s, renderer_record, 320, 180);
   std::vector<std::uint8_t> rgb;
   renderer.render(renderer.endTime(), "overview", rgb, false);
   std::vector<Eigen::Vector3d> points = {{3, 3, 2}, {19, 19, 0.5}};

@@ -9,6 +9,7 @@
 #include "render/comparison_chart.h"
 #include "render/gnuplot.h"
 #include "render_test_scene.h"
+#include "run/run_evaluation.h"
 
 using namespace cosim;
 using namespace cosim::test;
@@ -33,7 +34,8 @@ TEST(Figures, RunFiguresAreWrittenAsPngAndSvgWithTheirContent) {
   const auto dir = makeFreshDir("figures");
   const Scenario s = renderTestScenario();
   const RunLog log = straightFlightLog(3.0, 0.25);
-  const std::vector<std::string> names = writeRunFigures(log, s, dir / "figures");
+  const std::vector<std::string> names =
+      writeRunFigures(s, recordOfLog(s, log, nullptr), dir / "figures");
   EXPECT_EQ(names, (std::vector<std::string>{"error", "top", "side"}));
   EXPECT_EQ(pngSize(dir / "figures" / "error.png"), std::make_pair(1000, 480));
   // Equal axes: the square 20 x 20 m world gets a canvas about as tall as wide.
@@ -108,7 +110,7 @@ TEST(Figures, TeamPathFiguresShowFlownPathsAndTheirPlansOnlyWhenAsked) {
   RunLog log = straightFlightLog(3.0, 0.25);
   log.vehicles.push_back(log.vehicles[0]);
   log.vehicles[1].name = "uav2";
-  writeRunFigures(log, s, dir / "flown");
+  writeRunFigures(s, recordOfLog(s, log, nullptr), dir / "flown");
   const std::string flown = slurp(dir / "flown" / "top.svg");
   // A grid plan's right angles are not drawn; the key names each kind of line once.
   EXPECT_EQ(flown.find("planned path"), std::string::npos);
@@ -117,7 +119,7 @@ TEST(Figures, TeamPathFiguresShowFlownPathsAndTheirPlansOnlyWhenAsked) {
   EXPECT_NE(flown.find("flown paths (colour: tracking error)"), std::string::npos);
   EXPECT_EQ(flown.find("uav2"), std::string::npos);
   s.render.team_plans = true;
-  writeRunFigures(log, s, dir / "plans");
+  writeRunFigures(s, recordOfLog(s, log, nullptr), dir / "plans");
   const std::string plans = slurp(dir / "plans" / "top.svg");
   EXPECT_NE(plans.find("planned paths (one colour each)"), std::string::npos);
   EXPECT_NE(plans.find(">reference trajectory<"), std::string::npos);

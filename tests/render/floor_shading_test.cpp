@@ -4,6 +4,7 @@
 
 #include "render/run_renderer.h"
 #include "render_test_scene.h"
+#include "run/run_evaluation.h"
 #include "sim/world_model.h"
 
 using namespace cosim;
@@ -32,7 +33,8 @@ TEST(FloorShading, NeitherCheckerSquareSaturatesFromAbove) {
   log.vehicles[0].planned_path = {{1, 1, 2}, {1.1, 1, 2}};
   log.vehicles[0].goal = {1.1, 1, 2};
   const WorldModel world = WorldModel::build(s);
-  RunRenderer renderer(world, s, log, 320, 180);
+  const RunRecord renderer_record = recordOfLog(s, log, world);
+  RunRenderer renderer(s, renderer_record, 320, 180);
   std::vector<std::uint8_t> rgb;
   for (const char* camera : {"top", "overview"}) {
     renderer.render(0.5, camera, rgb, false);

@@ -5,6 +5,7 @@
 
 #include "render/run_outputs.h"
 #include "render_test_scene.h"
+#include "run/run_evaluation.h"
 
 using namespace cosim;
 using namespace cosim::test;
@@ -46,9 +47,11 @@ TEST(HtmlReport, RunReportLoadsEveryVideoAndFigureInHeadlessChromium) {
   const RunLog log = straightFlightLog(1.0);
   const WorldModel world = WorldModel::build(s);
   RunRenderRequest request;
-  const RenderedRun rendered = renderRunOutputs(world, s, log, dir, request);
+  const RunRecord record = recordOfLog(s, log, world);
+  const RenderedRun rendered = renderRunOutputs(s, record, dir, request);
   EXPECT_EQ(rendered.videos, (std::vector<std::string>{"video.mp4", "video_top.mp4"}));
-  writeRunReport(dir, s, R"({"reached_goal": true, "rmse_m": 0.0123})", "", rendered);
+  writeRunReport(dir, s, record, JsonObject().add("reached_goal", true).add("rmse_m", 0.0123),
+                 rendered);
   const std::string dom = dumpDom(browser, dir / "index.html");
   ASSERT_FALSE(dom.empty()) << "Chromium did not run";
   EXPECT_NE(dom.find("data-media=\"loaded\""), std::string::npos) << dom.substr(0, 3000);

@@ -5,6 +5,7 @@
 
 #include "render/run_renderer.h"
 #include "render_test_scene.h"
+#include "run/run_evaluation.h"
 #include "sim/world_model.h"
 
 using namespace cosim;
@@ -17,15 +18,17 @@ TEST(OrderedFrameWorkers, ThreeWorkersDeliverExactlyTheSingleRendererFramesInOrd
   const FrameSequence sequence{CameraKind::Chase, 7, 0.3, 160, 90};
   std::vector<std::vector<std::uint8_t>> expected;
   {
-    RunRenderer one(world, s, log, 160, 90);
+    const RunRecord one_record = recordOfLog(s, log, world);
+    RunRenderer one(s, one_record, 160, 90);
     for (int k = 0; k < sequence.frames; ++k)
       one.render(k * sequence.seconds_per_frame, sequence.camera, expected.emplace_back());
   }
   // The frames differ from each other (the vehicle moves), so an order mix-up would show.
   ASSERT_NE(expected[0], expected[6]);
   std::vector<std::vector<std::uint8_t>> got;
+  const RunRecord record = recordOfLog(s, log, world);
   const int delivered = renderFramesInOrder(
-      world, s, log, sequence, 3, [&](std::vector<std::uint8_t>& rgb) { got.push_back(rgb); });
+      s, record, sequence, 3, [&](std::vector<std::uint8_t>& rgb) { got.push_back(rgb); });
   EXPECT_EQ(delivered, 7);
   ASSERT_EQ(got.size(), expected.size());
   for (std::size_t k = 0; k < got.size(); ++k) EXPECT_TRUE(got[k] == expected[k]) << "frame " << k;
@@ -38,8 +41,9 @@ TEST(OrderedFrameWorkers, InterruptStopsTheWorkersBeforeTheEnd) {
   const FrameSequence sequence{CameraKind::Top, 200, 0.01, 160, 90};
   std::atomic<bool> stop{false};
   int seen = 0;
+  const RunRecord record = recordOfLog(s, log, world);
   const int delivered = renderFramesInOrder(
-      world, s, log, sequence, 2,
+      s, record, sequence, 2,
       [&](std::vector<std::uint8_t>&) {
         if (++seen == 3) stop = true;
       },
@@ -52,8 +56,9 @@ TEST(OrderedFrameWorkers, AnErrorInTheConsumerReachesTheCaller) {
   const WorldModel world = WorldModel::build(s);
   const RunLog log = straightFlightLog(1.0);
   const FrameSequence sequence{CameraKind::Top, 10, 0.1, 160, 90};
+  const RunRecord record = recordOfLog(s, log, world);
   EXPECT_THROW(renderFramesInOrder(
-                   world, s, log, sequence, 2,
+                   s, record, sequence, 2,
                    [](std::vector<std::uint8_t>&) { throw std::runtime_error("disk full"); }),
                std::runtime_error);
 }

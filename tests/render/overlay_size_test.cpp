@@ -4,6 +4,7 @@
 
 #include "render/run_renderer.h"
 #include "render_test_scene.h"
+#include "run/run_evaluation.h"
 #include "sim/world_model.h"
 
 using namespace cosim;
@@ -16,7 +17,8 @@ std::vector<double> boxShares(int width, int height) {
   const Scenario s = renderTestScenario(width, height);
   const WorldModel world = WorldModel::build(s);
   const RunLog log = straightFlightLog(2.0);
-  RunRenderer renderer(world, s, log, width, height);
+  const RunRecord renderer_record = recordOfLog(s, log, world);
+  RunRenderer renderer(s, renderer_record, width, height);
   std::vector<std::uint8_t> rgb;
   renderer.render(1.0, "chase", rgb);
   std::vector<double> shares;

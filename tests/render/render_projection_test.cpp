@@ -3,6 +3,7 @@
 
 #include "render/run_renderer.h"
 #include "render_test_scene.h"
+#include "run/run_evaluation.h"
 #include "sim/world_model.h"
 
 using namespace cosim;
@@ -34,7 +35,9 @@ TEST(RenderProjection, PlannedPathPixelsAreWhereThePathProjects) {
   sample.pos = {3, 3, 2};
   v.samples.push_back(sample);
 
-  RunRenderer renderer(world, s, log, 640, 360);
+  const RunRecord renderer_record = recordOfLog(s, log, world);
+
+  RunRenderer renderer(s, renderer_record, 640, 360);
   std::vector<std::uint8_t> rgb;
   renderer.render(0.0, "overview", rgb, /*overlay_text=*/false);
   ASSERT_EQ(rgb.size(), 640u * 360u * 3u);
@@ -98,7 +101,8 @@ TEST(RenderProjection, VehiclePixelsAreWhereTheVehicleProjects) {
     LogSample sample;
     sample.pos = pass == 0 ? A : Eigen::Vector3d(300, 300, -100);
     v.samples.push_back(sample);
-    RunRenderer renderer(world, s, log, 640, 360);
+    const RunRecord renderer_record = recordOfLog(s, log, world);
+    RunRenderer renderer(s, renderer_record, 640, 360);
     renderer.render(0.0, "overview", pass == 0 ? with : without, /*annotate=*/false);
     if (pass == 0) {
       ASSERT_TRUE(renderer.project(A, px));
@@ -140,7 +144,8 @@ TEST(RenderProjection, ChaseCameraKeepsTheVehicleAndThePathAheadInView) {
     sample.pos = Eigen::Vector3d(3, 3, 2) + sample.t * Eigen::Vector3d(3, 1, 0.2);
     v.samples.push_back(sample);
   }
-  RunRenderer renderer(world, s, log, 320, 180);
+  const RunRecord renderer_record = recordOfLog(s, log, world);
+  RunRenderer renderer(s, renderer_record, 320, 180);
   std::vector<std::uint8_t> rgb;
   for (double t : {0.5, 2.0, 3.0}) {
     renderer.render(t, "chase", rgb, false);
@@ -187,7 +192,8 @@ TEST(RenderProjection, HeadingArrowPointsWhereTheVehicleGoes) {
     sample.pos = A;
     sample.vel = {vx, 0.0, 0.0};
     v.samples.push_back(sample);
-    RunRenderer renderer(world, s, log, 640, 360);
+    const RunRecord renderer_record = recordOfLog(s, log, world);
+    RunRenderer renderer(s, renderer_record, 640, 360);
     std::vector<std::uint8_t> rgb;
     renderer.render(0.0, "top", rgb, false);
     Eigen::Vector2d centre, east;

@@ -8,6 +8,7 @@
 
 #include "render/run_renderer.h"
 #include "render_test_scene.h"
+#include "run/run_evaluation.h"
 #include "sim/world_model.h"
 
 using namespace cosim;
@@ -96,7 +97,8 @@ TEST(RibbonBatch, TeamTrailsAreDrawnInTheFrameWithTheirShadowsOnTheFloor) {
     x.pos.y() += 4.0;
     x.ref_pos.y() += 4.0;
   }
-  RunRenderer renderer(world, s, log, 640, 360);
+  const RunRecord renderer_record = recordOfLog(s, log, world);
+  RunRenderer renderer(s, renderer_record, 640, 360);
   std::vector<std::uint8_t> rgb;
   renderer.render(4.0, "top", rgb, /*annotate=*/false);
   EXPECT_EQ(renderer.lastFrameTimings().overlay_geoms, 6);  // goals, markers, arrows

@@ -6,6 +6,7 @@
 
 #include "render/run_outputs.h"
 #include "render_test_scene.h"
+#include "run/run_evaluation.h"
 
 using namespace cosim;
 using namespace cosim::test;
@@ -45,7 +46,8 @@ TEST(VideoOutput, Mp4HasTheExpectedFramesDurationAndBrowserEncoding) {
   s.render.fps = 10;
   const RunLog log = straightFlightLog(2.0);
   const WorldModel world = WorldModel::build(s);
-  RunRenderer renderer(world, s, log, 320, 180);
+  const RunRecord renderer_record = recordOfLog(s, log, world);
+  RunRenderer renderer(s, renderer_record, 320, 180);
   const int frames =
       renderRunVideo(renderer, s.render, CameraKind::Chase, dir / "v.mp4", VideoFormat::Mp4, false);
   EXPECT_EQ(frames, 21);
@@ -73,7 +75,8 @@ TEST(VideoOutput, PngSequenceHasOneNumberedFramePerVideoFrame) {
   s.render.fps = 5;
   const RunLog log = straightFlightLog(1.0);
   const WorldModel world = WorldModel::build(s);
-  RunRenderer renderer(world, s, log, 320, 180);
+  const RunRecord renderer_record = recordOfLog(s, log, world);
+  RunRenderer renderer(s, renderer_record, 320, 180);
   EXPECT_EQ(renderRunVideo(renderer, s.render, CameraKind::Orbit, dir / "frames",
                            VideoFormat::PngSequence, false),
             6);

@@ -28,7 +28,7 @@ bool topOfFrameOnFloor(const CameraPose& p, double floor_z, Eigen::Vector3d& hit
 TEST(ChaseCamera, DefaultRunIsNeverFilmedFromInsideOrBehindAnObstacleOrBeyondTheWorld) {
   Scenario s = loadScenario(std::string(COSIM_SOURCE_DIR) + "/experiments/scenarios/default.yaml");
   std::string metrics;
-  const RunSummary run = test::runWithoutPictures(s, "chase-default", metrics);
+  const RunRecord run = test::runWithoutPictures(s, "chase-default", metrics);
   ASSERT_FALSE(run.log.vehicles.empty());
   const VehicleLog& v = run.log.vehicles.front();
   const CameraRig rig(s, run.log, 16.0 / 9.0);

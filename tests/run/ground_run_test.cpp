@@ -38,13 +38,13 @@ std::string teamScenario(const std::string& planner, bool crossing_straight = fa
   return s;
 }
 
-RunSummary runText(const std::string& text, const std::string& name, std::string& metrics) {
+RunRecord runText(const std::string& text, const std::string& name, std::string& metrics) {
   return test::runWithoutPictures(parseScenario(text, "ground_test.yaml"), name, metrics);
 }
 
 TEST(GroundTeamRun, TenRobotsOnValidCbsPlanHaveNoRobotContacts) {
   std::string metrics;
-  const RunSummary r = runText(teamScenario("cbs"), "ground-team", metrics);
+  const RunRecord r = runText(teamScenario("cbs"), "ground-team", metrics);
   EXPECT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_EQ(test::jsonNumber(metrics, "robots"), 10);
   EXPECT_EQ(test::jsonNumber(metrics, "robot_contacts"), 0);
@@ -81,7 +81,7 @@ TEST(GroundTeamRun, CosimRunDrivesALacamPlanWithoutRobotContacts) {
 TEST(GroundTeamRun, IndependentPathsThroughEachOtherMakeRobotContacts) {
   // Straight across, each robot's own shortest path: the rows meet head-on in the middle.
   std::string metrics;
-  const RunSummary r = runText(teamScenario("independent_astar", true), "ground-clash", metrics);
+  const RunRecord r = runText(teamScenario("independent_astar", true), "ground-clash", metrics);
   EXPECT_EQ(r.exitStatus(), 1);
   EXPECT_GE(test::jsonNumber(metrics, "robot_contacts"), 5);
 }
@@ -94,7 +94,7 @@ TEST(GroundNavigationRun, RnaRobotCrossesBetweenPatrollingCylindersWithoutTouchi
   std::filesystem::create_directories(request.out_dir);
   request.video = false;
   request.images = false;
-  const RunSummary r = executeRun(s, request);
+  const RunRecord r = executeRun(s, request);
   const std::string metrics = test::slurp(request.out_dir / "metrics.json");
   std::filesystem::remove_all(request.out_dir);
   EXPECT_EQ(r.exitStatus(), 0) << r.message;

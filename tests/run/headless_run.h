@@ -9,13 +9,13 @@
 
 namespace cosim::test {
 
-inline RunSummary runWithoutPictures(Scenario s, const std::string& name, std::string& metrics) {
+inline RunRecord runWithoutPictures(Scenario s, const std::string& name, std::string& metrics) {
   RunRequest request;
   request.out_dir = freshDir(name);
   std::filesystem::create_directories(request.out_dir);
   request.video = false;
   request.images = false;
-  const RunSummary summary = executeRun(s, request);
+  const RunRecord summary = executeRun(s, request);
   metrics = slurp(request.out_dir / "metrics.json");
   std::filesystem::remove_all(request.out_dir);
   return summary;

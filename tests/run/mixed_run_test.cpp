@@ -48,8 +48,8 @@ std::string crossing(double height, const std::string& model = "cf2") {
          "sim: {timestep: 0.002, control_rate: 250, max_time: 10}\n";
 }
 
-RunSummary runText(const std::string& text, const std::string& name, std::string& metrics,
-                   const std::vector<std::string>& overrides = {}) {
+RunRecord runText(const std::string& text, const std::string& name, std::string& metrics,
+                  const std::vector<std::string>& overrides = {}) {
   return test::runWithoutPictures(parseScenario(text, "mixed_test.yaml", overrides), name, metrics);
 }
 
@@ -64,7 +64,7 @@ std::string vehicleEntry(const std::string& metrics, const std::string& name) {
 
 TEST(GroundTeamWithUavs, RobotsOnCbsPlanAndQuadrotorsOverheadAllArriveWithoutContacts) {
   std::string metrics;
-  const RunSummary r = runText(kTeamWithUavs, "mixed-team", metrics);
+  const RunRecord r = runText(kTeamWithUavs, "mixed-team", metrics);
   EXPECT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal"));
   EXPECT_EQ(test::jsonNumber(metrics, "robots"), 4);
@@ -91,14 +91,14 @@ TEST(GroundTeamWithUavs, RobotsOnCbsPlanAndQuadrotorsOverheadAllArriveWithoutCon
 
 TEST(GroundTeamWithUavs, QuadrotorCrossingARobotAtItsHeightIsARobotUavContact) {
   std::string low, high;
-  const RunSummary through = runText(crossing(0.06), "mixed-cross-low", low);
+  const RunRecord through = runText(crossing(0.06), "mixed-cross-low", low);
   EXPECT_EQ(through.exitStatus(), 1);
   EXPECT_EQ(through.message, "collision");
   EXPECT_GE(test::jsonNumber(low, "robot_uav_contacts"), 1) << low;
   EXPECT_GE(test::jsonNumber(low, "collisions"), 1);
   EXPECT_GE(test::jsonNumber(vehicleEntry(low, "r0"), "contacts"), 1) << low;
   // The same crossing 0.5 m up passes over the robot.
-  const RunSummary over = runText(crossing(0.5), "mixed-cross-high", high);
+  const RunRecord over = runText(crossing(0.5), "mixed-cross-high", high);
   EXPECT_EQ(over.exitStatus(), 0) << over.message;
   EXPECT_EQ(test::jsonNumber(high, "robot_uav_contacts"), 0);
   EXPECT_EQ(test::jsonNumber(high, "collisions"), 0);
@@ -107,7 +107,7 @@ TEST(GroundTeamWithUavs, QuadrotorCrossingARobotAtItsHeightIsARobotUavContact) {
 TEST(GroundTeamWithUavs, SaturatedQuadrotorEndsTheRunAsAFault) {
   // Absurd position gains on the 1.5 kg quadrotor (as in the flight test of the same fault).
   std::string metrics;
-  const RunSummary r =
+  const RunRecord r =
       runText(crossing(0.8, "quad_1500g"), "mixed-saturated", metrics,
               {"aerial.controller.name=geometric", "aerial.controller.gains.k_x_xy=10000"});
   EXPECT_EQ(r.exitStatus(), 1);
@@ -121,7 +121,7 @@ TEST(GroundTeamWithUavs, SaturatedQuadrotorEndsTheRunAsAFault) {
 
 TEST(GroundTeamWithUavs, BundledScenarioFliesOverTheTeamWithoutContacts) {
   std::string metrics;
-  const RunSummary r =
+  const RunRecord r =
       test::runWithoutPictures(loadScenario(std::string(COSIM_SOURCE_DIR) +
                                             "/experiments/scenarios/ground_team_with_uavs.yaml"),
                                "mixed-bundled", metrics);
@@ -175,7 +175,7 @@ namespace {
 TEST(GroundTeamWithUavs, WindActsOnTheQuadrotorsOnly) {
   std::string calm, windy;
   ASSERT_EQ(runText(kTeamWithUavs, "mixed-calm", calm).exitStatus(), 0);
-  const RunSummary r =
+  const RunRecord r =
       runText(kTeamWithUavs, "mixed-windy", windy,
               {"disturbances.wind=[1.5, 0, 0]", "disturbances.gust=0.3", "disturbances.drag=0.05"});
   EXPECT_EQ(r.exitStatus(), 0) << r.message;

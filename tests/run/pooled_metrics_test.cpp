@@ -33,7 +33,7 @@ TEST(PooledMetrics, ATeamIsPooledOverItsMembersTrackedSamples) {
              .planned_length_m = 2.0,
              .flown_length_m = 2.5,
              .flight_time_s = 0.35,
-             .error_reference = "trajectory",
+             .error_reference = ErrorReference::Trajectory,
              .rmse_m = 0.3,
              .max_error_m = 0.5,
              .min_clearance_m = 0.4,
@@ -47,7 +47,7 @@ TEST(PooledMetrics, ATeamIsPooledOverItsMembersTrackedSamples) {
              .planned_length_m = 4.0,
              .flown_length_m = 3.0,
              .flight_time_s = 0.9,
-             .error_reference = "trajectory",
+             .error_reference = ErrorReference::Trajectory,
              .rmse_m = 0.1,
              .max_error_m = 0.2,
              .min_clearance_m = 0.1,
@@ -72,9 +72,9 @@ TEST(PooledMetrics, ATeamIsPooledOverItsMembersTrackedSamples) {
   EXPECT_DOUBLE_EQ(p.peak_thrust_fraction, 0.9);
   EXPECT_DOUBLE_EQ(p.max_speed_mps, 2.0);
   EXPECT_DOUBLE_EQ(p.min_clearance_m, 0.1);
-  EXPECT_EQ(p.error_reference, "trajectory");
-  each[1].error_reference = "path";
-  EXPECT_EQ(poolFlightMetrics(each, log, {0, 1}).error_reference, "mixed");
+  EXPECT_EQ(p.error_reference, ErrorReference::Trajectory);
+  each[1].error_reference = ErrorReference::PlannedPath;
+  EXPECT_EQ(poolFlightMetrics(each, log, {0, 1}).error_reference, ErrorReference::Mixed);
 }
 
 TEST(PooledMetrics, OneVehicleIsItselfToTheLastBit) {
@@ -83,11 +83,11 @@ TEST(PooledMetrics, OneVehicleIsItselfToTheLastBit) {
   std::vector<FlightMetrics> each(2);
   each[1].rmse_m = 0.1234567890123;
   each[1].estimation_rmse_m = 0.0987654321;
-  each[1].error_reference = "path";
+  each[1].error_reference = ErrorReference::PlannedPath;
   const FlightMetrics p = poolFlightMetrics(each, log, {1});
   EXPECT_EQ(p.rmse_m, each[1].rmse_m);
   EXPECT_EQ(p.estimation_rmse_m, each[1].estimation_rmse_m);
-  EXPECT_EQ(p.error_reference, "path");
+  EXPECT_EQ(p.error_reference, ErrorReference::PlannedPath);
 }
 
 }  // namespace

@@ -28,13 +28,13 @@ std::string crossingTeam(const std::string& planner,
          "sim: {timestep: 0.002, control_rate: 250, max_time: 60}\n";
 }
 
-RunSummary runTeam(const std::string& text, const std::string& name, std::string& metrics) {
+RunRecord runTeam(const std::string& text, const std::string& name, std::string& metrics) {
   return test::runWithoutPictures(parseScenario(text, "team_test.yaml"), name, metrics);
 }
 
 TEST(QuadrotorTeamRun, FourCrossingCf2ArriveWithoutEnteringEachOthersDownwashEllipsoid) {
   std::string metrics;
-  const RunSummary r = runTeam(crossingTeam("{name: lacam, margin: 0.1}"), "team-cf2", metrics);
+  const RunRecord r = runTeam(crossingTeam("{name: lacam, margin: 0.1}"), "team-cf2", metrics);
   ASSERT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal"));
   EXPECT_EQ(test::jsonNumber(metrics, "collisions"), 0);
@@ -50,7 +50,7 @@ TEST(QuadrotorTeamRun, FourCrossingCf2ArriveWithoutEnteringEachOthersDownwashEll
 TEST(QuadrotorTeamRun, ASeparationSmallerThanTheModelsIsCaughtByTheMetrics) {
   // Planned for ellipsoids of 0.1 m x 0.25 m, the pairs pass closer than the cf2's 0.24 x 0.6 m.
   std::string metrics;
-  const RunSummary r =
+  const RunRecord r =
       runTeam(crossingTeam("{name: lacam, margin: 0.1, separation: {radius: 0.1, height: 0.25}}"),
               "team-cf2-small", metrics);
   EXPECT_LT(test::jsonNumber(metrics, "min_uav_separation_m"), 1.0) << r.message;
@@ -59,7 +59,7 @@ TEST(QuadrotorTeamRun, ASeparationSmallerThanTheModelsIsCaughtByTheMetrics) {
 
 TEST(QuadrotorTeamRun, WithoutAControllerSectionATeamFliesIndiAndAWrittenOneIsKept) {
   std::string metrics;
-  RunSummary r = runTeam(crossingTeam("{name: lacam, margin: 0.1}", ""), "team-default", metrics);
+  RunRecord r = runTeam(crossingTeam("{name: lacam, margin: 0.1}", ""), "team-default", metrics);
   ASSERT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_NE(metrics.find("\"controller\": \"indi\""), std::string::npos);
   EXPECT_EQ(test::jsonNumber(metrics, "downwash_violations"), 0);
@@ -112,7 +112,7 @@ std::string denseSwap(const std::string& controller) {
 TEST(QuadrotorTeamRun, ADenseSwapAtHalfAMetreFliesWithoutContactOrDownwashViolation) {
   for (const std::string controller : {"", "controller: {name: cascade}\n"}) {
     std::string metrics;
-    const RunSummary r = runTeam(denseSwap(controller), "team-dense", metrics);
+    const RunRecord r = runTeam(denseSwap(controller), "team-dense", metrics);
     ASSERT_EQ(r.exitStatus(), 0) << controller << r.message;
     EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal")) << controller;
     EXPECT_EQ(test::jsonNumber(metrics, "collisions"), 0) << controller;

@@ -11,7 +11,7 @@ namespace cosim::test {
 namespace {
 
 struct Flight {
-  RunSummary summary;
+  RunRecord summary;
   std::string metrics;
 };
 
@@ -41,7 +41,7 @@ TEST(RealisticFlight, DefaultScenarioFliesOnItsEstimateThroughRotorDrag) {
   std::string metrics;
   const Scenario s =
       loadScenario(std::string(COSIM_SOURCE_DIR) + "/experiments/scenarios/default.yaml");
-  const RunSummary r = runWithoutPictures(s, "default-realistic", metrics);
+  const RunRecord r = runWithoutPictures(s, "default-realistic", metrics);
   ASSERT_EQ(r.exitStatus(), 0) << r.message;
   EXPECT_EQ(jsonNumber(metrics, "collisions"), 0);
   EXPECT_NE(metrics.find("\"sensors\": \"mocap\""), std::string::npos);

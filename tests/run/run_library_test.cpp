@@ -12,8 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include "run/metrics_json.h"
+#include "run/record/run_setup.h"
 #include "run/run_pipeline.h"
-#include "run/run_setup.h"
 #include "sim/run_log_io.h"
 #include "tests/support/json_fields.h"
 #include "tests/support/test_files.h"
@@ -53,14 +54,14 @@ class WorkingFolder {
 };
 
 // Runs with the current folder set to an empty scratch folder, which must stay empty.
-RunSummary runInEmptyFolder(const std::string& text, const std::string& name,
-                            const RunObserver& observer = {}) {
+RunRecord runInEmptyFolder(const std::string& text, const std::string& name,
+                           const RunObserver& observer = {}) {
   Scenario s = parseScenario(text, name + ".yaml");
   const auto scratch = test::freshDir(name);
   std::filesystem::create_directories(scratch);
   RunRequest request;
   request.observer = observer;
-  RunSummary r;
+  RunRecord r;
   {
     const WorkingFolder inside(scratch);
     r = executeRun(s, request);
@@ -71,9 +72,10 @@ RunSummary runInEmptyFolder(const std::string& text, const std::string& name,
 }
 
 TEST(RunLibrary, WithoutAnOutputFolderWritesNothingAndReturnsWhatTheFilesWouldHold) {
-  const RunSummary r = runInEmptyFolder(kTwoCf2, "library-flight");
+  const RunRecord r = runInEmptyFolder(kTwoCf2, "library-flight");
   ASSERT_EQ(r.exitStatus(), 0) << r.message;
-  const std::string metrics = r.metrics_json.str();
+  const std::string metrics =
+      runMetricsJson(parseScenario(kTwoCf2, "library-flight.yaml"), r).str();
   EXPECT_TRUE(test::jsonTrue(metrics, "reached_goal"));
   EXPECT_EQ(test::jsonNumber(metrics, "status"), 0);
   ASSERT_EQ(r.log.vehicles.size(), 2u);
@@ -88,11 +90,11 @@ TEST(RunLibrary, WithoutAnOutputFolderWritesNothingAndReturnsWhatTheFilesWouldHo
 }
 
 TEST(RunLibrary, ATeamsTopLevelFiguresAreTheWholeTeams) {
-  const RunSummary r = runInEmptyFolder(kTwoCf2, "library-team");
+  const RunRecord r = runInEmptyFolder(kTwoCf2, "library-team");
   ASSERT_EQ(r.exitStatus(), 0) << r.message;
-  const std::string metrics = r.metrics_json.str();
-  const FlightMetrics& near = r.metrics[0];
-  const FlightMetrics& far = r.metrics[1];
+  const std::string metrics = runMetricsJson(parseScenario(kTwoCf2, "library-team.yaml"), r).str();
+  const FlightMetrics& near = r.metrics.vehicles[0];
+  const FlightMetrics& far = r.metrics.vehicles[1];
   EXPECT_NEAR(test::jsonNumber(metrics, "planned_length_m"), 6.0, 1e-9);  // 2 m + 4 m
   EXPECT_NEAR(test::jsonNumber(metrics, "flown_length_m"), near.flown_length_m + far.flown_length_m,
               1e-6);
@@ -106,8 +108,8 @@ TEST(RunLibrary, ATeamsTopLevelFiguresAreTheWholeTeams) {
 
 TEST(RunLibrary, AnObserverHearsTheStagesLinesAndNoFilesStages) {
   std::vector<RunEvent> events;
-  const RunSummary r = runInEmptyFolder(kOneRobot, "library-events",
-                                        [&](const RunEvent& e) { events.push_back(e); });
+  const RunRecord r = runInEmptyFolder(kOneRobot, "library-events",
+                                       [&](const RunEvent& e) { events.push_back(e); });
   ASSERT_EQ(r.exitStatus(), 0) << r.message;
   std::vector<RunStage> stages;
   std::vector<std::string> lines;
@@ -127,7 +129,7 @@ TEST(RunLibrary, AnObserverHearsTheStagesLinesAndNoFilesStages) {
 }
 
 TEST(RunLibrary, ARobotsPlanIsItsTimedPath) {
-  const RunSummary r = runInEmptyFolder(kOneRobot, "library-robot");
+  const RunRecord r = runInEmptyFolder(kOneRobot, "library-robot");
   ASSERT_EQ(r.exitStatus(), 0) << r.message;
   ASSERT_EQ(r.plans.size(), 1u);
   const VehiclePlan& p = r.plans[0];
@@ -137,7 +139,7 @@ TEST(RunLibrary, ARobotsPlanIsItsTimedPath) {
   EXPECT_NEAR(p.point_times[2], 10.2, 1e-12);
   ASSERT_EQ(p.path.waypoints.size(), 3u);
   EXPECT_EQ(p.path.waypoints[1], Eigen::Vector3d(2.5, 0.5, 0));
-  EXPECT_NEAR(test::jsonNumber(r.metrics_json.str(), "planned_makespan_s"), 10.2, 1e-9);
+  EXPECT_NEAR(r.metrics.schedule.planned_makespan_s, 10.2, 1e-9);
 }
 
 TEST(RunLibrary, MetricsJsonIsTheObjectWrittenToTheFolder) {
@@ -147,8 +149,8 @@ TEST(RunLibrary, MetricsJsonIsTheObjectWrittenToTheFolder) {
   std::filesystem::create_directories(request.out_dir);
   request.video = false;
   request.images = false;
-  const RunSummary r = executeRun(s, request);
-  EXPECT_EQ(test::slurp(request.out_dir / "metrics.json"), r.metrics_json.str() + "\n");
+  const RunRecord r = executeRun(s, request);
+  EXPECT_EQ(test::slurp(request.out_dir / "metrics.json"), runMetricsJson(s, r).str() + "\n");
   EXPECT_EQ(test::slurp(request.out_dir / "timeseries.csv"), timeseriesCsv(r.log));
   std::filesystem::remove_all(request.out_dir);
 }
@@ -202,7 +204,7 @@ TEST(RunLibrary, AStopBeforePlanningEndsTheRunAsInterrupted) {
   request.observer = [&stages](const RunEvent& e) {
     if (e.kind == RunEventKind::Stage) stages.push_back(e.stage);
   };
-  const RunSummary r = executeRun(s, request);
+  const RunRecord r = executeRun(s, request);
   EXPECT_EQ(r.outcome, RunOutcome::Interrupted);
   EXPECT_EQ(r.exitStatus(), 1);
   EXPECT_TRUE(r.log.vehicles.empty());  // not flown

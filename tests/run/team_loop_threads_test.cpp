@@ -14,7 +14,7 @@ namespace cosim {
 namespace {
 
 struct ThreadedRun {
-  RunSummary summary;
+  RunRecord summary;
   LoopProfile profile;
 };
 

@@ -62,7 +62,8 @@ TEST(SensingFlight, TheControllerFliesOnAnEstimateAsGoodAsItsSensors) {
     s.estimator.predict_rate = s.sensors.imu.rate;
     const RunLog log = flyGeometric(s);
     EXPECT_EQ(log.end_reason, RunEnd::MaxTime) << preset;
-    return computeFlightMetrics(log.vehicles[0], World{}, false).estimation_rmse_m;
+    return computeFlightMetrics(log.vehicles[0], World{}, ErrorReference::PlannedPath)
+        .estimation_rmse_m;
   };
   const double ideal = estimation("ideal"), mocap = estimation("mocap"),
                onboard = estimation("onboard");
@@ -81,9 +82,11 @@ TEST(SensingFlight, PredictingAt100HzTheControllerSeesTheEstimateOfTheLatestPred
   every.estimator.predict_rate = every.sensors.imu.rate;
   ASSERT_DOUBLE_EQ(at100.estimator.predict_rate, 100.0);
   const double own =
-      computeFlightMetrics(flyGeometric(every).vehicles[0], World{}, false).estimation_rmse_m;
+      computeFlightMetrics(flyGeometric(every).vehicles[0], World{}, ErrorReference::PlannedPath)
+          .estimation_rmse_m;
   const RunLog log = flyGeometric(at100);
-  const double seen = computeFlightMetrics(log.vehicles[0], World{}, false).estimation_rmse_m;
+  const double seen =
+      computeFlightMetrics(log.vehicles[0], World{}, ErrorReference::PlannedPath).estimation_rmse_m;
   double motion_sq = 0.0;
   for (const LogSample& x : log.vehicles[0].samples) {
     const double age = std::fmod(x.t + 1e-9, 0.01) - 1e-9;

@@ -1,4 +1,4 @@
-#include "run/run_setup.h"
+#include "run/record/run_setup.h"
 
 #include <algorithm>
 
@@ -67,7 +67,25 @@ void resolveQuadrotorRun(const Scenario& s, RunSetup& setup) {
   // while indi, geometric and dsl_pid kept it (closest 1.48, 1.17 and 1.30 ellipsoids).
   MotionSections& team = setup.quadrotor_sections;
   if (!s.controller_given) team.controller.name = "indi";
-  team.trajectory.mode = TrajectoryMode::MinimumSnap;  // what the team flies, whatever the file said
+  team.trajectory.mode =
+      TrajectoryMode::MinimumSnap;  // what the team flies, whatever the file said
+}
+
+// A robot is measured against its timed plan; a quadrotor against its trajectory when it flies
+// one in time (a trajectory mode of its sections, or a given reference), else against its path.
+VehicleSetup vehicleSetup(const Scenario& s, const RunSetup& setup, std::size_t v) {
+  VehicleSetup vehicle;
+  vehicle.kind = s.vehicles[v].kind;
+  if (vehicle.kind == VehicleKind::GroundRobot) {
+    vehicle.planning = setup.robot_planning;
+    vehicle.error_reference = ErrorReference::TimedPlan;
+    return vehicle;
+  }
+  vehicle.planning = setup.quadrotor_planning;
+  const bool in_time = s.vehicles[v].reference ||
+                       setup.quadrotor_sections.trajectory.mode != TrajectoryMode::Waypoints;
+  vehicle.error_reference = in_time ? ErrorReference::Trajectory : ErrorReference::PlannedPath;
+  return vehicle;
 }
 
 }  // namespace
@@ -97,6 +115,8 @@ RunSetup resolveRun(const Scenario& s, bool plan_as_point_mass) {
   // Seed 003's reproduction plans for a point (run/run_pipeline.h): no margin either.
   if (plan_as_point_mass && setup.quadrotor_planning == Planning::Alone)
     setup.quadrotor_sections.planner.margin = 0.0;
+  for (std::size_t v = 0; v < s.vehicles.size(); ++v)
+    setup.vehicles.push_back(vehicleSetup(s, setup, v));
   return setup;
 }
 

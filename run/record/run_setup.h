@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "run/motion_sections.h"
+#include "sim/error_reference.h"
 #include "sim/scenario.h"
 
 namespace cosim {
@@ -21,7 +22,16 @@ enum class Planning {
   Navigator,  // one robot, decided step by step while it drives (rna, wf_rna, d_star_lite)
 };
 
+// One vehicle of the run as resolved: what it is, how it gets its plan, and what its tracking
+// error is measured against (its sections are RunSetup::sectionsOf).
+struct VehicleSetup {
+  VehicleKind kind = VehicleKind::Quadrotor;
+  Planning planning = Planning::Alone;
+  ErrorReference error_reference = ErrorReference::PlannedPath;
+};
+
 struct RunSetup {
+  std::vector<VehicleSetup> vehicles;   // one per scenario vehicle, in order
   std::vector<std::size_t> robots;      // indices into scenario.vehicles, in order
   std::vector<std::size_t> quadrotors;  // likewise
   Planning robot_planning = Planning::Alone;
@@ -45,6 +55,10 @@ struct RunSetup {
   const MotionSections& primarySections() const {
     return robots.empty() ? quadrotor_sections : robot_sections;
   }
+  // The planner, trajectory and controller sections that drive vehicle v, as resolved.
+  const MotionSections& sectionsOf(std::size_t v) const {
+    return vehicles[v].kind == VehicleKind::GroundRobot ? robot_sections : quadrotor_sections;
+  }
 };
 
 // True if the scenario has a ground robot, or moving obstacles.
@@ -53,11 +67,12 @@ bool isGroundRun(const Scenario& scenario);
 // The navigators, which drive one robot deciding step by step: rna, wf_rna and d_star_lite.
 bool isNavigatorName(const std::string& name);
 
-// Sorts the vehicles, picks each group's planning, and resolves each group's sections with the
-// defaults of its kind of run (a quadrotor team flies minimum-snap trajectories, under indi without
-// a controller section; a point-mass plan keeps no margin). Throws InputError for a scenario no run
-// can serve: moving obstacles without ground robots, disturbances without quadrotors, a navigator
-// for several robots, a team or unknown planner for quadrotors over robots.
+// Sorts the vehicles, picks each group's planning and each vehicle's error reference, and resolves
+// each group's sections with the defaults of its kind of run (a quadrotor team flies minimum-snap
+// trajectories, under indi without a controller section; a point-mass plan keeps no margin). Throws
+// InputError for a scenario no run can serve: moving obstacles without ground robots, disturbances
+// without quadrotors, a navigator for several robots, a team or unknown planner for quadrotors over
+// robots.
 RunSetup resolveRun(const Scenario& scenario, bool plan_as_point_mass);
 
 }  // namespace cosim
