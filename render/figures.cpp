@@ -306,7 +306,7 @@ std::string topView(const RunLog& log, const Scenario& scenario,
   const World& world = scenario.world;
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
   const std::string planner =
-      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
+      scenario.motion.planner.name.empty() ? "given waypoints" : scenario.motion.planner.name;
   std::ostringstream top;
   top << kCommonStyle << palette << obstacleObjects(world, 0, 1) << "set title "
       << gnuplotString(
@@ -359,7 +359,7 @@ std::vector<std::string> writeRunFigures(const RunLog& log, const Scenario& scen
       errorScaleMax(series.max_error, errorScaleFloor(scenario.sim.goal_tolerance));
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
   const std::string planner =
-      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
+      scenario.motion.planner.name.empty() ? "given waypoints" : scenario.motion.planner.name;
   const std::string reference_name = referenceName(refs);
   const std::string palette = errorPalette(scale, "error to " + reference_name + " [m]");
 

@@ -22,7 +22,7 @@ ErrorReference errorReference(const Scenario& scenario, std::size_t index) {
     return ErrorReference::Trajectory;  // a given reference, flown in time
   // With ground robots, the top-level sections are theirs and `aerial` is the quadrotors'.
   const TrajectoryMode mode =
-      has_ground ? scenario.aerial.trajectory_mode : scenario.trajectory_mode;
+      has_ground ? scenario.aerial.trajectory.mode : scenario.motion.trajectory.mode;
   return mode != TrajectoryMode::Waypoints ? ErrorReference::Trajectory
                                            : ErrorReference::PlannedPath;
 }

@@ -164,9 +164,9 @@ RenderedRun renderRunOutputs(const WorldModel& world, const Scenario& scenario, 
 
 std::string runReportTitle(const Scenario& scenario) {
   const std::string planner =
-      scenario.planner_name.empty() ? "given waypoints" : scenario.planner_name;
+      scenario.motion.planner.name.empty() ? "given waypoints" : scenario.motion.planner.name;
   return "cosim run: " + std::filesystem::path(scenario.file).stem().string() + " (" + planner +
-         ", " + scenario.controller_name + " controller)";
+         ", " + scenario.motion.controller.name + " controller)";
 }
 
 void writeRunReport(const std::filesystem::path& dir, const Scenario& scenario,

@@ -200,10 +200,10 @@ void RunRenderer::annotate(double t) {
   };
   std::vector<StateLine> planners;
   if (ground && flying) {
-    planners.emplace_back("robot planner", plannerName(scenario_.planner_name));
-    planners.emplace_back("quadrotor planner", plannerName(scenario_.aerial.planner_name));
+    planners.emplace_back("robot planner", plannerName(scenario_.motion.planner.name));
+    planners.emplace_back("quadrotor planner", plannerName(scenario_.aerial.planner.name));
   } else {
-    planners.emplace_back("planner", plannerName(scenario_.planner_name));
+    planners.emplace_back("planner", plannerName(scenario_.motion.planner.name));
   }
   // MuJoCo 2.2's smallest font is 18 px high (its 50 % scale falls back to 100 %): a frame
   // with room for fewer than 30 lines (640x360) gets short labels and fewer of them, so the

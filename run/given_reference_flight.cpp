@@ -14,10 +14,10 @@ RunLog flyGivenReference(const Scenario& scenario, const WorldModel& world,
   const VehicleSpec& vehicle = scenario.vehicles.at(0);
   const QuadrotorParams believed =
       believedAirframe(world.vehicles()[0].params, scenario.model_error);
-  ParamSet gains = scenario.controller_gains;
-  const std::unique_ptr<FlightController> controller =
-      makeFlightController(scenario.controller_name, gains, believed,
-                           scenario.controller_drag_compensation, scenario.controller_thrust_path);
+  ParamSet gains = scenario.motion.controller.gains;
+  const std::unique_ptr<FlightController> controller = makeFlightController(
+      scenario.motion.controller.name, gains, believed,
+      scenario.motion.controller.drag_compensation, scenario.motion.controller.thrust_path);
   PiecewisePolynomialReference reference = *vehicle.reference;
   std::vector<VehiclePilot> pilots(1);
   pilots[0].controller = controller.get();

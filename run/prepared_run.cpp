@@ -21,10 +21,10 @@ RunSetup resolveStage(const Scenario& scenario, const RunRequest& request, RunRe
 Scenario describedScenario(const Scenario& scenario, const RunSetup& setup) {
   Scenario described = scenario;
   const MotionSections& primary = setup.primarySections();
-  described.controller_name = primary.controller.name;
-  described.trajectory_mode = primary.trajectory.mode;
+  described.motion.controller.name = primary.controller.name;
+  described.motion.trajectory.mode = primary.trajectory.mode;
   if (setup.primaryKind() == VehicleKind::GroundRobot)
-    described.aerial.trajectory_mode = setup.quadrotor_sections.trajectory.mode;
+    described.aerial.trajectory.mode = setup.quadrotor_sections.trajectory.mode;
   return described;
 }
 

@@ -157,9 +157,8 @@ void planTeam(const Scenario& s, const RunSetup& setup, const WorldModel& world,
 void planEach(const Scenario& s, const RunSetup& setup, const WorldModel& world,
               RobotPlans& plans) {
   for (std::size_t v : setup.robots) {
-    const VehiclePlan& p = plans.plans.emplace_back(
-        planVehicle(s, setup.robot_sections.planner, s.vehicles[v],
-                    world.vehicles()[v].params.radius));
+    const VehiclePlan& p = plans.plans.emplace_back(planVehicle(
+        s, setup.robot_sections.planner, s.vehicles[v], world.vehicles()[v].params.radius));
     if (!p.success) {
       plans.status = PlanStatus::NoPath;
       plans.message = "no path found for " + s.vehicles[v].name + ": " + p.message;
@@ -184,9 +183,8 @@ void planNavigation(const Scenario& s, const RunSetup& setup, const WorldModel& 
   p.requireAllUsed("planner '" + name + "' (in cosim run: resolution and sight)");
   plans.summary.params = p.effective();
   const std::size_t robot = setup.robots.front();
-  NavigationWorld nav =
-      navigationWorld(s, world, robot, resolution, plans.cruise_speed, section.margin,
-                      plans.summary.inflation);
+  NavigationWorld nav = navigationWorld(s, world, robot, resolution, plans.cruise_speed,
+                                        section.margin, plans.summary.inflation);
   plans.paths.resize(1);
   plans.navigator = std::make_unique<NavigationDriver>(
       std::move(navigator), std::move(nav), s.file, s.vehicles[robot],
@@ -239,7 +237,7 @@ void checkRobotsFitGridMap(const Scenario& s, double robot_radius, int connectiv
   // planning/mapf/solution_validator.h).
   const double cell = s.grid_map.cell;
   const double room = (connectivity == 8 ? std::sqrt(2.0) / 4.0 : 0.5) * cell;
-  const double need = robot_radius + s.planner_margin;
+  const double need = robot_radius + s.motion.planner.margin;
   if (need > room)
     throw InputError(s.file, "world.grid_map.cell",
                      "robots of radius " + std::to_string(robot_radius) +

@@ -7,7 +7,7 @@
 
 #include "planning/path.h"
 #include "planning/planner_status.h"
-#include "run/motion_sections.h"
+#include "sim/motion_sections.h"
 #include "sim/scenario.h"
 
 namespace cosim {
@@ -24,7 +24,7 @@ struct VehiclePlan {
   std::map<std::string, std::string> params;  // the planner's parameters in force
   std::string message;
   PlannerStatus status = PlannerStatus::Unknown;  // the failing segment's, else ExactSolution
-  double inflation = 0.0;  // vehicle radius + margin the planner kept clear
+  double inflation = 0.0;                         // vehicle radius + margin the planner kept clear
   std::map<std::string, double> trajectory_counters;  // from the minimum-snap fit, if any
   std::vector<std::string> ignored_params;            // taken by other planners, not by this one
   // Indices in `path` of the vehicle's waypoints (the points it was asked to visit, the goal

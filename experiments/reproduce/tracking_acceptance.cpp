@@ -1,16 +1,17 @@
 // The tracking acceptance table: every bundled 3D world flown with the 1.5 kg quadrotor at up to
 // 3 m/s and with the Crazyflie-class nano-quad at up to 1 m/s, minimum-snap trajectories under
-// the geometric controller (rotor-drag compensation where the world has rotor drag), flying on the EKF's estimate from
-// motion-capture sensing. Targets: zero collisions everywhere; RMSE <= 5 cm and max error
+// the geometric controller (rotor-drag compensation where the world has rotor drag), flying on the
+// EKF's estimate from motion-capture sensing. Targets: zero collisions everywhere; RMSE <= 5 cm and
+// max error
 // <= 15 cm for quad_1500g; RMSE <= 2 cm for cf2.
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
 
-#include "run/run_pipeline.h"
+#include "core/input_error.h"
 #include "experiments/reproduce/report_files.h"
 #include "experiments/reproduce/reproduction.h"
-#include "core/input_error.h"
+#include "run/run_pipeline.h"
 
 namespace cosim::reproduce {
 
@@ -45,11 +46,13 @@ Report trackingAcceptance(const Options& options) {
   std::ostringstream md;
   md << "# Tracking on every bundled 3D world\n\n"
      << "Planner and disturbances as in each scenario file, minimum-snap trajectory (speed limit "
-        "below, acceleration 3 m/s^2), geometric controller (with rotor-drag compensation where the world has rotor drag), "
+        "below, acceleration 3 m/s^2), geometric controller (with rotor-drag compensation where "
+        "the world has rotor drag), "
         "motion-capture sensing (1 mm, 0.5 deg, 100 Hz, 10 ms late, ADIS16448-class IMU) fused by "
         "the error-state EKF (the controller sees only the estimate), MuJoCo at 1 kHz, control "
         "500 Hz, seed "
-     << options.seed << ". Targets: 0 collisions; quad_1500g RMSE <= 0.05 m and max error <= "
+     << options.seed
+     << ". Targets: 0 collisions; quad_1500g RMSE <= 0.05 m and max error <= "
         "0.15 m; cf2 RMSE <= 0.02 m.\n\n"
      << "| world | vehicle | max speed [m/s] | reached | collisions | RMSE [m] | max error [m] | "
         "min clearance [m] | flight [s] | target |\n|---|---|---|---|---|---|---|---|---|---|\n";
@@ -60,13 +63,13 @@ Report trackingAcceptance(const Options& options) {
       std::vector<std::string> overrides = {
           "trajectory={mode: minimum_snap, max_speed: " + fixed(a.max_speed, 1) +
               ", max_acceleration: 3.0}",
-          "controller={name: geometric}", "sensors={preset: mocap}",
-          "estimator={name: ekf}", "sim.seed=" + std::to_string(options.seed)};
+          "controller={name: geometric}", "sensors={preset: mocap}", "estimator={name: ekf}",
+          "sim.seed=" + std::to_string(options.seed)};
       if (options.quick) overrides.push_back("sim.max_time=15");
       Scenario s = loadScenario(file.string(), overrides);
       // Compensate rotor drag where the world has it (compensating drag that is not there
       // would itself be a model error).
-      s.controller_drag_compensation = s.disturbances.rotor_drag;
+      s.motion.controller.drag_compensation = s.disturbances.rotor_drag;
       // Swap the airframe in (the vehicle entry is a list item, which --set cannot address).
       s.vehicles[0].model = a.model;
       s.vehicles[0].model_file = modelsDirectory() / (std::string(a.model) + ".xml");
@@ -101,7 +104,9 @@ Report trackingAcceptance(const Options& options) {
       rows.push_back(row);
     }
   }
-  md << "\n" << (failures == 0 ? "Every row meets its target." : std::to_string(failures) + " row(s) miss their target.")
+  md << "\n"
+     << (failures == 0 ? "Every row meets its target."
+                       : std::to_string(failures) + " row(s) miss their target.")
      << "\n";
   return {md.str(), rows};
 }

@@ -14,8 +14,8 @@ Scenario mixedScenario() {
   VehicleSpec uav;
   uav.name = "uav1";
   s.vehicles = {robot, uav};
-  s.trajectory_mode = TrajectoryMode::Waypoints;  // the robots' top-level section
-  s.aerial.trajectory_mode = TrajectoryMode::MinimumSnap;
+  s.motion.trajectory.mode = TrajectoryMode::Waypoints;  // the robots' top-level section
+  s.aerial.trajectory.mode = TrajectoryMode::MinimumSnap;
   return s;
 }
 }  // namespace
