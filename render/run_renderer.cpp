@@ -14,12 +14,6 @@
 
 namespace cosim {
 
-namespace {
-// Lines are about this fraction of the visible height thick at the camera's focus
-// (about 4 px in a 720-line frame).
-constexpr double kLineWidthFraction = 0.0055;
-}  // namespace
-
 RunRenderer::RunRenderer(const WorldModel& world, const Scenario& scenario, const RunLog& log,
                          int width, int height)
     : world_(world),
@@ -110,7 +104,8 @@ void RunRenderer::applyCamera(const CameraPose& pose) {
   eye_ = pose.eye();
   fovy_deg_ = pose.fovy_deg;
   const double visible_height = 2.0 * pose.distance * std::tan(0.5 * pose.fovy_deg * M_PI / 180.0);
-  line_radius_ = 0.5 * kLineWidthFraction * visible_height;
+  // Lines are render.line_width of the visible height thick at the camera's focus.
+  line_radius_ = 0.5 * scenario_.render.line_width * visible_height;
 }
 
 void RunRenderer::fadeObstacles(const CameraPose& pose, CameraKind camera, double t) {
