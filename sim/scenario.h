@@ -83,6 +83,16 @@ struct GridMapSpec {
   double ceiling = 3.0;        // m
   OccupancyGrid grid;          // the map (with the user's cells), cell size `cell`, origin 0
   bool present() const { return !file.empty(); }
+
+  // The keys (sim/declared_keys.h); file and blocked are read by sim/scenario_world.cpp.
+  template <class Visitor>
+  void declareKeys(Visitor& v) {
+    v.custom("file", "path", "a MovingAI .map, relative to the scenario's folder; required");
+    v.number("cell", cell, 0.01, 100.0, "m, a map cell's edge");
+    v.number("height", height, 0.01, 100.0, "m, the blocked cells' boxes' height");
+    v.number("ceiling", ceiling, 0.02, 1000.0, "m, the world's top, above `height`");
+    v.custom("blocked", "[[x, y], ...]", "more blocked cells (column, row)");
+  }
 };
 
 struct Scenario {

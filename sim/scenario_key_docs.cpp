@@ -44,6 +44,8 @@ std::string declaredKeysMarkdown() {
   out += table("trajectory", aerial + " Every other key is one of the mode's parameters.",
                declaredKeyRows(TrajectorySection{}));
   out += table("controller", aerial, declaredKeyRows(ControllerSection{}));
+  out += table("world.grid_map", "A MovingAI map as the world: see Grid maps below.",
+               declaredKeyRows(GridMapSpec{}));
   out += table("vehicles[i].battery", "crazyflie_* controllers only (docs/crazyflie.md).",
                declaredKeyRows(BatterySettings{}));
   out += table("model_error", "Each factor is belief / truth (1: exact).",
