@@ -70,7 +70,7 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
         .add("length_m", plan.success ? plan.path.length() : 0.0)
         .add("time_ms", plan.time_ms)
         .add("waypoints", plan.path.size())
-        .add("planner", s.planner_name)
+        .add("planner", s.motion.planner.name)
         .add("inflation_m", plan.inflation)
         .add("message", plan.message)
         .add("counters", plan.counters)
@@ -79,7 +79,7 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     writeFileAtomically(dir / "path.csv", csv);
     writeFileAtomically(dir / "plan.json", j.str() + "\n");
     manifest.finish();
-    std::cout << "plan: " << printableText(dir.string()) << "\n  " << s.planner_name << ": "
+    std::cout << "plan: " << printableText(dir.string()) << "\n  " << s.motion.planner.name << ": "
               << (plan.success ? "path of " + std::to_string(plan.path.length()) + " m"
                                : "no path (" + plan.message + ")")
               << ", " << plan.time_ms << " ms\n";

@@ -46,7 +46,7 @@ PythonPlanResult plan(const py::object& scenario, const py::object& planner,
     // An error about the planner argument names it as cosim plan names --planner.
     const Scenario s = loadScenarioForPlan(path, sets, planner_name);
     p = planFirstVehicle(s);
-    used_planner = s.planner_name;
+    used_planner = s.motion.planner.name;
   }
   // The planner stopped early: its outcome is no result.
   if (guard.finish()) {

@@ -14,12 +14,6 @@
 
 namespace cosim {
 
-namespace {
-// Lines are about this fraction of the visible height thick at the camera's focus
-// (about 4 px in a 720-line frame).
-constexpr double kLineWidthFraction = 0.0055;
-}  // namespace
-
 RunRenderer::RunRenderer(const Scenario& scenario, const RunRecord& record, int width, int height)
     : world_(*record.world),
       scenario_(scenario),
@@ -113,7 +107,8 @@ void RunRenderer::applyCamera(const CameraPose& pose) {
   eye_ = pose.eye();
   fovy_deg_ = pose.fovy_deg;
   const double visible_height = 2.0 * pose.distance * std::tan(0.5 * pose.fovy_deg * M_PI / 180.0);
-  line_radius_ = 0.5 * kLineWidthFraction * visible_height;
+  // Lines are render.line_width of the visible height thick at the camera's focus.
+  line_radius_ = 0.5 * scenario_.render.line_width * visible_height;
 }
 
 void RunRenderer::fadeObstacles(const CameraPose& pose, CameraKind camera, double t) {
@@ -203,10 +198,10 @@ void RunRenderer::annotate(double t) {
   };
   std::vector<StateLine> planners;
   if (ground && flying) {
-    planners.emplace_back("robot planner", plannerName(scenario_.planner_name));
-    planners.emplace_back("quadrotor planner", plannerName(scenario_.aerial.planner_name));
+    planners.emplace_back("robot planner", plannerName(scenario_.motion.planner.name));
+    planners.emplace_back("quadrotor planner", plannerName(scenario_.aerial.planner.name));
   } else {
-    planners.emplace_back("planner", plannerName(scenario_.planner_name));
+    planners.emplace_back("planner", plannerName(scenario_.motion.planner.name));
   }
   // MuJoCo 2.2's smallest font is 18 px high (its 50 % scale falls back to 100 %): a frame
   // with room for fewer than 30 lines (640x360) gets short labels and fewer of them, so the

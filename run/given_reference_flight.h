@@ -3,9 +3,9 @@
 // without the plan stage: for the studies and benchmarks that fly the same reference many times
 // on one composed world. The controller comes from the run's resolved sections
 // (run/record/run_setup.h), never from the scenario's fields directly.
-#include "run/motion_sections.h"
 #include "sim/aerial_pilot_step.h"
 #include "sim/flight_simulation.h"
+#include "sim/motion_sections.h"
 #include "sim/scenario.h"
 #include "sim/world_model.h"
 

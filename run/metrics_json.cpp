@@ -33,7 +33,7 @@ void addHeadline(JsonObject& j, const RecordOf& r) {
   const RunMetrics& m = r.metrics;
   j.add("reached_goal", m.reached_goal)
       .add("collisions", m.collisions)
-      .add("planner", plannerName(r.scenario.planner_name))
+      .add("planner", plannerName(r.scenario.motion.planner.name))
       .add("planning_time_ms", r.plan.primary.time_ms)
       .add("planned_length_m", m.team.planned_length_m)
       .add("flown_length_m", m.team.flown_length_m)
@@ -59,7 +59,7 @@ void addFlight(JsonObject& j, const RecordOf& r) {
       .add("max_speed_mps", t.max_speed_mps)
       .add("estimation_rmse_m", t.estimation_rmse_m)
       .add("sensors", s.sensors.preset)
-      .add("estimator", s.estimator.name)
+      .add("estimator", estimatorName(s.estimator.kind))
       .add("controller", r.setup.primarySections().controller.name)
       .add("drag_compensation", r.setup.primarySections().controller.drag_compensation)
       .add("trajectory_mode", trajectoryModeName(r.setup.primarySections().trajectory.mode))

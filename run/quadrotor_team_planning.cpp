@@ -36,8 +36,8 @@ std::vector<TeamAgent> teamAgents(const Scenario& s, const PlannerSection& plann
     TeamAgent a;
     a.start = spec.start;
     a.goal = spec.goal();
-    a.separation = planner.separation.value_or(
-        SeparationEllipsoid{q.separation_radius, q.separation_height});
+    a.separation =
+        planner.separation.value_or(SeparationEllipsoid{q.separation_radius, q.separation_height});
     a.inflation = q.radius + planner.margin;
     // As for a single quadrotor's trajectory: half the margin is the budget for tracking error.
     a.clearance = q.radius + 0.5 * planner.margin;
@@ -66,9 +66,9 @@ std::vector<VehiclePlan> vehiclePlans(const TeamPlan& team, const TeamPlanningPr
 }  // namespace
 
 void checkQuadrotorTeamPlanner(const Scenario& scenario) {
-  ParamSet p = scenario.planner_params;
+  ParamSet p = scenario.motion.planner.params;
   readTeamPlannerSettings(p);
-  makeMapfPlanner(scenario.planner_name, p, "planner.name");
+  makeMapfPlanner(scenario.motion.planner.name, p, "planner.name");
 }
 
 QuadrotorTeamFlight planQuadrotorTeamFlight(const Scenario& s, const MotionSections& m,

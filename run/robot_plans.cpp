@@ -237,7 +237,7 @@ void checkRobotsFitGridMap(const Scenario& s, double robot_radius, int connectiv
   // planning/mapf/solution_validator.h).
   const double cell = s.grid_map.cell;
   const double room = (connectivity == 8 ? std::sqrt(2.0) / 4.0 : 0.5) * cell;
-  const double need = robot_radius + s.planner_margin;
+  const double need = robot_radius + s.motion.planner.margin;
   if (need > room)
     throw InputError(s.file, "world.grid_map.cell",
                      "robots of radius " + std::to_string(robot_radius) +

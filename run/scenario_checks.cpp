@@ -29,11 +29,11 @@ std::string plannerNameKey(const std::string& place) {
 
 void checkPlanners(const Scenario& s, PlannerUse use) {
   if (use == PlannerUse::Run) return checkRunPlanners(s);
-  if (s.planner_name.empty())
+  if (s.motion.planner.name.empty())
     throw InputError(s.file, "key planner", "no planner named (use --planner NAME)");
-  ParamSet params = s.planner_params;
+  ParamSet params = s.motion.planner.params;
   params.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);  // read by planVehicle
-  makePlanner(s.planner_name, params, "key planner.name");
+  makePlanner(s.motion.planner.name, params, "key planner.name");
 }
 
 // The controllers' gains, read as the run reads them after planning: a misspelt or out-of-range
@@ -59,11 +59,11 @@ void checkRunPlanners(const Scenario& s) {
     makePlanner(name, p, key);
   };
   if (!isGroundRun(s))
-    return isMapfPlanner(s.planner_name)
+    return isMapfPlanner(s.motion.planner.name)
                ? checkQuadrotorTeamPlanner(s)
-               : single(s.planner_name, s.planner_params, "key planner.name");
-  const std::string& name = s.planner_name;
-  ParamSet p = s.planner_params;
+               : single(s.motion.planner.name, s.motion.planner.params, "key planner.name");
+  const std::string& name = s.motion.planner.name;
+  ParamSet p = s.motion.planner.params;
   if (isNavigatorName(name)) {
     p.getDouble("resolution", 0.5, 0.01, 100.0);
     makeNavigator(name, p);
@@ -76,11 +76,11 @@ void checkRunPlanners(const Scenario& s) {
   } else {
     single(name, p, "key planner.name");
   }
-  if (!s.aerial.planner_name.empty()) {
-    if (!PlannerRegistry::instance().find(s.aerial.planner_name))
+  if (!s.aerial.planner.name.empty()) {
+    if (!PlannerRegistry::instance().find(s.aerial.planner.name))
       throw InputError(s.file, "aerial.planner.name",
-                       "unknown single-agent planner '" + s.aerial.planner_name + "'");
-    single(s.aerial.planner_name, s.aerial.planner_params, "key aerial.planner.name");
+                       "unknown single-agent planner '" + s.aerial.planner.name + "'");
+    single(s.aerial.planner.name, s.aerial.planner.params, "key aerial.planner.name");
   }
 }
 

@@ -1,7 +1,7 @@
 #include "run/scenario_planning.h"
 
-#include "core/stop_token.h"
 #include "core/input_error.h"
+#include "core/stop_token.h"
 #include "planning/planner_registry.h"
 #include "sim/world_model.h"
 
@@ -23,8 +23,7 @@ VehiclePlan planVehicle(const Scenario& scenario, const PlannerSection& section,
     return plan;
   }
   const double time_limit = params.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);
-  auto planner =
-      makePlanner(section.name, params, "key planner.name", &plan.ignored_params);
+  auto planner = makePlanner(section.name, params, "key planner.name", &plan.ignored_params);
   plan.params = params.effective();
   plan.params["margin"] = std::to_string(section.margin);
 
@@ -68,14 +67,14 @@ VehiclePlan planVehicle(const Scenario& scenario, const PlannerSection& section,
 
 VehiclePlan planVehicle(const Scenario& scenario, const VehicleSpec& vehicle, double vehicle_radius,
                         ParamSet planner_params) {
-  PlannerSection section = topLevelSections(scenario).planner;
+  PlannerSection section = scenario.motion.planner;
   section.params = std::move(planner_params);
   return planVehicle(scenario, section, vehicle, vehicle_radius);
 }
 
 VehiclePlan planFirstVehicle(const Scenario& scenario) {
   const WorldModel world = WorldModel::build(scenario);
-  return planVehicle(scenario, topLevelSections(scenario).planner, scenario.vehicles.front(),
+  return planVehicle(scenario, scenario.motion.planner, scenario.vehicles.front(),
                      world.vehicles().front().params.radius);
 }
 

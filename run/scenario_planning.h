@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "run/motion_sections.h"
+#include "sim/motion_sections.h"
 #include "run/record/vehicle_plan.h"
 #include "sim/scenario.h"
 

@@ -34,6 +34,17 @@ struct BatterySettings {
   double state_of_charge = 1.0;        // at the start, 0..1
   double internal_resistance = 0.085;  // ohm (battery, connector and power path)
   double drive_efficiency = 0.5;       // electrical to shaft power of the ESCs and motors, 0..1
+
+  // The keys of vehicles[i].battery (sim/declared_keys.h).
+  template <class Visitor>
+  void declareKeys(Visitor& v) {
+    v.number("capacity_mah", capacity_mah, 1.0, 1e6, "mAh");
+    v.number("state_of_charge", state_of_charge, 0.0, 1.0, "at the start, 0 (empty) to 1 (full)");
+    v.number("internal_resistance", internal_resistance, 0.0, 10.0,
+             "ohm, battery, connector and power path");
+    v.number("drive_efficiency", drive_efficiency, 0.01, 1.0,
+             "electrical to shaft power of the ESCs and motors");
+  }
 };
 
 class LipoBattery {

@@ -5,30 +5,25 @@
 namespace cosim {
 
 CameraKind cameraKind(const std::string& name) {
-  for (const CameraKind kind : {CameraKind::Chase, CameraKind::Orbit, CameraKind::Top,
-                                CameraKind::Overview, CameraKind::Fixed})
-    if (name == cameraName(kind)) return kind;
+  if (const auto kind = choiceNamed(kCameraNames, name)) return *kind;
   throw std::invalid_argument("unknown camera '" + name + "' (" + cameraNames() + ")");
 }
 
 const char* cameraName(CameraKind kind) {
-  switch (kind) {
-    case CameraKind::Chase:
-      return "chase";
-    case CameraKind::Orbit:
-      return "orbit";
-    case CameraKind::Top:
-      return "top";
-    case CameraKind::Overview:
-      return "overview";
-    case CameraKind::Fixed:
-      return "fixed";
-  }
-  return "chase";
+  return choiceName(kCameraNames, kind);
 }
 
 const char* cameraNames() {
-  return "chase, orbit, top, overview or fixed";
+  static const std::string names = [] {
+    std::string list;
+    for (std::size_t i = 0; i < kCameraNames.size(); ++i)
+      list += std::string(i == 0                         ? ""
+                          : i + 1 == kCameraNames.size() ? " or "
+                                                         : ", ") +
+              kCameraNames[i].name;
+    return list;
+  }();
+  return names.c_str();
 }
 
 }  // namespace cosim

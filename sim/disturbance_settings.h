@@ -21,6 +21,22 @@ struct DisturbanceSettings {
   bool hasDrag() const { return rotor_drag || drag_coefficient > 0; }
   bool hasWind() const { return wind.squaredNorm() > 0 || gust_sigma > 0; }
   bool any() const { return hasDrag() || hasWind() || ground_effect || downwash; }
+
+  // The keys (sim/declared_keys.h); wind needs a drag term, checked after them.
+  template <class Visitor>
+  void declareKeys(Visitor& v) {
+    v.boolean("rotor_drag", rotor_drag,
+              "per-rotor drag and rolling moment with the model file's coefficients (RotorS)");
+    v.number("drag", drag_coefficient, 0.0, 100.0,
+             "N per m/s, a lumped linear drag at the centre of mass, F = -k (v - wind)");
+    v.vec3("wind", wind, -1e300, 1e300, "m/s, the mean wind (world frame), at most 50 m/s");
+    v.number("gust", gust_sigma, 0.0, 50.0, "m/s, standard deviation of each gust component");
+    v.number("gust_tau", gust_tau, 0.01, 1000.0, "s, the gusts' correlation time");
+    v.boolean("ground_effect", ground_effect, "per rotor, against the surface below it");
+    v.boolean("downwash", downwash, "the wakes of quadrotors above others");
+  }
 };
+
+constexpr double kMaxWindSpeed = 50.0;  // m/s; above it is a units mistake
 
 }  // namespace cosim

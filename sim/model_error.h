@@ -13,6 +13,16 @@ struct ModelError {
   double inertia = 1.0;
   double thrust_coefficient = 1.0;
   bool none() const { return mass == 1.0 && inertia == 1.0 && thrust_coefficient == 1.0; }
+
+  // The keys (sim/declared_keys.h). Beliefs off by more than a factor of two are not a model
+  // error but a different vehicle.
+  template <class Visitor>
+  void declareKeys(Visitor& v) {
+    v.number("mass", mass, 0.5, 2.0, "the controller's mass / the true mass");
+    v.number("inertia", inertia, 0.5, 2.0, "the controller's inertia / the true inertia");
+    v.number("thrust_coefficient", thrust_coefficient, 0.5, 2.0,
+             "the controller's rotor thrust coefficient k_f / the true one");
+  }
 };
 
 // The true airframe with mass, inertia and k_f (hence the thrust limits) scaled by `error`.

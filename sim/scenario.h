@@ -8,18 +8,16 @@
 #include <string>
 #include <vector>
 
-#include "control/crazyflie_thrust_path.h"
-#include "core/param_set.h"
 #include "planning/grid/occupancy_grid.h"
-#include "planning/team/separation_ellipsoid.h"
 #include "planning/world/world.h"
 #include "sim/airframe_file.h"
 #include "sim/battery.h"
-#include "sim/camera_kind.h"
 #include "sim/disturbance_settings.h"
 #include "sim/model_error.h"
+#include "sim/motion_sections.h"
+#include "sim/render_settings.h"
 #include "sim/sensors/sensor_settings.h"
-#include "sim/trajectory_mode.h"
+#include "sim/sim_settings.h"
 #include "sim/vehicle_kind.h"
 
 namespace cosim {
@@ -85,47 +83,16 @@ struct GridMapSpec {
   double ceiling = 3.0;        // m
   OccupancyGrid grid;          // the map (with the user's cells), cell size `cell`, origin 0
   bool present() const { return !file.empty(); }
-};
 
-struct SimSettings {
-  double timestep = 0.001;    // s, physics step
-  double control_rate = 500;  // Hz, controller rate; the physics rate must be a multiple
-  double max_time = 120.0;    // s of simulated time before giving up
-  std::uint64_t seed = 1;
-  double goal_tolerance = 0.2;  // m: the goal is reached within this distance (seed 003: 0.2 m)
-};
-
-// The cameras: sim/camera_kind.h (fixed looks from fixed_pos at fixed_lookat).
-struct RenderSettings {
-  CameraKind camera = CameraKind::Chase;  // the main video, video.mp4
-  std::vector<CameraKind> cameras;        // more videos, one per camera: video_<camera>.mp4
-  int width = 1280, height = 720, fps = 30;
-  double speedup = 1.0;           // simulated seconds per second of video
-  bool has_fixed_camera = false;  // render.fixed_camera: {pos: [x,y,z], lookat: [x,y,z]}
-  Eigen::Vector3d fixed_pos = Eigen::Vector3d::Zero();
-  Eigen::Vector3d fixed_lookat = Eigen::Vector3d::Zero();
-  double obstacle_alpha = 1.0;  // below 1: obstacles are see-through
-  bool png_frames = false;      // also write each video as frames_<camera>/NNNNN.png
-  // A team's pictures draw every member's planned path and reference too (off: the flown paths
-  // only; a grid plan's right angles, one per member, tangle a team's picture).
-  bool team_plans = false;
-};
-
-// The quadrotors' planner, trajectory and controller in a scenario that also has ground robots
-// (the `aerial` section; the top-level sections then drive the robots). Same keys and meaning as
-// the top-level planner, trajectory and controller sections.
-struct AerialSections {
-  std::string planner_name;  // empty: fly the given waypoints
-  ParamSet planner_params;
-  double planner_margin = 0.3;
-  std::optional<SeparationEllipsoid> planner_separation;
-  TrajectoryMode trajectory_mode = TrajectoryMode::Waypoints;
-  ParamSet trajectory_params;
-  std::string controller_name = "cascade";
-  bool controller_given = false;  // a controller section was written
-  bool controller_drag_compensation = false;
-  ParamSet controller_gains;
-  CrazyflieThrustPath controller_thrust_path;
+  // The keys (sim/declared_keys.h); file and blocked are read by sim/scenario_world.cpp.
+  template <class Visitor>
+  void declareKeys(Visitor& v) {
+    v.custom("file", "path", "a MovingAI .map, relative to the scenario's folder; required");
+    v.number("cell", cell, 0.01, 100.0, "m, a map cell's edge");
+    v.number("height", height, 0.01, 100.0, "m, the blocked cells' boxes' height");
+    v.number("ceiling", ceiling, 0.02, 1000.0, "m, the world's top, above `height`");
+    v.custom("blocked", "[[x, y], ...]", "more blocked cells (column, row)");
+  }
 };
 
 struct Scenario {
@@ -140,26 +107,11 @@ struct Scenario {
   std::vector<MovingObstacleSpec> moving_obstacles;  // world.moving_obstacles
   std::vector<VehicleSpec> vehicles;
 
-  // Planner: empty name = fly the vehicle's waypoints as given.
-  std::string planner_name;
-  ParamSet planner_params;      // everything under planner: except name and margin
-  double planner_margin = 0.3;  // m, safety margin added to the vehicle radius
-  // planner.separation of a quadrotor team; absent: each model's own (its model file).
-  std::optional<SeparationEllipsoid> planner_separation;
-
-  TrajectoryMode trajectory_mode = TrajectoryMode::Waypoints;
-  ParamSet trajectory_params;  // max_speed, switch_radius, ...
-
-  std::string controller_name = "cascade";  // cascade | geometric | indi | dsl_pid | crazyflie_*
-  // A controller section was written; without one a quadrotor team flies indi (run_pipeline.cpp).
-  bool controller_given = false;
-  // controller.drag_compensation: rotor drag in the flatness feed-forward (geometric, indi).
-  bool controller_drag_compensation = false;
-  ParamSet controller_gains;
-  // controller.thrust_map, thrust_map_coefficients, idle_thrust, platform (crazyflie_* only).
-  CrazyflieThrustPath controller_thrust_path;
-
-  AerialSections aerial;  // for the quadrotors when there are ground robots too
+  // The top-level planner, trajectory and controller sections (sim/motion_sections.h).
+  MotionSections motion;
+  // The `aerial` ones: the quadrotors' when there are ground robots too (the top-level ones then
+  // drive the robots).
+  MotionSections aerial;
 
   SimSettings sim;
   DisturbanceSettings disturbances;

@@ -35,12 +35,12 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
   s.file = file;
   s.effective_yaml = YAML::Dump(root) + "\n";
   s.reference_copies_dir = reference_copies_dir;
-  s.planner_params = ParamSet(file);
-  s.trajectory_params = ParamSet(file);
-  s.controller_gains = ParamSet(file);
-  s.aerial.planner_params = ParamSet(file);
-  s.aerial.trajectory_params = ParamSet(file);
-  s.aerial.controller_gains = ParamSet(file);
+  s.motion.planner.params = ParamSet(file);
+  s.motion.trajectory.params = ParamSet(file);
+  s.motion.controller.gains = ParamSet(file);
+  s.aerial.planner.params = ParamSet(file);
+  s.aerial.trajectory.params = ParamSet(file);
+  s.aerial.controller.gains = ParamSet(file);
 
   readWorldSection(r, root, dir, s);
   readVehiclesSection(r, root, dir, s);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "control/controller_registry.h"
+#include "sim/declared_key_reader.h"
 #include "sim/scenario_overrides.h"
 #include "sim/scenario_sections.h"
 
@@ -41,55 +42,44 @@ SeparationEllipsoid readSeparation(const YamlReader& r, const YAML::Node& n,
 }
 
 // The planner, trajectory and controller sections under `parent` (the document, or `aerial`),
-// into a Scenario or its AerialSections (the same members); `prefix` names their keys.
-template <class Sections>
+// read through their declared keys (sim/motion_sections.h); `prefix` names their keys. The keys
+// a section does not declare are its planner's or mode's parameters.
 void readMotionSectionsOf(const YamlReader& r, const YAML::Node& parent, const std::string& prefix,
-                          const std::vector<std::string>& overrides, Sections& out) {
+                          const std::vector<std::string>& overrides, MotionSections& out) {
   if (parent["planner"] && !parent["planner"].IsNull()) {
     const YAML::Node p = parent["planner"];
-    r.requireMap(p, prefix + "planner");
-    if (!p["name"]) r.fail(p, prefix + "planner", "missing 'name' (e.g. theta_star)");
-    out.planner_name = r.text(p["name"], prefix + "planner.name");
-    if (p["margin"])
-      out.planner_margin = r.number(p["margin"], prefix + "planner.margin", 0.0, 100.0);
-    if (p["separation"]) out.planner_separation = readSeparation(r, p["separation"], prefix);
-    readParams(r, p, prefix + "planner", {"name", "margin", "separation"}, overrides,
-               out.planner_params);
+    const std::string key = prefix + "planner";
+    r.requireMap(p, key);
+    if (!p["name"]) r.fail(p, key, "missing 'name' (e.g. theta_star)");
+    DeclaredKeyReader reader(r, p, key);
+    out.planner.declareKeys(reader);
+    if (p["separation"]) out.planner.separation = readSeparation(r, p["separation"], prefix);
+    readParams(r, p, key, declaredKeyNames(out.planner), overrides, out.planner.params);
   }
 
   if (parent["trajectory"]) {
     const YAML::Node t = parent["trajectory"];
-    r.requireMap(t, prefix + "trajectory");
-    if (t["mode"]) {
-      const auto mode = trajectoryModeNamed(r.text(t["mode"], prefix + "trajectory.mode"));
-      if (!mode)
-        r.fail(t["mode"], prefix + "trajectory.mode", "must be 'waypoints' or 'minimum_snap'");
-      out.trajectory_mode = *mode;
-    }
-    readParams(r, t, prefix + "trajectory", {"mode"}, overrides, out.trajectory_params);
+    const std::string key = prefix + "trajectory";
+    r.requireMap(t, key);
+    DeclaredKeyReader reader(r, t, key);
+    out.trajectory.declareKeys(reader);
+    readParams(r, t, key, declaredKeyNames(out.trajectory), overrides, out.trajectory.params);
   }
 
   if (parent["controller"]) {
     const YAML::Node c = parent["controller"];
-    r.checkKeys(c, prefix + "controller",
-                {"name", "gains", "drag_compensation", "thrust_map", "thrust_map_coefficients",
-                 "idle_thrust", "platform"});
-    out.controller_given = true;
-    if (c["name"]) out.controller_name = r.text(c["name"], prefix + "controller.name");
-    const std::string& name = out.controller_name;
+    ControllerSection& controller = out.controller;
+    readDeclaredKeys(r, c, prefix + "controller", controller);
+    controller.given = true;
+    const std::string& name = controller.name;
     if (const std::string problem = controllerNameProblem(name); !problem.empty())
       r.fail(c["name"], prefix + "controller.name", problem);
-    if (c["drag_compensation"]) {
-      out.controller_drag_compensation =
-          r.boolean(c["drag_compensation"], prefix + "controller.drag_compensation");
-      if (out.controller_drag_compensation && !compensatesDrag(name))
-        r.fail(
-            c["drag_compensation"], prefix + "controller.drag_compensation",
-            "applies to the " + dragCompensatingControllers() + " controllers, not '" + name + "'");
-    }
-    out.controller_thrust_path = readCrazyflieThrustPath(r, c, prefix, name);
+    if (controller.drag_compensation && !compensatesDrag(name))
+      r.fail(c["drag_compensation"], prefix + "controller.drag_compensation",
+             "applies to the " + dragCompensatingControllers() + " controllers, not '" + name + "'");
+    controller.thrust_path = readCrazyflieThrustPath(r, c, prefix, name);
     if (c["gains"])
-      readParams(r, c["gains"], prefix + "controller.gains", {}, overrides, out.controller_gains);
+      readParams(r, c["gains"], prefix + "controller.gains", {}, overrides, controller.gains);
   }
 }
 
@@ -97,7 +87,7 @@ void readMotionSectionsOf(const YamlReader& r, const YAML::Node& parent, const s
 
 void readMotionSections(const YamlReader& r, const YAML::Node& root,
                         const std::vector<std::string>& overrides, Scenario& s) {
-  readMotionSectionsOf(r, root, "", overrides, s);
+  readMotionSectionsOf(r, root, "", overrides, s.motion);
   if (root["aerial"]) {
     const YAML::Node n = root["aerial"];
     r.checkKeys(n, "aerial", {"planner", "trajectory", "controller"});

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "control/controller_registry.h"
+#include "sim/declared_key_reader.h"
 #include "sim/scenario_sections.h"
 
 namespace cosim {
@@ -21,20 +22,8 @@ void readVehiclePower(const YamlReader& r, const YAML::Node& n, const std::strin
     v.motor_speed_map = c;
   }
   if (!n["battery"]) return;
-  const YAML::Node b = n["battery"];
-  const std::string k = key + ".battery";
-  r.requireMap(b, k);
-  r.checkKeys(b, k, {"capacity_mah", "state_of_charge", "internal_resistance", "drive_efficiency"});
   BatterySettings s;
-  if (b["capacity_mah"])
-    s.capacity_mah = r.number(b["capacity_mah"], k + ".capacity_mah", 1.0, 1e6);
-  if (b["state_of_charge"])
-    s.state_of_charge = r.number(b["state_of_charge"], k + ".state_of_charge", 0.0, 1.0);
-  if (b["internal_resistance"])
-    s.internal_resistance =
-        r.number(b["internal_resistance"], k + ".internal_resistance", 0.0, 10.0);
-  if (b["drive_efficiency"])
-    s.drive_efficiency = r.number(b["drive_efficiency"], k + ".drive_efficiency", 0.01, 1.0);
+  readDeclaredKeys(r, n["battery"], key + ".battery", s);
   v.battery = s;
 }
 
@@ -75,9 +64,9 @@ void checkVehiclePower(const YamlReader& r, const YAML::Node& root, Scenario& s)
   bool robots = false;
   for (const VehicleSpec& v : s.vehicles) robots = robots || v.kind == VehicleKind::GroundRobot;
   // The quadrotors' controller: the aerial one when ground robots take the top-level one.
-  const std::string& name = robots ? s.aerial.controller_name : s.controller_name;
+  const std::string& name = robots ? s.aerial.controller.name : s.motion.controller.name;
   const CrazyflieThrustPath& path =
-      robots ? s.aerial.controller_thrust_path : s.controller_thrust_path;
+      robots ? s.aerial.controller.thrust_path : s.motion.controller.thrust_path;
   for (std::size_t i = 0; i < s.vehicles.size(); ++i) {
     VehicleSpec& v = s.vehicles[i];
     if (v.kind != VehicleKind::Quadrotor) continue;

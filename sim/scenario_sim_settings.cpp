@@ -6,6 +6,7 @@
 #include <string>
 
 #include "control/crazyflie_control_rate.h"
+#include "sim/declared_key_reader.h"
 #include "sim/scenario_reference.h"
 #include "sim/scenario_sections.h"
 
@@ -23,21 +24,13 @@ constexpr double kMaxLogSamples = 2e7;
 void readSimSection(const YamlReader& r, const YAML::Node& root, Scenario& s) {
   if (root["sim"]) {
     const YAML::Node n = root["sim"];
-    r.checkKeys(n, "sim", {"timestep", "control_rate", "max_time", "seed", "goal_tolerance"});
-    if (n["timestep"]) s.sim.timestep = r.number(n["timestep"], "sim.timestep", 1e-5, 0.02);
-    if (n["control_rate"])
-      s.sim.control_rate = r.number(n["control_rate"], "sim.control_rate", 1.0, 10000.0);
-    if (n["max_time"]) s.sim.max_time = r.number(n["max_time"], "sim.max_time", 0.01, 86400.0);
-    if (n["seed"])
-      s.sim.seed = static_cast<std::uint64_t>(r.integer(n["seed"], "sim.seed", 0, 2147483647L));
-    if (n["goal_tolerance"])
-      s.sim.goal_tolerance = r.number(n["goal_tolerance"], "sim.goal_tolerance", 0.01, 100.0);
+    readDeclaredKeys(r, n, "sim", s.sim);
     const double ratio = 1.0 / (s.sim.timestep * s.sim.control_rate);
     if (ratio < 1.0 - 1e-9 || std::abs(ratio - std::round(ratio)) > 1e-6)
       r.fail(n["control_rate"] ? n["control_rate"] : n, "sim.control_rate",
              "the physics rate (1/timestep) must be a whole multiple of the control rate");
   }
-  for (const std::string& name : {s.controller_name, s.aerial.controller_name})
+  for (const std::string& name : {s.motion.controller.name, s.aerial.controller.name})
     if (const std::string why = crazyflieControlRateProblem(name, s.sim.control_rate); !why.empty())
       r.fail(root["sim"] && root["sim"]["control_rate"] ? root["sim"]["control_rate"] : root,
              "sim.control_rate", why);

@@ -6,6 +6,7 @@
 #include "core/input_file.h"
 #include "planning/grid/movingai.h"
 #include "planning/world/grid_map_world.h"
+#include "sim/declared_key_reader.h"
 #include "sim/scenario_sections.h"
 
 namespace cosim {
@@ -54,9 +55,9 @@ void readGridMap(const YamlReader& r, const YAML::Node& n, const std::filesystem
                  Scenario& s) {
   const std::string key = "world.grid_map";
   r.requireMap(n, key);
-  r.checkKeys(n, key, {"file", "cell", "height", "ceiling", "blocked"});
-  if (!n["file"]) r.fail(n, key, "missing 'file' (a MovingAI .map)");
   GridMapSpec& g = s.grid_map;
+  r.checkKeys(n, key, declaredKeyNames(g));
+  if (!n["file"]) r.fail(n, key, "missing 'file' (a MovingAI .map)");
   const std::string file = r.text(n["file"], key + ".file");
   g.file = std::filesystem::path(file).is_absolute() ? std::filesystem::path(file) : dir / file;
   try {
@@ -64,9 +65,8 @@ void readGridMap(const YamlReader& r, const YAML::Node& n, const std::filesystem
   } catch (const InputError& e) {
     r.fail(n["file"], key + ".file", g.file.string() + ": " + e.problem());
   }
-  if (n["cell"]) g.cell = r.number(n["cell"], key + ".cell", 0.01, 100.0);
-  if (n["height"]) g.height = r.number(n["height"], key + ".height", 0.01, 100.0);
-  if (n["ceiling"]) g.ceiling = r.number(n["ceiling"], key + ".ceiling", 0.02, 1000.0);
+  DeclaredKeyReader declared(r, n, key);
+  g.declareKeys(declared);
   if (g.ceiling <= g.height) r.fail(n, key, "ceiling must be above the blocks' height");
   const OccupancyGrid map = readMovingAIMap(g.file.string());
   if (map.nx() * g.cell > kMaxWorldExtent || map.ny() * g.cell > kMaxWorldExtent)

@@ -78,13 +78,13 @@ StateEstimator::StateEstimator(const EstimatorSettings& estimator, const SensorS
       seed_(sensorSeed(seed, vehicle_index, 3)),
       position_std_(estimator.position_std),
       attitude_std_(estimator.attitude_std) {
-  if (estimator.name == "ekf") {
+  if (estimator.kind == EstimatorKind::Ekf) {
     if (!sensors.imu.present || !sensors.position.present)
       throw std::invalid_argument("the EKF needs an IMU and a position sensor");
     ekf_ = std::make_unique<LatencyCompensatedEkf>(sensors.imu.noise, airframe.gravity,
                                                    maximumLatency(sensors), sensors.imu.rate,
                                                    estimator.predict_rate, estimator.fix_timing);
-  } else if (estimator.name == "crazyflie_kalman") {
+  } else if (estimator.kind == EstimatorKind::CrazyflieKalman) {
     if (!sensors.imu.present || !sensors.position.present)
       throw std::invalid_argument("the Crazyflie's Kalman estimator needs an IMU and a position");
     kalman_ = std::make_unique<CrazyflieKalmanEstimator>(crazyflieKalmanParams(estimator, airframe),

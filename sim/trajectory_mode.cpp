@@ -3,13 +3,11 @@
 namespace cosim {
 
 const char* trajectoryModeName(TrajectoryMode mode) {
-  return mode == TrajectoryMode::MinimumSnap ? "minimum_snap" : "waypoints";
+  return choiceName(kTrajectoryModeNames, mode);
 }
 
 std::optional<TrajectoryMode> trajectoryModeNamed(const std::string& name) {
-  if (name == "waypoints") return TrajectoryMode::Waypoints;
-  if (name == "minimum_snap") return TrajectoryMode::MinimumSnap;
-  return std::nullopt;
+  return choiceNamed(kTrajectoryModeNames, name);
 }
 
 }  // namespace cosim

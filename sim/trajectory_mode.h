@@ -5,9 +5,16 @@
 #include <optional>
 #include <string>
 
+#include "sim/declared_keys.h"
+
 namespace cosim {
 
 enum class TrajectoryMode { Waypoints, MinimumSnap };
+
+inline constexpr ChoiceNames<TrajectoryMode, 2> kTrajectoryModeNames{{
+    {TrajectoryMode::Waypoints, "waypoints"},
+    {TrajectoryMode::MinimumSnap, "minimum_snap"},
+}};
 
 // The scenario's name of a mode ("waypoints", "minimum_snap"), also what metrics.json writes.
 const char* trajectoryModeName(TrajectoryMode mode);

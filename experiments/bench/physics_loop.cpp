@@ -88,7 +88,7 @@ Section benchPhysicsLoop(bool quick) {
 Section benchSensingLoop(bool quick) {
   Scenario s = benchScenario(quick ? 3.0 : 60.0);
   s.sensors = sensorPreset("mocap");
-  s.estimator.name = "ekf";
+  s.estimator.kind = EstimatorKind::Ekf;
   return measureLoop(s, "sensing_loop",
                      "motion capture (100 Hz pose, 10 ms late) + 500 Hz IMU + error-state EKF",
                      0.6);

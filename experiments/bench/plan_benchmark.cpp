@@ -37,7 +37,7 @@ void checkPlannerNames(const std::vector<std::string>& planners) {
 
 // The scenario's planner parameters for one of our planners, with the benchmark's time limit.
 ParamSet ourParams(const Scenario& s, double time_limit_s) {
-  ParamSet p = s.planner_params;
+  ParamSet p = s.motion.planner.params;
   char limit[32];
   std::snprintf(limit, sizeof limit, "%.17g", time_limit_s);
   p.set("time_limit", limit, "--time");
@@ -54,7 +54,7 @@ bool pathClear(const std::vector<Eigen::Vector3d>& path, const CollisionWorld& w
 
 PlanBenchRun runOurs(const std::string& name, Scenario& s, const VehicleSpec& vehicle,
                      double radius, double time_limit_s, int seed, const CollisionWorld& world) {
-  s.planner_name = name;
+  s.motion.planner.name = name;
   s.sim.seed = static_cast<std::uint64_t>(seed);
   const VehiclePlan plan = planVehicle(s, vehicle, radius, ourParams(s, time_limit_s));
   PlanBenchRun r;
@@ -163,7 +163,7 @@ int runPlanBenchmark(const PlanBenchSetup& setup) {
   const WorldModel model = WorldModel::build(s);  // the vehicle's radius comes from its model
   const VehicleSpec& vehicle = s.vehicles.front();
   const double radius = model.vehicles().front().params.radius;
-  const double inflation = radius + s.planner_margin;
+  const double inflation = radius + s.motion.planner.margin;
   for (const std::string& name : setup.planners) {
     if (omplbench::isOmplPlanner(name)) continue;
     ParamSet p = ourParams(s, setup.time_limit_s);
@@ -178,7 +178,7 @@ int runPlanBenchmark(const PlanBenchSetup& setup) {
                                                      "plan-bench.log", "plan_bench.*"}))
       requireCosimOutput(p, "--out");
   // OMPL's tree planners take our `step` as their range (maximum edge length).
-  ParamSet step_param = s.planner_params;
+  ParamSet step_param = s.motion.planner.params;
   const double range = step_param.getDouble("step", 2.0, 1e-3, 1e6);
   // The world our sampling planners build for each solve (SamplingContext), built once here.
   const CollisionWorld world(s.world, inflation, inflation,

@@ -75,7 +75,8 @@ Section measureReferenceFlight(bool quick, const std::string& controller) {
   const FlightSet own = measureFlights(s, flights);
   // The same flights with the other Crazyflie estimator: the firmware's Kalman estimator must
   // cost no more than the EKF (the same target against bare mj_step).
-  const std::string other = s.estimator.name == "crazyflie_kalman" ? "ekf" : "crazyflie_kalman";
+  const std::string other =
+      s.estimator.kind == EstimatorKind::CrazyflieKalman ? "ekf" : "crazyflie_kalman";
   sets.push_back("estimator.name=" + other);
   const FlightSet alt =
       measureFlights(loadScenario(COSIM_SCENARIOS_DIR "/crazyflie_figure8.yaml", sets), flights);
@@ -93,8 +94,9 @@ Section measureReferenceFlight(bool quick, const std::string& controller) {
   char target[32];
   std::snprintf(target, sizeof target, "%.2f", kTarget);
   const auto verdict = [&](double r) { return std::string(r >= kTarget ? "met" : "NOT met"); };
-  out.note = s.vehicles[0].model + " flying the figure-eight reference under " + s.controller_name +
-             ", motion capture + IMU + " + s.estimator.name + " (then " + other + "), " +
+  out.note = s.vehicles[0].model + " flying the figure-eight reference under " +
+             s.motion.controller.name + ", motion capture + IMU + " +
+             estimatorName(s.estimator.kind) + " (then " + other + "), " +
              std::to_string(static_cast<int>(s.sim.control_rate)) + " Hz control; target " +
              "ratio >= " + target + ": " + verdict(own.ratio) + ", with " + other + ": " +
              verdict(alt.ratio);

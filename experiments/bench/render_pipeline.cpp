@@ -49,8 +49,8 @@ Scenario benchScenario() {
   v.start = {2, 2, 2};
   v.waypoints = {{36, 26, 3}};
   s.vehicles.push_back(v);
-  s.planner_name = "theta_star";
-  s.trajectory_mode = TrajectoryMode::MinimumSnap;
+  s.motion.planner.name = "theta_star";
+  s.motion.trajectory.mode = TrajectoryMode::MinimumSnap;
   return s;
 }
 

@@ -50,13 +50,13 @@ Scenario teamScenario(int n, double seconds) {
   s.sim.timestep = 0.002;
   s.sim.control_rate = 250;
   s.sim.max_time = seconds;
-  s.aerial.controller_name = "geometric";
-  s.aerial.controller_gains = ParamSet("team_scale");
-  s.aerial.planner_params = ParamSet("team_scale");
-  s.aerial.trajectory_params = ParamSet("team_scale");
-  s.planner_params = ParamSet("team_scale");
-  s.trajectory_params = ParamSet("team_scale");
-  s.controller_gains = ParamSet("team_scale");
+  s.aerial.controller.name = "geometric";
+  s.aerial.controller.gains = ParamSet("team_scale");
+  s.aerial.planner.params = ParamSet("team_scale");
+  s.aerial.trajectory.params = ParamSet("team_scale");
+  s.motion.planner.params = ParamSet("team_scale");
+  s.motion.trajectory.params = ParamSet("team_scale");
+  s.motion.controller.gains = ParamSet("team_scale");
   return s;
 }
 

@@ -59,7 +59,7 @@ Scenario studyScenario(const FigureEightShape& shape, double seconds, std::uint6
   s.disturbances.rotor_drag = true;
   s.model_error = {1.05, 1.10, 0.95};
   s.sensors = sensorPreset("mocap");
-  s.estimator.name = "ekf";
+  s.estimator.kind = EstimatorKind::Ekf;
   return s;
 }
 

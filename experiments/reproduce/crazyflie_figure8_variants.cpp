@@ -48,7 +48,7 @@ Scenario figureEightScenario(const FigureEightVariant& v, double timescale, std:
   VehicleSpec& cf = s.vehicles[0];
   if (off(v, kSensing)) {
     s.sensors = SensorSettings{};
-    s.estimator.name = "ground_truth";
+    s.estimator.kind = EstimatorKind::GroundTruth;
   }
   if (off(v, kImuNoise)) {
     s.sensors.imu.noise = ImuNoise{};
@@ -63,7 +63,7 @@ Scenario figureEightScenario(const FigureEightVariant& v, double timescale, std:
     cf.airframe.motor_delay = 0.0;
   }
   if (v.firmware_default_mass)
-    s.controller_gains.set("mass", std::to_string(crazyflie21BrushlessPlatform().mass));
+    s.motion.controller.gains.set("mass", std::to_string(crazyflie21BrushlessPlatform().mass));
   return s;
 }
 

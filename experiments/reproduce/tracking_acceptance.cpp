@@ -69,7 +69,7 @@ Report trackingAcceptance(const Options& options) {
       Scenario s = loadScenario(file.string(), overrides);
       // Compensate rotor drag where the world has it (compensating drag that is not there
       // would itself be a model error).
-      s.controller_drag_compensation = s.disturbances.rotor_drag;
+      s.motion.controller.drag_compensation = s.disturbances.rotor_drag;
       // Swap the airframe in (the vehicle entry is a list item, which --set cannot address).
       s.vehicles[0].model = a.model;
       s.vehicles[0].model_file = modelsDirectory() / (std::string(a.model) + ".xml");

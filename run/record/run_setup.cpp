@@ -13,7 +13,7 @@ namespace {
 // Over ground robots each quadrotor plans alone: aerial.planner.name must be a single-agent
 // planner (a team planner plans quadrotor-only scenarios).
 void checkAerialPlanner(const Scenario& s) {
-  const std::string& name = s.aerial.planner_name;
+  const std::string& name = s.aerial.planner.name;
   if (name.empty() || PlannerRegistry::instance().find(name)) return;
   std::string known;
   for (const auto& e : PlannerRegistry::instance().entries())
@@ -27,15 +27,15 @@ void resolveGroundRun(const Scenario& s, RunSetup& setup) {
     throw InputError(s.file, "disturbances",
                      "wind, rotor drag and ground effect act on quadrotors; this scenario has "
                      "none (ground robots feel no disturbances)");
-  const std::string& name = s.planner_name;
+  const std::string& name = s.motion.planner.name;
   setup.robot_planning = isNavigatorName(name) ? Planning::Navigator
                          : isMapfPlanner(name) ? Planning::Team
                                                : Planning::Alone;
   if (setup.robot_planning == Planning::Navigator && setup.robots.size() != 1)
     throw InputError(s.file, "planner.name", "navigators (" + name + ") drive one robot");
   checkAerialPlanner(s);
-  setup.robot_sections = topLevelSections(s);
-  setup.quadrotor_sections = aerialSections(s);
+  setup.robot_sections = s.motion;
+  setup.quadrotor_sections = s.aerial;
 }
 
 // A quadrotor team whose members all fly given references is not planned (each flies its own);
@@ -48,7 +48,7 @@ bool flyGivenReferences(const Scenario& s) {
   for (std::size_t i = 0; i < s.vehicles.size(); ++i)
     if (s.vehicles[i].reference)
       throw InputError(s.file, "vehicles[" + std::to_string(i) + "].reference",
-                       "team planner '" + s.planner_name +
+                       "team planner '" + s.motion.planner.name +
                            "' plans every quadrotor together: give every vehicle a reference, or "
                            "none (or use a single-agent planner, which plans each vehicle "
                            "without a reference alone)");
@@ -58,15 +58,15 @@ bool flyGivenReferences(const Scenario& s) {
 // Quadrotors alone: the top-level sections are theirs. A team planner plans them together,
 // unless every one flies a given reference.
 void resolveQuadrotorRun(const Scenario& s, RunSetup& setup) {
-  setup.quadrotor_sections = topLevelSections(s);
-  if (!isMapfPlanner(s.planner_name) || flyGivenReferences(s)) return;
+  setup.quadrotor_sections = s.motion;
+  if (!isMapfPlanner(s.motion.planner.name) || flyGivenReferences(s)) return;
   setup.quadrotor_planning = Planning::Team;
   // A quadrotor team flies in its members' downwash. Without a controller section it gets indi
   // rather than the single vehicle's cascade: measured on swarm32.yaml, cascade let a vehicle
   // sag about 0.2 m under another and break the planned separation (1 downwash violation),
   // while indi, geometric and dsl_pid kept it (closest 1.48, 1.17 and 1.30 ellipsoids).
   MotionSections& team = setup.quadrotor_sections;
-  if (!s.controller_given) team.controller.name = "indi";
+  if (!s.motion.controller.given) team.controller.name = "indi";
   team.trajectory.mode =
       TrajectoryMode::MinimumSnap;  // what the team flies, whatever the file said
 }

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "run/motion_sections.h"
+#include "sim/motion_sections.h"
 #include "sim/error_reference.h"
 #include "sim/scenario.h"
 

@@ -262,7 +262,7 @@ std::vector<BadInput> badScenarioInputs() {
        "key sensors.preset: unknown preset 'lidar' (ideal, mocap, onboard)"},
       {"negative_sensor_noise", plan,
        kValid + "sensors: {preset: mocap, position: {noise: -0.1}}\n", "", 2,
-       "key sensors.position.noise: must be >= 0"},
+       "key sensors.position.noise: = -0.1 is outside [0, 1e+06]"},
       {"latency_longer_than_run", plan,
        kValid + "sensors: {preset: mocap, attitude: {latency: 0.5}}\nsim: {max_time: 0.3}\n", "", 2,
        "key sensors.attitude.latency: latency 0.5 s is longer than the run"},

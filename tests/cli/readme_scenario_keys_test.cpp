@@ -2,10 +2,13 @@
 // each of its rows lists exactly the keys the loader accepts in that section (asked of the loader
 // itself, through the "allowed: ..." list of an unknown key), and the trajectory rows exactly the
 // parameters the flight reads. A key added to the loader but not to the reference fails here, and
-// so does a key the reference still lists after the loader dropped it.
+// so does a key the reference still lists after the loader dropped it. Its "Key by key" tables
+// (each key's type, default, range and meaning) must be exactly what the settings structs declare
+// (sim/scenario_key_docs.h); COSIM_UPDATE_KEY_DOCS=1 rewrites them from the declarations.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -17,6 +20,7 @@
 
 #include "core/input_error.h"
 #include "sim/scenario.h"
+#include "sim/scenario_key_docs.h"
 #include "tests/support/cosim_command.h"
 
 namespace cosim::test {
@@ -176,6 +180,43 @@ TEST(ReadmeScenarioKeys, TrajectoryRowsListTheParametersTheFlightReads) {
     ASSERT_NE(row, table.end()) << kKeyReference << "'s key table has no row for trajectory "
                                 << mode;
     EXPECT_EQ(row->second, trajectoryKeys(mode)) << mode;
+  }
+}
+
+const char* const kTablesBegin = "<!-- declared keys: begin -->\n";
+const char* const kTablesEnd = "<!-- declared keys: end -->\n";
+
+TEST(ReadmeScenarioKeys, KeyByKeyTablesAreTheDeclarations) {
+  const fs::path file = fs::path(COSIM_SOURCE_DIR) / kKeyReference;
+  std::string doc = slurp(file);
+  const auto begin = doc.find(kTablesBegin);
+  const auto end = doc.find(kTablesEnd);
+  ASSERT_NE(begin, std::string::npos) << kKeyReference << " has no " << kTablesBegin;
+  ASSERT_NE(end, std::string::npos) << kKeyReference << " has no " << kTablesEnd;
+  const auto from = begin + std::string(kTablesBegin).size();
+  const std::string expected = declaredKeysMarkdown();
+  if (std::getenv("COSIM_UPDATE_KEY_DOCS")) {
+    doc.replace(from, end - from, expected);
+    std::ofstream(file, std::ios::binary) << doc;
+  }
+  EXPECT_EQ(doc.substr(from, end - from), expected)
+      << kKeyReference << "'s key-by-key tables differ from the declarations (rewrite them: "
+      << "COSIM_UPDATE_KEY_DOCS=1 ctest -R ReadmeScenarioKeys)";
+}
+
+// The tables name real values: the sim section's row for timestep gives the default a scenario
+// without the key runs with, and the range the loader enforces.
+TEST(ReadmeScenarioKeys, TablesShowTheLoadersDefaultsAndRanges) {
+  const std::string tables = declaredKeysMarkdown();
+  EXPECT_NE(tables.find("| `timestep` | number | 0.001 | [1e-05, 0.02] |"), std::string::npos)
+      << tables;
+  const Scenario s = parseScenario(kScenario, "probe.yaml");
+  EXPECT_EQ(s.sim.timestep, 0.001);
+  try {
+    parseScenario(kScenario, "probe.yaml", {"sim.timestep=0.03"});
+    ADD_FAILURE() << "sim.timestep=0.03 accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.problem(), "= 0.03 is outside [1e-05, 0.02]");
   }
 }
 

@@ -28,8 +28,8 @@ inline Scenario renderTestScenario(int width = 320, int height = 180) {
   v.start = {3, 3, 2};
   v.waypoints = {{17, 5, 2}};
   s.vehicles.push_back(v);
-  s.planner_name = "theta_star";
-  s.trajectory_mode = TrajectoryMode::MinimumSnap;
+  s.motion.planner.name = "theta_star";
+  s.motion.trajectory.mode = TrajectoryMode::MinimumSnap;
   s.render.width = width;
   s.render.height = height;
   s.render.fps = 10;

@@ -170,15 +170,15 @@ TEST(RunLibrary, ATeamsDefaultsAreResolvedBesideTheScenario) {
   EXPECT_EQ(setup.quadrotor_sections.trajectory.mode, TrajectoryMode::MinimumSnap);
   EXPECT_EQ(&setup.primarySections(), &setup.quadrotor_sections);
   // The scenario keeps what its file said.
-  EXPECT_EQ(s.controller_name, "cascade");
-  EXPECT_EQ(s.trajectory_mode, TrajectoryMode::Waypoints);
+  EXPECT_EQ(s.motion.controller.name, "cascade");
+  EXPECT_EQ(s.motion.trajectory.mode, TrajectoryMode::Waypoints);
 }
 
 TEST(RunLibrary, APointMassPlanKeepsNoMarginAndTheScenarioKeepsItsOwn) {
   const Scenario s = parseScenario(kTwoCf2, "library-point-mass.yaml");
   EXPECT_DOUBLE_EQ(resolveRun(s, true).quadrotor_sections.planner.margin, 0.0);
   EXPECT_DOUBLE_EQ(resolveRun(s, false).quadrotor_sections.planner.margin, 0.3);
-  EXPECT_DOUBLE_EQ(s.planner_margin, 0.3);
+  EXPECT_DOUBLE_EQ(s.motion.planner.margin, 0.3);
 }
 
 TEST(RunLibrary, EveryRunEndIsWrittenAndReadBackByOneName) {

@@ -103,10 +103,10 @@ TEST(BatteryThrust, LoaderReadsTheThrustPathAndGivesPwmQuadraticADefaultBattery)
            "{name: crazyflie_lee, thrust_map: pwm_quadratic, platform: cf2, idle_thrust: 7000, "
            "thrust_map_coefficients: [0.1, 0.02, 0.0002]}"),
       "s.yaml", {});
-  EXPECT_EQ(s.controller_thrust_path.map, CrazyflieThrustMap::PwmQuadratic);
-  EXPECT_EQ(s.controller_thrust_path.platform, CrazyflieMixerPlatform::Cf2);
-  EXPECT_EQ(s.controller_thrust_path.idleThrust(), 7000.0);
-  EXPECT_EQ(s.controller_thrust_path.pwm_quadratic, Eigen::Vector3d(0.1, 0.02, 0.0002));
+  EXPECT_EQ(s.motion.controller.thrust_path.map, CrazyflieThrustMap::PwmQuadratic);
+  EXPECT_EQ(s.motion.controller.thrust_path.platform, CrazyflieMixerPlatform::Cf2);
+  EXPECT_EQ(s.motion.controller.thrust_path.idleThrust(), 7000.0);
+  EXPECT_EQ(s.motion.controller.thrust_path.pwm_quadratic, Eigen::Vector3d(0.1, 0.02, 0.0002));
   ASSERT_TRUE(s.vehicles[0].battery.has_value());
   EXPECT_EQ(s.vehicles[0].battery->capacity_mah, 350.0);
   EXPECT_EQ(s.vehicles[0].battery->state_of_charge, 1.0);
@@ -116,7 +116,7 @@ TEST(BatteryThrust, LoaderReadsTheThrustPathAndGivesPwmQuadraticADefaultBattery)
       "s.yaml", {});
   EXPECT_EQ(b.vehicles[0].battery->state_of_charge, 0.4);
   EXPECT_EQ(b.vehicles[0].battery->internal_resistance, 0.1);
-  EXPECT_EQ(b.controller_thrust_path.map, CrazyflieThrustMap::BatteryCompensated);
+  EXPECT_EQ(b.motion.controller.thrust_path.map, CrazyflieThrustMap::BatteryCompensated);
 }
 
 TEST(BatteryThrust, LoaderRefusesBadThrustPathAndBatteryKeys) {

@@ -48,7 +48,7 @@ TEST(CrazyflieSetup, MassSetsTheTotalAndScalesTheInertiaAtConstantRadiusOfGyrati
 TEST(CrazyflieSetup, LoaderReadsMassAndTheFirmwareControllers) {
   const Scenario s = parseScenario(kCrazyflie, "s.yaml", {});
   EXPECT_EQ(s.vehicles[0].mass, 0.037);
-  EXPECT_EQ(s.controller_name, "crazyflie_lee");
+  EXPECT_EQ(s.motion.controller.name, "crazyflie_lee");
   EXPECT_NE(errorOf(with(kCrazyflie, "mass: 0.037", "mass: -1")).find("vehicles[0].mass"),
             std::string::npos);
 }

@@ -53,16 +53,16 @@ TEST(ScenarioLoader, ReadsEverySection) {
   EXPECT_DOUBLE_EQ(s.world.obstacles[0].yaw_deg, 30.0);
   EXPECT_DOUBLE_EQ(s.world.obstacles[1].height, 6.0);
   EXPECT_EQ(s.vehicles[0].goal(), Eigen::Vector3d(18, 18, 4));
-  EXPECT_EQ(s.planner_name, "astar");
-  EXPECT_DOUBLE_EQ(s.planner_margin, 0.25);
-  EXPECT_TRUE(s.planner_params.has("resolution"));
-  EXPECT_FALSE(s.planner_params.has("margin"));
+  EXPECT_EQ(s.motion.planner.name, "astar");
+  EXPECT_DOUBLE_EQ(s.motion.planner.margin, 0.25);
+  EXPECT_TRUE(s.motion.planner.params.has("resolution"));
+  EXPECT_FALSE(s.motion.planner.params.has("margin"));
   EXPECT_EQ(s.sim.seed, 7u);
 }
 
 TEST(ScenarioLoader, SetOverridesApplyBeforeValidation) {
   const Scenario s = parseScenario(kGood, "s.yaml", {"planner.name=theta_star", "sim.seed=3"});
-  EXPECT_EQ(s.planner_name, "theta_star");
+  EXPECT_EQ(s.motion.planner.name, "theta_star");
   EXPECT_EQ(s.sim.seed, 3u);
 }
 

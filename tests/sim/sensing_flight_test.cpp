@@ -20,7 +20,7 @@ const char* const kScenario =
 Scenario hoverWith(const std::string& preset, double seconds, std::uint64_t seed = 1) {
   Scenario s = test::singleVehicleScenario({0, 0, 3}, {2, 1, 3}, seconds);
   s.sensors = sensorPreset(preset);
-  s.estimator.name = preset == "ideal" ? "ground_truth" : "ekf";
+  s.estimator.kind = preset == "ideal" ? EstimatorKind::GroundTruth : EstimatorKind::Ekf;
   s.sim.seed = seed;
   return s;
 }
@@ -37,7 +37,7 @@ RunLog flyGeometric(const Scenario& s, double k_i = GeometricGains{}.k_i) {
 
 TEST(SensingSections, APresetChoosesTheEkfAndBlocksChangeItsValues) {
   const Scenario a = parseScenario(std::string(kScenario) + "sensors: {preset: mocap}\n", "t.yaml");
-  EXPECT_EQ(a.estimator.name, "ekf");
+  EXPECT_EQ(a.estimator.kind, EstimatorKind::Ekf);
   EXPECT_TRUE(a.sensors.imu.present && a.sensors.position.present && a.sensors.attitude.present);
   EXPECT_DOUBLE_EQ(a.sensors.position.noise, sensorPreset("mocap").position.noise);
   const Scenario b = parseScenario(
@@ -47,11 +47,11 @@ TEST(SensingSections, APresetChoosesTheEkfAndBlocksChangeItsValues) {
   EXPECT_DOUBLE_EQ(b.sensors.position.rate, sensorPreset("onboard").position.rate);
   const Scenario c = parseScenario(kScenario, "t.yaml");
   EXPECT_TRUE(c.sensors.ideal());
-  EXPECT_EQ(c.estimator.name, "ground_truth");
+  EXPECT_EQ(c.estimator.kind, EstimatorKind::GroundTruth);
   const Scenario d = parseScenario(
       std::string(kScenario) + "sensors: {preset: mocap}\nestimator: {name: ground_truth}\n",
       "t.yaml");
-  EXPECT_EQ(d.estimator.name, "ground_truth");
+  EXPECT_EQ(d.estimator.kind, EstimatorKind::GroundTruth);
 }
 
 TEST(SensingFlight, TheControllerFliesOnAnEstimateAsGoodAsItsSensors) {
