@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "control/cascade_controller.h"
 #include "control/crazyflie_thrust_path.h"
 #include "core/param_set.h"
 #include "planning/team/separation_ellipsoid.h"
@@ -50,7 +51,7 @@ struct TrajectorySection {
 };
 
 struct ControllerSection {
-  std::string name = "cascade";  // cascade | geometric | indi | dsl_pid | crazyflie_*
+  std::string name = CascadeController::kName;  // a name of control/controller_registry.h
   // A controller section was written; without one a quadrotor team flies indi (run_setup.cpp).
   bool given = false;
   bool drag_compensation = false;  // rotor drag in the flatness feed-forward (geometric, indi)

@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "control/geometric_controller.h"
 #include "experiments/bench/loop_profile_table.h"
 #include "run/run_pipeline.h"
 #include "sim/aerodynamics.h"
@@ -50,7 +51,7 @@ Scenario teamScenario(int n, double seconds) {
   s.sim.timestep = 0.002;
   s.sim.control_rate = 250;
   s.sim.max_time = seconds;
-  s.aerial.controller.name = "geometric";
+  s.aerial.controller.name = GeometricController::kName;
   s.aerial.controller.gains = ParamSet("team_scale");
   s.aerial.planner.params = ParamSet("team_scale");
   s.aerial.trajectory.params = ParamSet("team_scale");

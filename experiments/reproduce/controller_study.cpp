@@ -12,7 +12,10 @@
 #include <iterator>
 #include <sstream>
 
+#include "control/dsl_pid_controller.h"
 #include "control/figure_eight_reference.h"
+#include "control/geometric_controller.h"
+#include "control/indi_controller.h"
 #include "core/atomic_file.h"
 #include "core/json_writer.h"
 #include "experiments/reproduce/report_files.h"
@@ -35,11 +38,11 @@ struct StudyController {
   bool drag_compensation;
 };
 
-const StudyController kControllers[] = {{"geometric", "geometric", false},
-                                        {"geometric_drag", "geometric", true},
-                                        {"indi", "indi", false},
-                                        {"indi_drag", "indi", true},
-                                        {"dsl_pid", "dsl_pid", false}};
+const StudyController kControllers[] = {{"geometric", GeometricController::kName, false},
+                                        {"geometric_drag", GeometricController::kName, true},
+                                        {"indi", IndiController::kName, false},
+                                        {"indi_drag", IndiController::kName, true},
+                                        {"dsl_pid", DslPidController::kName, false}};
 
 // An empty 30 x 20 x 8 m room, quad_1500g at the figure's centre, with the study's conditions.
 Scenario studyScenario(const FigureEightShape& shape, double seconds, std::uint64_t seed) {

@@ -6,6 +6,9 @@
 #include <cstdint>
 #include <string>
 
+#include "control/crazyflie_lee_controller.h"
+#include "control/crazyflie_mellinger_controller.h"
+#include "control/crazyflie_pid_controller.h"
 #include "sim/scenario.h"
 
 namespace cosim::reproduce {
@@ -36,21 +39,21 @@ constexpr char kFirmwareDefaultMass[] = "lee/firmware_default_mass";
 // The controller columns, then the effect rows (crazyflie_lee with one effect off; the last,
 // every effect off at once).
 inline constexpr FigureEightVariant kFigureEightControllers[] = {
-    {"crazyflie_lee", "crazyflie_lee"},
-    {"crazyflie_mellinger", "crazyflie_mellinger"},
-    {"crazyflie_pid", "crazyflie_pid"},
-    {kFirmwareDefaultMass, "crazyflie_lee", kNoEffectOff, true}};
+    {CrazyflieLeeController::kName, CrazyflieLeeController::kName},
+    {CrazyflieMellingerController::kName, CrazyflieMellingerController::kName},
+    {CrazyfliePidController::kName, CrazyfliePidController::kName},
+    {kFirmwareDefaultMass, CrazyflieLeeController::kName, kNoEffectOff, true}};
 
 inline constexpr FigureEightVariant kFigureEightEffects[] = {
-    {"lee/ideal_sensing", "crazyflie_lee", kSensing},
-    {"lee/ekf_estimator", "crazyflie_lee", kFirmwareEstimator},
-    {"lee/no_mocap_latency", "crazyflie_lee", kMocapLatency},
-    {"lee/no_imu_noise", "crazyflie_lee", kImuNoise},
-    {"lee/no_battery_sag", "crazyflie_lee", kBatterySag},
-    {"lee/no_rotor_drag", "crazyflie_lee", kRotorDrag},
-    {"lee/no_motor_lag", "crazyflie_lee", kMotorLag},
-    {"lee/unlimited_thrust", "crazyflie_lee", kThrustLimit},
-    {"lee/all_off", "crazyflie_lee",
+    {"lee/ideal_sensing", CrazyflieLeeController::kName, kSensing},
+    {"lee/ekf_estimator", CrazyflieLeeController::kName, kFirmwareEstimator},
+    {"lee/no_mocap_latency", CrazyflieLeeController::kName, kMocapLatency},
+    {"lee/no_imu_noise", CrazyflieLeeController::kName, kImuNoise},
+    {"lee/no_battery_sag", CrazyflieLeeController::kName, kBatterySag},
+    {"lee/no_rotor_drag", CrazyflieLeeController::kName, kRotorDrag},
+    {"lee/no_motor_lag", CrazyflieLeeController::kName, kMotorLag},
+    {"lee/unlimited_thrust", CrazyflieLeeController::kName, kThrustLimit},
+    {"lee/all_off", CrazyflieLeeController::kName,
      kSensing | kThrustLimit | kRotorDrag | kMotorLag | kFirmwareEstimator | kBatterySag |
          kImuNoise | kMocapLatency}};
 

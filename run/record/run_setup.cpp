@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "control/indi_controller.h"
 #include "core/input_error.h"
 #include "planning/mapf/mapf_planner_registry.h"
 #include "planning/planner_registry.h"
@@ -66,7 +67,7 @@ void resolveQuadrotorRun(const Scenario& s, RunSetup& setup) {
   // sag about 0.2 m under another and break the planned separation (1 downwash violation),
   // while indi, geometric and dsl_pid kept it (closest 1.48, 1.17 and 1.30 ellipsoids).
   MotionSections& team = setup.quadrotor_sections;
-  if (!s.motion.controller.given) team.controller.name = "indi";
+  if (!s.motion.controller.given) team.controller.name = IndiController::kName;
   team.trajectory.mode =
       TrajectoryMode::MinimumSnap;  // what the team flies, whatever the file said
 }

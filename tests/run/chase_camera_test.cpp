@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 
 #include "render/camera_occlusion.h"
 #include "render/camera_rig.h"
@@ -26,7 +27,9 @@ bool topOfFrameOnFloor(const CameraPose& p, double floor_z, Eigen::Vector3d& hit
 }
 
 TEST(ChaseCamera, DefaultRunIsNeverFilmedFromInsideOrBehindAnObstacleOrBeyondTheWorld) {
-  Scenario s = loadScenario(std::string(COSIM_SOURCE_DIR) + "/experiments/scenarios/default.yaml");
+  const std::filesystem::path file =
+      std::filesystem::path(COSIM_SOURCE_DIR) / "experiments/scenarios/default.yaml";
+  Scenario s = loadScenario(file.string());
   std::string metrics;
   const RunRecord run = test::runWithoutPictures(s, "chase-default", metrics);
   ASSERT_FALSE(run.log.vehicles.empty());
