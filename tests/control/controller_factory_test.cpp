@@ -7,6 +7,7 @@
 
 #include "closed_loop_flight.h"
 #include "core/input_error.h"
+#include "tests/support/input_error_message.h"
 
 namespace cosim {
 namespace {
@@ -14,18 +15,12 @@ namespace {
 using testing::quad1500g;
 
 std::string messageOf(const std::function<void()>& build) {
-  try {
-    build();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no InputError";
+  return test::inputErrorMessageOf(build);
 }
 
 TEST(ControllerFactory, UnknownNameNamesTheFileAndKey) {
   ParamSet gains("trip.yaml");
-  const std::string m =
-      messageOf([&] { makeFlightController("geometirc", gains, quad1500g()); });
+  const std::string m = messageOf([&] { makeFlightController("geometirc", gains, quad1500g()); });
   EXPECT_NE(m.find("trip.yaml"), std::string::npos) << m;
   EXPECT_NE(m.find("controller.name"), std::string::npos) << m;
   EXPECT_NE(m.find("geometirc"), std::string::npos) << m;
@@ -34,8 +29,9 @@ TEST(ControllerFactory, UnknownNameNamesTheFileAndKey) {
 TEST(ControllerFactory, DragCompensationOnlyForGeometricAndIndi) {
   for (const std::string name : {"cascade", "dsl_pid"}) {
     ParamSet gains("trip.yaml");
-    EXPECT_NE(messageOf([&] { makeFlightController(name, gains, quad1500g(), true); })
-                  .find("controller.drag_compensation"),
+    EXPECT_NE(messageOf([&] {
+                makeFlightController(name, gains, quad1500g(), true);
+              }).find("controller.drag_compensation"),
               std::string::npos)
         << name;
   }

@@ -13,6 +13,7 @@
 #include "control/crazyflie_lee_controller.h"
 #include "control/geometric_controller.h"
 #include "core/input_error.h"
+#include "tests/support/input_error_message.h"
 
 namespace cosim {
 namespace {
@@ -20,12 +21,7 @@ namespace {
 using testing::quad1500g;
 
 std::string messageOf(const std::function<void()>& build) {
-  try {
-    build();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no InputError";
+  return test::inputErrorMessageOf(build);
 }
 
 TEST(ControllerRegistry, ListsTheSevenControllersWithTheirTeamShortfallDragAndThrustPath) {
