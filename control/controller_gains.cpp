@@ -1,27 +1,15 @@
 #include "control/controller_gains.h"
 
-#include <sstream>
-
 namespace cosim {
 
 namespace {
 
-// As ParamSet shows values (12 significant digits), so the listing's default is the text a
-// scenario's value is compared with.
-std::string gainText(double v) {
-  std::ostringstream out;
-  out.precision(12);
-  out << v;
-  return out.str();
-}
-
 GainKey keyOf(const GainDeclaration& d, const std::string& suffix, double default_value,
               const std::string& axes) {
-  // (appended piecewise: GCC 12 warns falsely on "..." + std::string, -Wrestrict)
-  std::string range;
-  range.append("[").append(gainText(d.lo)).append(", ").append(gainText(d.hi)).append("]");
-  return {d.name + suffix, d.absent_means.empty() ? gainText(default_value) : d.absent_means, range,
-          axes.empty() ? d.doc : d.doc + " (" + axes + ")"};
+  // As ParamSet shows values and ranges, so the listing reads as `cosim plan --list` does and
+  // its default is the text a scenario's value is compared with.
+  return {d.name + suffix, d.absent_means.empty() ? paramNumberText(default_value) : d.absent_means,
+          paramNumberRangeText(d.lo, d.hi), axes.empty() ? d.doc : d.doc + " (" + axes + ")"};
 }
 
 }  // namespace

@@ -34,6 +34,14 @@ std::string formatInt(long v) {
 }
 }  // namespace
 
+std::string paramNumberText(double v) {
+  return formatNumber(v);
+}
+
+std::string paramNumberRangeText(double lo, double hi) {
+  return rangeText(lo, hi, -1e300, 1e300, formatNumber);
+}
+
 void ParamSet::declare(ParamDeclaration declaration) {
   for (const ParamDeclaration& d : declarations_)
     if (d.name == declaration.name) return;  // the first ask declares it
@@ -58,7 +66,7 @@ const ParamSet::Entry* ParamSet::find(const std::string& name) {
 }
 
 double ParamSet::getDouble(const std::string& name, double fallback, double lo, double hi) {
-  declare({name, "number", formatNumber(fallback), rangeText(lo, hi, -1e300, 1e300, formatNumber)});
+  declare({name, "number", formatNumber(fallback), paramNumberRangeText(lo, hi)});
   double v = fallback;
   if (const Entry* e = find(name)) {
     char* end = nullptr;

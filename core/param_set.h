@@ -19,6 +19,12 @@ struct ParamDeclaration {
   std::string range;          // "[0.01, 100]", ">= 1", "true|false", "fixed|dynamic", "any"
 };
 
+// A number as a ParamSet shows it (12 significant digits), and a number's valid range as its
+// declaration does ("[lo, hi]", ">= lo", "<= hi", "any"): for lists of parameters declared
+// elsewhere (a controller's gains) to read as the planners' do.
+std::string paramNumberText(double v);
+std::string paramNumberRangeText(double lo, double hi);
+
 class ParamSet {
  public:
   ParamSet() = default;
