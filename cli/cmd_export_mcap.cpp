@@ -9,6 +9,7 @@
 #include "core/atomic_file.h"
 #include "core/output_files.h"
 #include "core/output_manifest.h"
+#include "run/foxglove_layout.h"
 #include "run/run_mcap.h"
 #include "sim/world_model.h"
 
@@ -19,7 +20,9 @@ void addExportMcapCommand(CLI::App& app, CommandContext& ctx) {
       "export-mcap",
       "Write a logged run (a folder of cosim run) as an MCAP file for Foxglove and Lichtblick:\n"
       "the world, vehicles and paths (foxglove.SceneUpdate), each vehicle's pose\n"
-      "(foxglove.FrameTransform on /tf), its state for plots (/vehicles/<name>/state).");
+      "(foxglove.FrameTransform on /tf), its state for plots (/vehicles/<name>/state); beside\n"
+      "it FILE.layout.json, a Foxglove layout (3D view of the world and vehicles, plots of\n"
+      "position and error): in Foxglove, Layouts > Import from file.");
   struct Args {
     std::string dir, out;
     double rate = 100.0;
@@ -36,12 +39,21 @@ void addExportMcapCommand(CLI::App& app, CommandContext& ctx) {
     const std::filesystem::path out =
         a->out.empty() ? dir / "run.mcap" : std::filesystem::path(a->out);
     checkOutputPath(out, a->out.empty() ? "run folder" : "--out");
+    const std::filesystem::path layout = foxgloveLayoutPathFor(out);
+    checkOutputPath(layout, a->out.empty() ? "run folder" : "--out");
     const RunRecord record = readRunRecord(dir, s);
     const McapExport file = runToMcap(s, record, a->rate, std::string("cosim ") + COSIM_VERSION);
     writeFileAtomically(out, file.bytes);
     writeOutputManifestOf(out, "export-mcap");  // proves the file cosim's to a later export
+    std::vector<std::string> names;
+    for (const auto& v : record.log.vehicles) names.push_back(v.name);
+    writeFileAtomically(
+        layout, foxgloveLayout(names, s.world.bounds_min, s.world.bounds_max).dump(2) + "\n");
+    writeOutputManifestOf(layout, "export-mcap");
     std::cout << "written: " << out.string() << " (" << file.messages << " messages on "
-              << file.channels << " channels, " << file.bytes.size() << " bytes)\n";
+              << file.channels << " channels, " << file.bytes.size() << " bytes) and "
+              << layout.filename().string()
+              << " beside it (a Foxglove layout: Layouts > Import from file)\n";
     ctx.status = 0;
   });
 }

@@ -1,4 +1,6 @@
-// cosim plan SCENARIO.yaml: planning only, no physics. Writes path.csv and plan.json.
+// cosim plan SCENARIO.yaml: planning only, no physics. Writes path.csv, plan.json and the path
+// drawn in its world (plan.png, plan.svg).
+#include <cstdio>
 #include <iostream>
 
 #include "cli/command.h"
@@ -10,15 +12,57 @@
 #include "core/output_files.h"
 #include "core/output_manifest.h"
 #include "core/stop_request.h"
+#include "render/plan_figure.h"
 #include "run/scenario_checks.h"
 #include "run/scenario_planning.h"
 
 namespace cosim::cli {
 
+namespace {
+// "44.15 m": a length as the console prints it (centimetres, not std::to_string's six decimals).
+std::string lengthText(double metres) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.2f m", metres);
+  return buf;
+}
+
+// path.csv, plan.json and the picture (plan.png, plan.svg) of `plan` into `dir`.
+void writePlanOutputs(const Scenario& s, const VehiclePlan& plan,
+                      const std::filesystem::path& dir) {
+  std::string csv = "x,y,z\n";
+  for (const auto& p : plan.path.waypoints) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g\n", p.x(), p.y(), p.z());
+    csv += buf;
+  }
+  JsonObject j;
+  j.add("success", plan.success)
+      .add("status", toString(plan.status))
+      .add("length_m", plan.success ? plan.path.length() : 0.0)
+      .add("time_ms", plan.time_ms)
+      .add("waypoints", plan.path.size())
+      .add("planner", s.motion.planner.name)
+      .add("inflation_m", plan.inflation)
+      .add("message", plan.message)
+      .add("counters", plan.counters)
+      .add("params", plan.params);
+  for (const auto& [k, v] : plan.counters) j.add(k, v);
+  writeFileAtomically(dir / "path.csv", csv);
+  writeFileAtomically(dir / "plan.json", j.str() + "\n");
+  const VehicleSpec& vehicle = s.vehicles.front();
+  writePlanFigure(s.world, plan.path.waypoints, vehicle.start, vehicle.goal(),
+                  std::filesystem::path(s.file).filename().string() + ": " + s.motion.planner.name +
+                      (plan.success ? ", " + lengthText(plan.path.length()) : ", no path"),
+                  dir / "plan");
+}
+
+}  // namespace
+
 void addPlanCommand(CLI::App& app, CommandContext& ctx) {
   auto* cmd = app.add_subcommand(
       "plan",
-      "Plan the first vehicle's path in a scenario's world, without physics. Writes path.csv and\n"
+      "Plan the first vehicle's path in a scenario's world, without physics. Writes path.csv,\n"
+      "plan.png and plan.svg (the path in its world, from above and from the side), and\n"
       "plan.json (success, status, length_m, time_ms, counters, planner, params). Exit 1 if no\n"
       "path or interrupted. `cosim plan --list` lists every planner with its parameters (name,\n"
       "default, valid values, what it does).");
@@ -47,10 +91,14 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
     // is made if needed; bad input touches nothing.
     checkOutputDir(a->out);
     const Scenario s = loadScenarioForPlan(a->scenario, a->sets, a->planner);
-    if (!a->out.empty()) removeStaleResults(a->out, {"plan.json", "path.csv"});
+    if (!a->out.empty())
+      removeStaleResults(a->out, {"plan.json", "path.csv", "plan.png", "plan.svg"});
     const auto dir = prepareOutputDir(a->out, "plan");
     OutputManifestScope manifest(dir, "plan");
     const VehiclePlan plan = planFirstVehicle(s);
+    for (const auto& name : plan.set_aside_params)
+      std::cout << "note: the scenario's planner." << name << " does not apply to "
+                << s.motion.planner.name << " (chosen by --planner or --set): set aside\n";
     // A planner ended by the stop request says so; a request that came after it returned is an
     // interrupt all the same.
     if (plan.status == PlannerStatus::Stopped || stopRequested()) {
@@ -58,31 +106,13 @@ void addPlanCommand(CLI::App& app, CommandContext& ctx) {
       ctx.status = 1;
       return;
     }
-    std::string csv = "x,y,z\n";
-    for (const auto& p : plan.path.waypoints) {
-      char buf[96];
-      std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g\n", p.x(), p.y(), p.z());
-      csv += buf;
-    }
-    JsonObject j;
-    j.add("success", plan.success)
-        .add("status", toString(plan.status))
-        .add("length_m", plan.success ? plan.path.length() : 0.0)
-        .add("time_ms", plan.time_ms)
-        .add("waypoints", plan.path.size())
-        .add("planner", s.motion.planner.name)
-        .add("inflation_m", plan.inflation)
-        .add("message", plan.message)
-        .add("counters", plan.counters)
-        .add("params", plan.params);
-    for (const auto& [k, v] : plan.counters) j.add(k, v);
-    writeFileAtomically(dir / "path.csv", csv);
-    writeFileAtomically(dir / "plan.json", j.str() + "\n");
+    writePlanOutputs(s, plan, dir);
     manifest.finish();
     std::cout << "plan: " << printableText(dir.string()) << "\n  " << s.motion.planner.name << ": "
-              << (plan.success ? "path of " + std::to_string(plan.path.length()) + " m"
+              << (plan.success ? "path of " + lengthText(plan.path.length())
                                : "no path (" + plan.message + ")")
-              << ", " << plan.time_ms << " ms\n";
+              << ", " << plan.time_ms
+              << " ms; picture: " << printableText((dir / "plan.png").string()) << "\n";
     ctx.status = plan.success ? 0 : 1;
   });
 }

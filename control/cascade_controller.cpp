@@ -131,7 +131,8 @@ const GainTable<CascadeGains>& cascadeGains() {
 void registerCascadeController(ControllerRegistry& registry) {
   ControllerEntry e;
   e.name = CascadeController::kName;
-  e.summary = "seed 003's cascade (Quan 2017): position P -> velocity PI -> attitude P -> rate PI";
+  e.summary =
+      "Navratil 2019's cascade (Quan 2017): position P -> velocity PI -> attitude P -> rate PI";
   e.gains = cascadeGains().declarations();
   e.team_shortfall = 0.62;  // swarm32 0.88 (a 0.2 m sag under another), dense 1.09
   e.make = [](const QuadrotorParams& params, ParamSet& gains,

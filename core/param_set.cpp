@@ -52,6 +52,20 @@ void ParamSet::set(const std::string& name, const std::string& value, const std:
   values_[name] = Entry{value, place};
 }
 
+std::vector<std::string> ParamSet::names() const {
+  std::vector<std::string> out;
+  for (const auto& [name, entry] : values_) out.push_back(name);
+  return out;
+}
+
+ParamSet ParamSet::without(const std::vector<std::string>& names) const {
+  ParamSet copy(file_);
+  for (const auto& [name, entry] : values_)
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      copy.set(name, entry.value, entry.place);
+  return copy;
+}
+
 void ParamSet::fail(const std::string& name, const std::string& problem) const {
   auto it = values_.find(name);
   std::string place =
@@ -158,6 +172,20 @@ std::vector<std::string> ParamSet::requireAllUsedExcept(
     ignored.push_back(name);
   }
   return ignored;
+}
+
+void ParamSet::requireAllUsed(const std::string& owner,
+                              const std::map<std::string, std::string>& others) const {
+  for (const auto& [name, entry] : values_) {
+    if (used_.count(name)) continue;
+    const auto taker = others.find(name);
+    if (taker == others.end()) fail(name, unknownParameterProblem(name, owner, used_));
+    std::string list;
+    for (const auto& [known, used] : used_) list += (list.empty() ? "" : ", ") + known;
+    fail(name, "parameter '" + name + "' does not apply to " + owner + " (it is a parameter of " +
+                   taker->second + "; " + owner + " takes: " + (list.empty() ? "none" : list) +
+                   ")");
+  }
 }
 
 void ParamSet::requireAllUsed(const std::string& owner) const {

@@ -34,6 +34,10 @@ class ParamSet {
   // Sets a raw value; place is e.g. "line 12, key planner.resolution".
   void set(const std::string& name, const std::string& value, const std::string& place = "");
   bool has(const std::string& name) const { return values_.count(name) != 0; }
+  // The names set (not those only asked for), in name order.
+  std::vector<std::string> names() const;
+  // A copy without the values of `names` (as if they had never been set).
+  ParamSet without(const std::vector<std::string>& names) const;
 
   double getDouble(const std::string& name, double fallback, double lo = -1e300, double hi = 1e300);
   int getInt(const std::string& name, int fallback, int lo = -2147483647, int hi = 2147483647);
@@ -48,6 +52,11 @@ class ParamSet {
   // (for a note to the user) instead.
   std::vector<std::string> requireAllUsedExcept(const std::string& owner,
                                                 const std::vector<std::string>& tolerated) const;
+  // As requireAllUsed, but a parameter that other consumers take is named as theirs: `others`
+  // maps such a name to who takes it ("planners rrt, rrt_star"), and the message says that it
+  // does not apply to `owner` and lists what `owner` takes.
+  void requireAllUsed(const std::string& owner,
+                      const std::map<std::string, std::string>& others) const;
 
   // Every parameter asked for, with the value in force (set or default), for plan.json.
   const std::map<std::string, std::string>& effective() const { return effective_; }

@@ -17,7 +17,8 @@ const Docs& commonDocs() {
       {"resolution", "metres per grid cell of the world's voxel grid"},
       {"cell_blocking",
        "which cells are blocked: exact (the vehicle cannot stand at the centre; edges checked "
-       "against the obstacles), cell (any point of the cell near an obstacle), centre (seed 003's "
+       "against the obstacles), cell (any point of the cell near an obstacle), centre (Navratil "
+       "2019's "
        "grid)"},
       {"connectivity", "moves per cell: 0 = all (8 in 2D, 26 in 3D), or 4/8 (2D), 6/18/26 (3D)"},
       {"corner_cutting", "a diagonal move needs only its target cell free (else its sides too)"},
@@ -33,10 +34,12 @@ const Docs& commonDocs() {
       {"goal_bias", "probability of sampling the goal"},
       {"goal_tolerance", "metres: the goal is joined from a node this close"},
       {"shortcut", "shorten the final path by line-of-sight shortcuts"},
-      {"neighbour_search", "nearest nodes by kdtree, or linear (every node, as seed 003's MATLAB)"},
+      {"neighbour_search",
+       "nearest nodes by kdtree, or linear (every node, as Navratil 2019's MATLAB)"},
       {"rewire_radius", "metres: neighbours rewired around a new node; 0 = k-nearest (log n)"},
       {"choose_parent",
-       "near: cheapest neighbour as parent (Karaman-Frazzoli); nearest_parent: seed 003's Fig. 16"},
+       "near: cheapest neighbour as parent (Karaman-Frazzoli); nearest_parent: Navratil 2019's "
+       "Fig. 16"},
       {"max_tree_nodes", "RRT*FN: nodes kept (the childless node farthest from the goal goes)"},
       {"k", "roadmap neighbours joined per sample"},
       // Ant colonies and other swarms.
@@ -71,13 +74,13 @@ const std::map<std::string, Docs>& specificDocs() {
       {"msac",
        {{"ants", "scout ants per group (one group from the start, one from the goal)"},
         {"iterations", "MAX: iterations of S_max steps before giving up"},
-        {"s_max", "steps per iteration; 0 = N*N/2 with N the larger grid side (seed 000)"},
+        {"s_max", "steps per iteration; 0 = N*N/2 with N the larger grid side (Pencik 2014)"},
         {"post_processing", "cycle removal and light smoothing of each path found"},
-        {"tabu_version", "tabu list variant of seed 000 (1, 2 or 3)"},
-        {"keep_dead_ends", "dead-end marks carry over between iterations (seed 000 §4.3.2)"}}},
+        {"tabu_version", "tabu list variant of Pencik 2014 (1, 2 or 3)"},
+        {"keep_dead_ends", "dead-end marks carry over between iterations (Pencik 2014 §4.3.2)"}}},
       {"saco",
        {{"gamma", "memory capacity: visited cells held as obstacles (0 = none)"},
-        {"memory", "first: the first gamma cells visited; rolling: the last gamma (seed 000)"},
+        {"memory", "first: the first gamma cells visited; rolling: the last gamma (Pencik 2014)"},
         {"elitist_weight", "Elitist Ant System weight of the best path (0 = plain Ant System)"},
         {"smoothing", "light smoothing after the cycle removal"},
         {"sufficient_length", "stop once a path is this short, in cells (0 = off)"},
@@ -91,7 +94,8 @@ const std::map<std::string, Docs>& specificDocs() {
         {"deposit", "pheromone the best ant deposits (Q)"},
         {"initial_pheromone", "pheromone on every cell at the start"},
         {"heading",
-         "heuristic: turn_and_goal (turn and deviation from the goal line) or turn (seed 002)"}}},
+         "heuristic: turn_and_goal (turn and deviation from the goal line) or turn (the "
+         "ant-algorithm lecture)"}}},
       {"mmas",
        {{"p_best", "probability of rebuilding the best path at convergence (sets tau_min)"},
         {"stall_iterations", "iterations without improvement before pheromone reinitialisation"},
@@ -104,7 +108,7 @@ const std::map<std::string, Docs>& specificDocs() {
         {"mutation_probability", "probability that a child mutates"},
         {"guided_initial", "initial paths guided by the ants' heuristic (else uniform walks)"},
         {"shortening_mutation", "Tuncer-Yildirim mutation (else a random legal neighbour)"},
-        {"local_search", "staircase shortcuts on every child (not in seed 002)"}}},
+        {"local_search", "staircase shortcuts on every child (not in the ant-algorithm lecture)"}}},
       {"pso",
        {{"particles", "particles"},
         {"iterations", "iterations"},

@@ -1,14 +1,15 @@
 #include "planning/planner_registry.h"
 
 #include <algorithm>
+#include <map>
 
+#include "core/input_error.h"
+#include "core/name_suggestion.h"
 #include "planning/grid/grid_planners.h"
 #include "planning/grid/grid_world_planner.h"
-#include "core/input_error.h"
 #include "planning/mapf/mapf_planner_registry.h"
-#include "core/name_suggestion.h"
-#include "planning/sampling/sampling_planners.h"
 #include "planning/navigation/navigation_planners.h"
+#include "planning/sampling/sampling_planners.h"
 #include "planning/swarm/acs_maklink.h"
 #include "planning/swarm/grid_walk_planners.h"
 #include "planning/swarm/msac_saco_planners.h"
@@ -115,6 +116,28 @@ const std::vector<std::string>& allPlannerParameterNames() {
   return names;
 }
 
+namespace {
+// Each parameter name some registered planner reads -> "planners a, b" (who reads it).
+const std::map<std::string, std::string>& plannersByParameter() {
+  static const std::map<std::string, std::string> takers = [] {
+    std::map<std::string, std::vector<std::string>> names;
+    for (const auto& e : PlannerRegistry::instance().entries()) {
+      ParamSet probe("probe");
+      e.make(probe);
+      for (const auto& [k, v] : probe.effective()) names[k].push_back(e.name);
+    }
+    std::map<std::string, std::string> text;
+    for (const auto& [k, planners] : names) {
+      std::string list;
+      for (const auto& p : planners) list += (list.empty() ? "" : ", ") + p;
+      text[k] = (planners.size() == 1 ? "planner " : "planners ") + list;
+    }
+    return text;
+  }();
+  return takers;
+}
+}  // namespace
+
 std::vector<ParamDeclaration> declaredParameters(const PlannerEntry& entry) {
   ParamSet probe("probe");
   entry.make(probe);
@@ -124,6 +147,10 @@ std::vector<ParamDeclaration> declaredParameters(const PlannerEntry& entry) {
 std::unique_ptr<Planner> makePlanner(const std::string& name, ParamSet& params,
                                      const std::string& place, std::vector<std::string>* ignored) {
   auto planner = findOrThrow(name, params, place, false).make(params);
+  if (!ignored) {
+    params.requireAllUsed("planner '" + name + "'", plannersByParameter());
+    return planner;
+  }
   const auto unused =
       params.requireAllUsedExcept("planner '" + name + "'", allPlannerParameterNames());
   if (ignored) ignored->insert(ignored->end(), unused.begin(), unused.end());

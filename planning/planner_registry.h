@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "planning/grid/grid_planner.h"
 #include "core/param_set.h"
+#include "planning/grid/grid_planner.h"
 #include "planning/planner.h"
 
 namespace cosim {
@@ -44,9 +44,11 @@ class PlannerRegistry {
 // Throws InputError (from params.file()) for an unknown name or unknown/invalid parameters.
 std::unique_ptr<GridPlanner> makeGridPlanner(const std::string& name, ParamSet& params,
                                              const std::string& place = "--planner");
-// A parameter that some other registered planner takes (e.g. a grid's `resolution` when a sweep
-// switches to rrt_star) is not an error: its name is added to `ignored`, if given. A name no
-// planner takes is an error (a misspelling).
+// Every parameter must be one the planner takes. Without `ignored` a parameter of another planner
+// is an error naming the planners that take it and listing this one's (a scenario's `--set
+// planner.step=1` with theta_star must not be silently dropped). With `ignored` (plan-bench, which
+// gives every planner it compares the scenario's parameters) such a parameter is added to it
+// instead; a name no planner takes is an error either way (a misspelling).
 std::unique_ptr<Planner> makePlanner(const std::string& name, ParamSet& params,
                                      const std::string& place = "key planner.name",
                                      std::vector<std::string>* ignored = nullptr);

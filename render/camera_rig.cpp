@@ -87,6 +87,38 @@ void cameraAxes(const CameraPose& p, Eigen::Vector3d& forward, Eigen::Vector3d& 
 
 }  // namespace
 
+bool frameCoordinates(const CameraPose& p, const Eigen::Vector3d& point, double aspect,
+                      Eigen::Vector2d& uv) {
+  Eigen::Vector3d forward, up, right;
+  cameraAxes(p, forward, up, right);
+  const Eigen::Vector3d d = point - p.eye();
+  const double depth = d.dot(forward);
+  if (depth <= 1e-9) return false;
+  const double ty = std::tan(0.5 * p.fovy_deg * kDeg), tx = ty * aspect;
+  uv = {d.dot(right) / (depth * tx), d.dot(up) / (depth * ty)};
+  return true;
+}
+
+CameraPose CameraRig::keepInZone(CameraPose p, const Eigen::Vector3d& target) const {
+  const auto inZone = [&](const CameraPose& q) {
+    Eigen::Vector2d uv;
+    return frameCoordinates(q, target, aspect_, uv) && ChaseVehicleZone::contains(uv);
+  };
+  if (inZone(p)) return p;
+  // Bisect the share of the way from the aim to the vehicle (at the vehicle it is at the centre
+  // of the frame): the least move that brings it into the zone, so the aim moves smoothly.
+  const Eigen::Vector3d aim = p.lookat;
+  double lo = 0.0, hi = 1.0;
+  for (int i = 0; i < 14; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    p.lookat = aim + mid * (target - aim);
+    (inZone(p) ? hi : lo) = mid;
+  }
+  p.lookat = aim + hi * (target - aim);
+  if (!eyeIsClear(p, target)) p.distance = clearDistance(p, target);
+  return p;
+}
+
 bool CameraRig::topOfFrameInsideWorld(const CameraPose& p) const {
   // The rays through the frame's top corners and top centre (model lens) all meet the floor
   // within the world, a thirtieth of its size of slack: no sky beyond its edge shows.
@@ -120,8 +152,7 @@ double CameraRig::nearOccludedShare(const CameraPose& p, double depth) const {
     for (int j = 0; j < kRows; ++j) {
       const double u = (2.0 * i + 1.0) / kColumns - 1.0, v = (2.0 * j + 1.0) / kRows - 1.0;
       const Eigen::Vector3d ray = (forward + u * tx * right + v * ty * up).normalized();
-      if (firstObstacleHit(scenario_.world.obstacles, eye, eye + depth * ray, 0.0) < 1.0)
-        ++blocked;
+      if (firstObstacleHit(scenario_.world.obstacles, eye, eye + depth * ray, 0.0) < 1.0) ++blocked;
     }
   return static_cast<double>(blocked) / (kColumns * kRows);
 }
@@ -194,8 +225,8 @@ CameraPose CameraRig::chase(double t) const {
   CameraPose smooth = p;
   smooth.distance = distance;
   smooth.elevation = elevation;
-  if (eyeIsClear(smooth, chaseTarget(t))) return smooth;
-  return clearPose(p, chaseTarget(t));
+  if (eyeIsClear(smooth, chaseTarget(t))) return keepInZone(smooth, chaseTarget(t));
+  return keepInZone(clearPose(p, chaseTarget(t)), chaseTarget(t));
 }
 
 CameraPose CameraRig::overview() const {

@@ -3,6 +3,7 @@
 // the log and t alone (no state carried between frames), so any frame can be rendered on its
 // own and a re-render from the log reproduces the video exactly.
 #include <Eigen/Core>
+#include <cmath>
 #include <string>
 
 #include "sim/camera_kind.h"
@@ -21,6 +22,23 @@ struct CameraPose {
   double fovy_deg = 45.0;
   // Where the eye is: lookat - distance * forward.
   Eigen::Vector3d eye() const;
+};
+
+// Where `point` appears in a frame of `aspect` (width / height) filmed from `p`: (-1, -1) the
+// bottom-left corner, (1, 1) the top-right; false if the point is behind the camera.
+bool frameCoordinates(const CameraPose& p, const Eigen::Vector3d& point, double aspect,
+                      Eigen::Vector2d& uv);
+
+// Where the chase camera keeps its vehicle in the frame (frameCoordinates): clear of the legend
+// in the bottom-left corner and the colour scale in the bottom-right (each up to about a third
+// of the frame's height: frame_annotations.cpp), and of the frame's sides and top.
+struct ChaseVehicleZone {
+  static constexpr double kMaxAcross = 0.7;  // |u|
+  static constexpr double kLowest = -0.4;    // v
+  static constexpr double kHighest = 0.7;    // v
+  static bool contains(const Eigen::Vector2d& uv) {
+    return std::abs(uv.x()) <= kMaxAcross && uv.y() >= kLowest && uv.y() <= kHighest;
+  }
 };
 
 class CameraRig {
@@ -45,6 +63,10 @@ class CameraRig {
   CameraPose chaseAt(double t, double azimuth) const;
   Eigen::Vector3d chaseTarget(double t) const;  // the chased vehicle's position
   CameraPose chase(double t) const;
+  // p with its aim moved toward `target` (the vehicle) just far enough that the vehicle is in
+  // ChaseVehicleZone: a steep view from close by puts the point aimed ahead of the vehicle at
+  // the centre and the vehicle itself low in the frame, under the legend.
+  CameraPose keepInZone(CameraPose p, const Eigen::Vector3d& target) const;
   // The eye over the floor, clear of obstacles, with nothing between it and `target`.
   bool eyeIsClear(const CameraPose& p, const Eigen::Vector3d& target) const;
   // Whether the floor seen at the top edge of the frame (model lens) is within the world.

@@ -369,7 +369,7 @@ std::vector<std::string> writeRunFigures(const Scenario& scenario, const RunReco
       errorScaleMax(largestError(record), errorScaleFloor(scenario.sim.goal_tolerance));
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
   const std::string& planner_name = record.setup.primarySections().planner.name;
-  const std::string planner = planner_name.empty() ? "given waypoints" : planner_name;
+  const std::string planner = pathSourceName(scenario, planner_name);
   const std::string reference_name = referenceName(refs);
   const std::string palette = errorPalette(scale, "error to " + reference_name + " [m]");
 

@@ -56,11 +56,12 @@ video, img { width: 100%; border: 1px solid #ccc; background: #fff; }
 .card { border: 1px solid #d8dbe0; border-radius: 6px; padding: 6px 14px; background: #f6f7f9; min-width: 120px; }
 .card .k { font-size: 0.8em; color: #555; } .card .v { font-size: 1.25em; font-family: "DejaVu Sans Mono", monospace; }
 .grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(420px, 1fr)); gap: 14px; align-items: start; }
-.tables { display: grid; grid-template-columns: repeat(auto-fill, minmax(320px, 1fr)); gap: 14px; align-items: start; }
+.tables { display: grid; grid-template-columns: repeat(auto-fill, minmax(300px, 1fr)); gap: 14px; align-items: start; }
+.tables > div { min-width: 0; }
 figure { margin: 0; }
 figcaption { font-size: 0.85em; color: #444; }
 table { border-collapse: collapse; font-size: 0.88em; width: 100%; }
-td, th { border: 1px solid #ddd; padding: 2px 8px; text-align: left; }
+td, th { border: 1px solid #ddd; padding: 2px 8px; text-align: left; overflow-wrap: anywhere; }
 td.v { font-family: "DejaVu Sans Mono", monospace; text-align: right; }
 tr:nth-child(even) { background: #f6f7f9; }
 )";
@@ -125,7 +126,8 @@ void writeVehicleTable(std::ostringstream& h, const VehicleMetricTable& t) {
   h << "</tr>\n";
   for (std::size_t m = 0; m < t.metrics.size(); ++m) {
     h << "<tr><td>" << htmlEscape(t.metrics[m]) << "</td>";
-    for (const auto& cell : t.cells[m]) h << "<td class=\"v\">" << htmlEscape(cell) << "</td>";
+    for (const auto& cell : t.cells[m])
+      h << "<td class=\"v\">" << htmlEscape(cardValue(t.metrics[m], cell)) << "</td>";
     h << "</tr>\n";
   }
   h << "</table></div>\n";
@@ -153,11 +155,12 @@ void writeHtmlReport(const std::filesystem::path& dir, const HtmlReport& r) {
   }
   writeMedia(h, r);
   if (!metrics.groups.empty() || !metrics.vehicles.vehicles.empty()) {
-    h << "<h2>Metrics</h2>\n<div class=\"tables\">\n";
+    h << "<h2>Metrics</h2>\n<p class=\"sub\">Rounded, with units; every digit is in "
+         "metrics.json.</p>\n<div class=\"tables\">\n";
     for (const MetricGroup& g : metrics.groups) {
       h << "<div><h3>" << htmlEscape(g.title) << "</h3><table>\n";
       for (const auto& [k, v] : g.rows)
-        h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"v\">" << htmlEscape(v)
+        h << "<tr><td>" << htmlEscape(k) << "</td><td class=\"v\">" << htmlEscape(cardValue(k, v))
           << "</td></tr>\n";
       h << "</table></div>\n";
     }

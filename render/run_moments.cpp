@@ -80,6 +80,16 @@ void worstError(const RunLog& log, std::vector<RunMoment>& out) {
   out.push_back(m);
 }
 
+// What a vehicle hit, as the user names it: the world's geom "obstacle7" is the scenario's
+// world.obstacles[7] (numbered from 0, as --set numbers them); other names are the world's own.
+std::string hitName(const std::string& geom) {
+  const std::string prefix = "obstacle";
+  if (geom.size() <= prefix.size() || geom.compare(0, prefix.size(), prefix) != 0) return geom;
+  const std::string digits = geom.substr(prefix.size());
+  if (digits.find_first_not_of("0123456789") != std::string::npos) return geom;
+  return "world.obstacles[" + digits + "]";
+}
+
 }  // namespace
 
 std::vector<RunMoment> runMoments(const RunLog& log, const World& world, int stride) {
@@ -91,7 +101,7 @@ std::vector<RunMoment> runMoments(const RunLog& log, const World& world, int str
   for (std::size_t v = 0; v < log.vehicles.size(); ++v)
     for (const ContactEvent& c : log.vehicles[v].collisions)
       out.push_back({"collision", c.t, static_cast<int>(v), -1, 0.0,
-                     "collision: " + log.vehicles[v].name + " hit " + c.other});
+                     "collision: " + log.vehicles[v].name + " hit " + hitName(c.other)});
   std::stable_sort(out.begin(), out.end(),
                    [](const RunMoment& a, const RunMoment& b) { return a.t < b.t; });
   return out;

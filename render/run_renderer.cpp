@@ -193,8 +193,8 @@ void RunRenderer::annotate(double t) {
     if (s.kind == VehicleKind::GroundRobot) off.z() = 0.0;
     s.at_goal = off.norm() < scenario_.sim.goal_tolerance;
   }
-  const auto plannerName = [](const std::string& name) {
-    return name.empty() ? std::string("given waypoints") : name;
+  const auto plannerName = [this](const std::string& name) {
+    return pathSourceName(scenario_, name);
   };
   std::vector<StateLine> planners;
   if (ground && flying) {

@@ -63,9 +63,9 @@ void planEachQuadrotor(const Scenario& s, const PlannerSection& planner, const W
                    (planner.name.empty() ? std::string("given waypoints") : planner.name));
     const double radius = request.plan_as_point_mass ? 0.0 : world.vehicles()[v].params.radius;
     q.plans.push_back(planVehicle(s, planner, s.vehicles[v], radius));
-    for (const auto& name : q.plans.back().ignored_params)
-      report.message("note: planner." + name + " does not apply to " + planner.name +
-                     " (ignored)");
+    for (const auto& name : q.plans.back().set_aside_params)
+      report.message("note: the scenario's planner." + name + " does not apply to " + planner.name +
+                     " (chosen by an override): set aside");
   }
   for (const auto& p : q.plans) {
     if (p.success) continue;

@@ -16,6 +16,18 @@ std::string number(double v) {
   return s.str();
 }
 
+// "min clearance 0.256 m"; "none (no obstacles)" where there is nothing to measure to; a negative
+// clearance says what it means (min_clearance_m is measured from the vehicle's bounding sphere,
+// collisions count contacts of its real geometry, which lies inside the sphere: docs/metrics.md).
+std::string clearanceText(double clearance, int collisions) {
+  if (!std::isfinite(clearance)) return "min clearance none (no obstacles)";
+  std::string text = "min clearance " + number(clearance) + " m";
+  if (clearance < 0.0)
+    text += collisions == 0 ? " (bounding sphere into an obstacle, no part touched it)"
+                            : " (bounding sphere into an obstacle)";
+  return text;
+}
+
 }  // namespace
 
 std::string errorReferenceWords(ErrorReference reference) {
@@ -48,7 +60,7 @@ std::string runSummaryLine(const RunRecord& r) {
   s << "reached_goal " << (m.reached_goal ? "yes" : "no") << ", collisions " << number(m.collisions)
     << ", flight " << number(team.flight_time_s) << " s, rmse " << number(team.rmse_m)
     << " m (against " << errorReferenceWords(team.error_reference) << "), max error "
-    << number(team.max_error_m) << " m, min clearance " << number(m.min_clearance_m) << " m";
+    << number(team.max_error_m) << " m, " << clearanceText(m.min_clearance_m, m.collisions);
   if (mixed)
     s << "; quadrotors (" << r.setup.quadrotors.size() << ", pooled): rmse "
       << number(m.uavs.rmse_m) << " m, max error " << number(m.uavs.max_error_m) << " m";

@@ -31,7 +31,7 @@ void checkPlanners(const Scenario& s, PlannerUse use) {
   if (use == PlannerUse::Run) return checkRunPlanners(s);
   if (s.motion.planner.name.empty())
     throw InputError(s.file, "key planner", "no planner named (use --planner NAME)");
-  ParamSet params = s.motion.planner.params;
+  ParamSet params = plannerParameters(s.motion.planner);
   params.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);  // read by planVehicle
   makePlanner(s.motion.planner.name, params, "key planner.name");
 }
@@ -53,15 +53,16 @@ void checkControllers(const Scenario& s) {
 
 void checkRunPlanners(const Scenario& s) {
   checkControllers(s);
-  const auto single = [&s](const std::string& name, ParamSet p, const std::string& key) {
+  const auto single = [](const PlannerSection& section, const std::string& key) {
+    const std::string& name = section.name;
     if (name.empty()) return;
+    ParamSet p = plannerParameters(section);
     p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);  // read by planVehicle
     makePlanner(name, p, key);
   };
   if (!isGroundRun(s))
-    return isMapfPlanner(s.motion.planner.name)
-               ? checkQuadrotorTeamPlanner(s)
-               : single(s.motion.planner.name, s.motion.planner.params, "key planner.name");
+    return isMapfPlanner(s.motion.planner.name) ? checkQuadrotorTeamPlanner(s)
+                                                : single(s.motion.planner, "key planner.name");
   const std::string& name = s.motion.planner.name;
   ParamSet p = s.motion.planner.params;
   if (isNavigatorName(name)) {
@@ -74,13 +75,13 @@ void checkRunPlanners(const Scenario& s) {
     p.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);
     makeMapfPlanner(name, p, "planner.name");
   } else {
-    single(name, p, "key planner.name");
+    single(s.motion.planner, "key planner.name");
   }
   if (!s.aerial.planner.name.empty()) {
     if (!PlannerRegistry::instance().find(s.aerial.planner.name))
       throw InputError(s.file, "aerial.planner.name",
                        "unknown single-agent planner '" + s.aerial.planner.name + "'");
-    single(s.aerial.planner.name, s.aerial.planner.params, "key aerial.planner.name");
+    single(s.aerial.planner, "key aerial.planner.name");
   }
 }
 

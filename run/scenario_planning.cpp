@@ -1,5 +1,7 @@
 #include "run/scenario_planning.h"
 
+#include <algorithm>
+
 #include "core/input_error.h"
 #include "core/stop_token.h"
 #include "planning/planner_registry.h"
@@ -7,10 +9,27 @@
 
 namespace cosim {
 
+ParamSet plannerParameters(const PlannerSection& section, std::vector<std::string>* set_aside) {
+  const PlannerEntry* entry = PlannerRegistry::instance().find(section.name);
+  if (!section.name_from_override || !entry) return section.params;
+  std::vector<std::string> own = {"time_limit"};  // read by planVehicle for every planner
+  for (const ParamDeclaration& d : declaredParameters(*entry)) own.push_back(d.name);
+  const std::vector<std::string>& any = allPlannerParameterNames();
+  const auto listed = [](const std::vector<std::string>& list, const std::string& name) {
+    return std::find(list.begin(), list.end(), name) != list.end();
+  };
+  std::vector<std::string> drop;
+  for (const std::string& name : section.params.names())
+    if (!listed(section.params_from_overrides, name) && !listed(own, name) && listed(any, name))
+      drop.push_back(name);
+  if (set_aside) set_aside->insert(set_aside->end(), drop.begin(), drop.end());
+  return section.params.without(drop);
+}
+
 VehiclePlan planVehicle(const Scenario& scenario, const PlannerSection& section,
                         const VehicleSpec& vehicle, double vehicle_radius) {
-  ParamSet params = section.params;
   VehiclePlan plan;
+  ParamSet params = plannerParameters(section, &plan.set_aside_params);
   plan.inflation = vehicle_radius + section.margin;
   if (section.name.empty()) {
     plan.success = true;
@@ -23,7 +42,7 @@ VehiclePlan planVehicle(const Scenario& scenario, const PlannerSection& section,
     return plan;
   }
   const double time_limit = params.getDouble("time_limit", 30.0, 0.001, kMaxPlannerTimeLimit);
-  auto planner = makePlanner(section.name, params, "key planner.name", &plan.ignored_params);
+  auto planner = makePlanner(section.name, params, "key planner.name");
   plan.params = params.effective();
   plan.params["margin"] = std::to_string(section.margin);
 

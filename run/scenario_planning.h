@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "sim/motion_sections.h"
 #include "run/record/vehicle_plan.h"
+#include "sim/motion_sections.h"
 #include "sim/scenario.h"
 
 namespace cosim {
@@ -14,6 +14,15 @@ namespace cosim {
 // The largest planner.time_limit (s) a scenario may ask for: an hour. More is surely a mistake
 // (a day was allowed), and SIGINT/SIGTERM stop a planner at any time anyway.
 constexpr double kMaxPlannerTimeLimit = 3600.0;
+
+// The parameters `section`'s planner is built from. Where the planner was chosen by an override
+// (`cosim plan forest.yaml --planner rrt_star`, a sweep varying planner.name, Python's planner=)
+// the file's parameters of other planners (the forest's grid `resolution`) are set aside, their
+// names added to `set_aside` if given: the file was written for its own planner. Anything else
+// stays, so a parameter the chosen planner does not take is refused when it is built (a
+// `--set planner.step=1` with theta_star).
+ParamSet plannerParameters(const PlannerSection& section,
+                           std::vector<std::string>* set_aside = nullptr);
 
 // `vehicle` planned in the scenario's world by `planner` (its name, parameters and margin);
 // `vehicle_radius` comes from the model. Throws InputError for an unknown planner or bad

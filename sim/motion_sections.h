@@ -8,6 +8,7 @@
 // and the controllers check themselves.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "control/cascade_controller.h"
 #include "control/crazyflie_thrust_path.h"
@@ -24,6 +25,11 @@ struct PlannerSection {
   double margin = 0.3;  // m, safety margin added to the vehicle radius
   // A quadrotor team's separation ellipsoid; absent: each model's own.
   std::optional<SeparationEllipsoid> separation;
+  // The name was chosen by an override (--planner, --set planner.name, a sweep's vary, Python's
+  // planner=) rather than by the file; the parameters that overrides set. A file's parameters
+  // of another planner are then set aside (run/scenario_planning.h, plannerParameters).
+  bool name_from_override = false;
+  std::vector<std::string> params_from_overrides;
 
   // The keys (sim/declared_keys.h); every other key is one of the planner's parameters.
   template <class Visitor>
@@ -44,9 +50,10 @@ struct TrajectorySection {
 
   template <class Visitor>
   void declareKeys(Visitor& v) {
-    v.choice("mode", mode, kTrajectoryModeNames,
-             "waypoint switching (seed 003) or a minimum-snap polynomial; every other key is a "
-             "parameter of the mode");
+    v.choice(
+        "mode", mode, kTrajectoryModeNames,
+        "waypoint switching (Navratil 2019) or a minimum-snap polynomial; every other key is a "
+        "parameter of the mode");
   }
 };
 

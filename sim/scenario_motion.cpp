@@ -13,10 +13,11 @@ namespace cosim {
 
 namespace {
 
-// Fills a ParamSet with the scalar entries of a mapping, skipping `skip` keys.
+// Fills a ParamSet with the scalar entries of a mapping, skipping `skip` keys; the names that
+// overrides set go to `from_overrides`, if given.
 void readParams(const YamlReader& r, const YAML::Node& n, const std::string& key,
                 const std::vector<std::string>& skip, const std::vector<std::string>& overrides,
-                ParamSet& out) {
+                ParamSet& out, std::vector<std::string>* from_overrides = nullptr) {
   r.requireMap(n, key);
   for (const auto& kv : n) {
     const std::string name = kv.first.Scalar();
@@ -25,6 +26,7 @@ void readParams(const YamlReader& r, const YAML::Node& n, const std::string& key
     if (skipped) continue;
     const std::string k = key + "." + name;
     const std::string assignment = overrideBehind(overrides, k, false);
+    if (from_overrides && !assignment.empty()) from_overrides->push_back(name);
     out.set(name, r.scalar(kv.second, k),
             assignment.empty() ? r.place(kv.second, k) : overridePlace(assignment, k));
   }
@@ -54,7 +56,9 @@ void readMotionSectionsOf(const YamlReader& r, const YAML::Node& parent, const s
     DeclaredKeyReader reader(r, p, key);
     out.planner.declareKeys(reader);
     if (p["separation"]) out.planner.separation = readSeparation(r, p["separation"], prefix);
-    readParams(r, p, key, declaredKeyNames(out.planner), overrides, out.planner.params);
+    readParams(r, p, key, declaredKeyNames(out.planner), overrides, out.planner.params,
+               &out.planner.params_from_overrides);
+    out.planner.name_from_override = !overrideBehind(overrides, key + ".name", false).empty();
   }
 
   if (parent["trajectory"]) {
@@ -75,8 +79,9 @@ void readMotionSectionsOf(const YamlReader& r, const YAML::Node& parent, const s
     if (const std::string problem = controllerNameProblem(name); !problem.empty())
       r.fail(c["name"], prefix + "controller.name", problem);
     if (controller.drag_compensation && !compensatesDrag(name))
-      r.fail(c["drag_compensation"], prefix + "controller.drag_compensation",
-             "applies to the " + dragCompensatingControllers() + " controllers, not '" + name + "'");
+      r.fail(
+          c["drag_compensation"], prefix + "controller.drag_compensation",
+          "applies to the " + dragCompensatingControllers() + " controllers, not '" + name + "'");
     controller.thrust_path = readCrazyflieThrustPath(r, c, prefix, name);
     if (c["gains"])
       readParams(r, c["gains"], prefix + "controller.gains", {}, overrides, controller.gains);

@@ -198,8 +198,8 @@ void checkPointPlacement(const YamlReader& r, const YAML::Node& n, const std::st
   for (std::size_t i = 0; i < s.world.obstacles.size(); ++i)
     if (s.world.obstacles[i].signedDistance(p) <= 0.0)
       r.fail(n, key,
-             "point is inside obstacle " + std::to_string(i + 1) + " (world.obstacles[" +
-                 std::to_string(i) + "])");
+             "point is inside world.obstacles[" + std::to_string(i) +
+                 "] (obstacles are numbered from 0 in the file's order, as --set numbers them)");
 }
 
 void readWorldSection(const YamlReader& r, const YAML::Node& root, const std::filesystem::path& dir,

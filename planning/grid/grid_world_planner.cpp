@@ -7,8 +7,29 @@
 #include "core/stop_token.h"
 #include "planning/grid/grid_passage_diagnosis.h"
 #include "planning/grid/grid_segment_checker.h"
+#include "planning/sampling/collision_world.h"
 
 namespace cosim {
+
+namespace {
+
+// The search runs between cell centres, so the path used to go from the exact start to its
+// cell's centre and on, and from the goal cell's centre to the exact goal: a hook of up to half
+// a cell at each end, turning back on itself where the path leaves the cell the other way. The
+// start's cell centre is dropped where the straight segment from the start to the next point
+// keeps the inflation clear of every obstacle (checked exactly, as any edge); the goal's alike.
+// Not for Blocking::Centre, a thesis's own grid rule whose plans are reproduced as they were.
+void dropEndCellCentres(const World& world, double inflation, bool planar, Path& path) {
+  std::vector<Eigen::Vector3d>& w = path.waypoints;
+  if (w.size() < 3) return;
+  const CollisionWorld clear(world, inflation, 0.0, planar);
+  if (clear.segmentFree(w[0], w[2])) w.erase(w.begin() + 1);
+  const std::size_t n = w.size();
+  if (n >= 3 && clear.segmentFree(w[n - 3], w[n - 1]))
+    w.erase(w.begin() + static_cast<long>(n) - 2);
+}
+
+}  // namespace
 
 PlanResult GridWorldPlanner::solve(const PlanningProblem& problem, const StopToken& stop) {
   const StopToken clock(problem.time_limit_s, stop);
@@ -85,6 +106,8 @@ PlanResult GridWorldPlanner::solve(const PlanningProblem& problem, const StopTok
       result.path.waypoints.push_back(problem.goal);
     if (problem.planar)
       for (auto& p : result.path.waypoints) p.z() = problem.start.z();
+    if (blocking_ != OccupancyGrid::Blocking::Centre)
+      dropEndCellCentres(*problem.world, problem.inflation, problem.planar, result.path);
   }
   return finish();
 }

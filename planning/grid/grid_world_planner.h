@@ -1,7 +1,8 @@
 #pragma once
 // Adapts a GridPlanner to a world: voxelises the scenario's obstacles (grown by the vehicle's
 // inflation) at `resolution` metres, plans between the cells of start and goal, and returns a
-// metric path from the exact start through the cell centres to the exact goal. With
+// metric path from the exact start through the cell centres to the exact goal (the start's and the
+// goal's own cell centres left out where the straight segment past them is clear). With
 // Blocking::Exact (the default of the planners that support it) a cell is free iff the vehicle
 // can stand at its centre and every edge is checked against the inflated obstacles
 // (GridSegmentChecker); Blocking::AnyPoint blocks a cell when any point of it is near an

@@ -40,7 +40,8 @@ void checkMapfInstance(const MapfInstance& instance, const std::string& file) {
     throw InputError(file, "connectivity", "must be 4 or 8");
   if (instance.starts.size() != instance.goals.size())
     throw InputError(file, "agents", "as many goals as starts are needed");
-  const long cells = static_cast<long>(instance.grid.nx()) * instance.grid.ny() * instance.grid.nz();
+  const long cells =
+      static_cast<long>(instance.grid.nx()) * instance.grid.ny() * instance.grid.nz();
   if (cells > kMaxMapfCells)
     throw InputError(file, "map",
                      "a " + std::to_string(instance.grid.nx()) + "x" +
@@ -60,7 +61,7 @@ void checkMapfInstance(const MapfInstance& instance, const std::string& file) {
     if (!starts.insert({s.x, s.y, s.z}).second)
       throw InputError(file, where, "start is shared with an earlier agent");
     if (!goals.insert({g.x, g.y, g.z}).second)
-      throw InputError(file, where, "goal is shared with an earlier agent (seed 004 §1.2)");
+      throw InputError(file, where, "goal is shared with an earlier agent (Szulc 2018 §1.2)");
   }
 }
 

@@ -57,10 +57,11 @@ void registerNavigationPlanners(PlannerRegistry& r) {
   for (const bool wave_front : {false, true}) {
     const std::string name = wave_front ? "wf_rna" : "rna";
     r.addGridPlanner(name, "navigation",
-                     wave_front ? "RNA with a wave-front local planner: drives through the map "
-                                  "seen only through its field of view (seed 000)"
-                                : "Robot Navigation Ant: drives through the map seen only through "
-                                  "its field of view, re-planning with MSAC each step (seed 000)",
+                     wave_front
+                         ? "RNA with a wave-front local planner: drives through the map "
+                           "seen only through its field of view (Pencik 2014)"
+                         : "Robot Navigation Ant: drives through the map seen only through "
+                           "its field of view, re-planning with MSAC each step (Pencik 2014)",
                      navigatorFactory<RobotNavigationAnt>(name, readRnaParams, wave_front));
   }
   r.addGridPlanner("d_star_lite", "navigation",

@@ -91,7 +91,8 @@ void registerSamplingPlanners(PlannerRegistry& r) {
          {}});
   r.add({"rrt",
          "sampling",
-         "RRT, seed 003, first solution unless mode 2 (params: step, max_nodes, mode, time_limit, "
+         "RRT, Navratil 2019, first solution unless mode 2 (params: step, max_nodes, mode, "
+         "time_limit, "
          "goal_bias, goal_tolerance, shortcut)",
          [](ParamSet& p) -> std::unique_ptr<Planner> {
            return std::make_unique<Rrt>(readCommon(p, 2.0, 1, true, true));
@@ -99,7 +100,7 @@ void registerSamplingPlanners(PlannerRegistry& r) {
          {}});
   r.add({"rrt_star",
          "sampling",
-         "RRT* (Karaman-Frazzoli choose-parent) with fixed rewire radius, seed 003; anytime: "
+         "RRT* (Karaman-Frazzoli choose-parent) with fixed rewire radius, Navratil 2019; anytime: "
          "improves for time_limit s (default 1), mode 1 stops at the first path (params: step, "
          "rewire_radius, max_nodes, mode, time_limit, goal_bias, goal_tolerance, choose_parent, "
          "shortcut)",
@@ -109,7 +110,8 @@ void registerSamplingPlanners(PlannerRegistry& r) {
          {}});
   r.add({"rrt_star_thesis",
          "sampling",
-         "seed 003's own RRT* (its Fig. 16: a new node joins its nearest node's parent if visible, "
+         "Navratil 2019's own RRT* (its Fig. 16: a new node joins its nearest node's parent if "
+         "visible, "
          "then rewires within rewire_radius), no goal bias, mode 1 (first path) as the thesis; "
          "max_tree_nodes > 0 makes it seed "
          "003's RRT*FN (params: step, rewire_radius, max_nodes, mode, goal_bias, "
@@ -121,8 +123,8 @@ void registerSamplingPlanners(PlannerRegistry& r) {
   r.add({"rrt_star_fn",
          "sampling",
          "RRT* with fixed nodes: removes the childless node farthest from the goal above "
-         "max_tree_nodes, seed 003 (params: as rrt_star plus max_tree_nodes; choose_parent: "
-         "nearest_parent is seed 003's own RRT*FN)",
+         "max_tree_nodes, Navratil 2019 (params: as rrt_star plus max_tree_nodes; choose_parent: "
+         "nearest_parent is Navratil 2019's own RRT*FN)",
          [](ParamSet& p) -> std::unique_ptr<Planner> {
            return std::make_unique<RrtStar>(readRrtStar(p, 2, 4.0, true, false));
          },

@@ -263,7 +263,8 @@ void registerAcsMaklinkPlanner(PlannerRegistry& r) {
   e.name = "acs_maklink";
   e.family = "swarm";
   e.summary =
-      "seed 002 hybrid ACS: MAKLINK graph of grown polygons, Dijkstra, ant colony system over "
+      "the ant-algorithm lecture's hybrid ACS: MAKLINK graph of grown polygons, Dijkstra, ant colony "
+      "system over "
       "offsets along the crossed free lines (plans in the plane at the start's height)";
   e.make = [](ParamSet& params) -> std::unique_ptr<Planner> {
     AcsMaklinkParams p;

@@ -87,17 +87,19 @@ PsoParams readPsoParams(ParamSet& params) {
 
 void registerGridWalkPlanners(PlannerRegistry& r) {
   r.addGridPlanner("ant_grid", "swarm",
-                   "seed 002 grid ant algorithm: node pheromone, heading heuristic, black list, "
+                   "the ant-algorithm lecture grid ant algorithm: node pheromone, heading "
+                   "heuristic, black list, "
                    "best-ant update; 4/8/16/24/32 directions (plans on the start's layer)",
                    gridPlannerFactory<AntGrid>(readAntGridParams));
   r.addGridPlanner("mmas", "swarm",
                    "MAX-MIN Ant System (Stuetzle and Hoos 2000) on the grid, with staircase "
                    "local search (plans on the start's layer)",
                    gridPlannerFactory<Mmas>(readMmasParams));
-  r.addGridPlanner("ga", "swarm",
-                   "genetic algorithm on grid paths (seed 002's comparison; Tuncer-Yildirim "
-                   "operators; plans on the start's layer)",
-                   gridPlannerFactory<GeneticAlgorithm>(readGeneticAlgorithmParams));
+  r.addGridPlanner(
+      "ga", "swarm",
+      "genetic algorithm on grid paths (the ant-algorithm lecture' comparison; Tuncer-Yildirim "
+      "operators; plans on the start's layer)",
+      gridPlannerFactory<GeneticAlgorithm>(readGeneticAlgorithmParams));
   r.addGridPlanner("pso", "swarm",
                    "particle swarm optimisation with priority encoding (Mohemmed et al. 2008) "
                    "on the grid (plans on the start's layer)",

@@ -51,12 +51,12 @@ SacoParams readSacoParams(ParamSet& params, const std::string& name) {
 void registerMsacSacoPlanners(PlannerRegistry& r) {
   r.addGridPlanner("msac", "swarm",
                    "Multi-Scout Ants Cooperation: two greedy scout-ant groups from start and goal "
-                   "(seed 000)",
+                   "(Pencik 2014)",
                    gridPlannerFactory<Msac>(readMsacParams));
-  r.addGridPlanner("saco", "swarm", "Simple Ant Colony Optimization, cell pheromone (seed 000)",
+  r.addGridPlanner("saco", "swarm", "Simple Ant Colony Optimization, cell pheromone (Pencik 2014)",
                    gridPlannerFactory<Saco>(readSacoParams, std::string("saco")));
   r.addGridPlanner("sacodm", "swarm",
-                   "SACO with distance (beta) and memory (gamma) terms (seed 000)",
+                   "SACO with distance (beta) and memory (gamma) terms (Pencik 2014)",
                    gridPlannerFactory<Saco>(readSacoParams, std::string("sacodm")));
 }
 

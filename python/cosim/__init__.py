@@ -32,7 +32,28 @@ from ._cosim import (  # noqa: E402
     run,
 )
 
+
+
+def build_info():
+    """Which build of cosim this session loaded: a dict of "version", "package" (the folder of
+    this package), "extension" (the compiled module's file) and "checkout" (the source folder it
+    was built from, whose scenarios and models it reads). Two checkouts on one machine can both
+    make `import cosim` work; this says which one did."""
+    import os
+
+    from . import _cosim
+
+    checkout = os.path.dirname(os.path.dirname(os.path.dirname(DEFAULT_SCENARIO)))
+    return {
+        "version": __version__,
+        "package": os.path.dirname(os.path.abspath(__file__)),
+        "extension": os.path.abspath(_cosim.__file__),
+        "checkout": checkout,
+    }
+
+
 __all__ = [
+    "build_info",
     "DEFAULT_SCENARIO",
     "InputError",
     "PlanResult",

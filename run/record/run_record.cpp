@@ -4,10 +4,24 @@
 
 namespace cosim {
 
+std::string pathSourceName(const Scenario& scenario, const std::string& planner_name) {
+  if (!planner_name.empty()) return planner_name;
+  std::size_t references = 0;
+  const VehicleSpec* flier = nullptr;
+  for (const VehicleSpec& v : scenario.vehicles)
+    if (v.reference) {
+      ++references;
+      flier = &v;
+    }
+  if (references == 0) return "given waypoints";
+  if (references < scenario.vehicles.size()) return "given waypoints and references";
+  if (references > 1) return "given references";
+  return "given reference " + flier->reference_file.filename().string();
+}
+
 std::string runTitle(const Scenario& scenario, const RunRecord& record) {
   const MotionSections& primary = record.setup.primarySections();
-  const std::string planner =
-      primary.planner.name.empty() ? "given waypoints" : primary.planner.name;
+  const std::string planner = pathSourceName(scenario, primary.planner.name);
   return "cosim run: " + std::filesystem::path(scenario.file).stem().string() + " (" + planner +
          ", " + primary.controller.name + " controller)";
 }

@@ -62,6 +62,11 @@ struct RunRecord {
   ErrorReference errorReferenceOf(std::size_t v) const { return setup.vehicles[v].error_reference; }
 };
 
+// Where a run's paths come from, for titles and labels: the planner's name, or without a planner
+// "given waypoints", "given reference FILE" (one vehicle flying a reference file), "given
+// references" (several) or "given waypoints and references" (some of each).
+std::string pathSourceName(const Scenario& scenario, const std::string& planner_name);
+
 // "cosim run: <scenario> (<planner>, <controller> controller)": index.html's and viewer.html's
 // title, from the scenario's file name and the top-level sections as resolved.
 std::string runTitle(const Scenario& scenario, const RunRecord& record);

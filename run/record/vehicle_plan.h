@@ -20,7 +20,9 @@ struct VehiclePlan {
   PlannerStatus status = PlannerStatus::Unknown;  // the failing segment's, else ExactSolution
   double inflation = 0.0;                         // vehicle radius + margin the planner kept clear
   std::map<std::string, double> trajectory_counters;  // from the minimum-snap fit, if any
-  std::vector<std::string> ignored_params;            // taken by other planners, not by this one
+  // The file's parameters of other planners, set aside because an override chose this one
+  // (run/scenario_planning.h, plannerParameters).
+  std::vector<std::string> set_aside_params;
   // Indices in `path` of the vehicle's waypoints (the points it was asked to visit, the goal
   // last): a trajectory through the path must not cut past them.
   std::vector<std::size_t> via_indices;

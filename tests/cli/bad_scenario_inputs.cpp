@@ -79,7 +79,7 @@ std::vector<BadInput> badScenarioInputs() {
       {"start_inside_obstacle", plan,
        withVehicles(
            "vehicles: [{name: uav1, model: cf2, start: [10, 10, 1], goal: [18, 18, 1]}]\n"),
-       "", 2, "inside obstacle 1"},
+       "", 2, "inside world.obstacles[0]"},
       {"goal_outside_world", plan,
        withVehicles("vehicles: [{name: uav1, model: cf2, start: [2, 2, 1], goal: [25, 18, 1]}]\n"),
        "", 2, "outside the world bounds"},

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <nlohmann/json.hpp>
 
 #include "render/viewer_page.h"
 #include "tests/support/cosim_command.h"
@@ -37,6 +38,25 @@ TEST(RunViewer, RunFolderHoldsTheReplayLinkedFromIndexAndExportsMcap) {
   EXPECT_EQ(file.substr(file.size() - 8), std::string("\x89MCAP0\r\n", 8));
   EXPECT_NE(file.find("foxglove.FrameTransform"), std::string::npos);
   EXPECT_NE(mcap.out.find("messages on 6 channels"), std::string::npos) << mcap.out;
+
+  // Beside it a Foxglove layout: a 3D panel on the scene topics in the world frame, plots of
+  // position and error on topics the file really has.
+  EXPECT_NE(mcap.out.find("run.layout.json beside it"), std::string::npos) << mcap.out;
+  const auto layout = nlohmann::json::parse(slurp(dir / "run.layout.json"));
+  const auto& three = layout.at("configById").at("3D!cosim");
+  EXPECT_EQ(three.at("followTf"), "world");
+  for (const char* topic : {"/world", "/vehicles", "/paths"}) {
+    EXPECT_TRUE(three.at("topics").at(topic).at("visible").get<bool>()) << topic;
+    EXPECT_NE(file.find(topic), std::string::npos) << topic;
+  }
+  const auto& position = layout.at("configById").at("Plot!position").at("paths");
+  ASSERT_EQ(position.size(), 3u);
+  EXPECT_EQ(position[2].at("value"), "/vehicles/uav1/state.position.z");
+  const auto& error = layout.at("configById").at("Plot!error").at("paths");
+  ASSERT_EQ(error.size(), 2u);
+  EXPECT_EQ(error[0].at("value"), "/vehicles/uav1/state.error_m");
+  EXPECT_NE(file.find("/vehicles/uav1/state"), std::string::npos);
+  EXPECT_EQ(layout.at("layout").at("first"), "3D!cosim");
   std::filesystem::remove_all(dir);
 }
 

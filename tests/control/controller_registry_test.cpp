@@ -71,6 +71,21 @@ TEST(ControllerRegistry, AMisspeltGainIsRefusedWithTheNearestDeclaredOne) {
       << m;
 }
 
+TEST(ControllerRegistry, AGainOfAnotherControllerIsRefusedNamingWhoseItIs) {
+  // pos_kp is the cascade's: given to the geometric controller it is named as the cascade's,
+  // with the gains geometric does take, not dropped and not called a misspelling.
+  ParamSet gains("trip.yaml");
+  gains.set("pos_kp", "2", "line 7, key controller.gains.pos_kp");
+  const std::string m = messageOf([&] { makeFlightController("geometric", gains, quad1500g()); });
+  EXPECT_NE(m.find("trip.yaml: line 7, key controller.gains.pos_kp: parameter 'pos_kp' does not "
+                   "apply to controller 'geometric' (it is a parameter of controller"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("cascade"), std::string::npos) << m;
+  EXPECT_NE(m.find("; controller 'geometric' takes: "), std::string::npos) << m;
+  EXPECT_NE(m.find("k_x_xy"), std::string::npos) << m;
+}
+
 TEST(ControllerRegistry, AGainOutsideItsDeclaredRangeIsRefused) {
   ParamSet gains("trip.yaml");
   gains.set("max_tilt_deg", "90");

@@ -1,6 +1,7 @@
 // The chase camera over the default run's whole flight: never inside an obstacle, never behind
 // one (nothing between it and the vehicle), always over the world's floor, and the top of its
-// frame shows floor rather than the sky beyond the world's edge.
+// frame shows floor rather than the sky beyond the world's edge; the vehicle stays in view, clear
+// of the legend.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -54,6 +55,12 @@ TEST(ChaseCamera, DefaultRunIsNeverFilmedFromInsideOrBehindAnObstacleOrBeyondThe
                           hi + Eigen::Vector3d::Constant(margin)))
         << "t = " << t << ": the top of the frame looks past the world's edge at "
         << hit.transpose();
+    // The vehicle is in the frame, clear of the legend (bottom left), the colour scale (bottom
+    // right) and the edges: steep views from close by used to put it half under the legend.
+    Eigen::Vector2d uv;
+    ASSERT_TRUE(frameCoordinates(p, vehicle, 16.0 / 9.0, uv)) << "t = " << t << ": behind";
+    EXPECT_TRUE(ChaseVehicleZone::contains(uv))
+        << "t = " << t << ": the vehicle at " << uv.transpose() << " in the frame";
   }
   EXPECT_GT(frames, 40);  // the default flight lasts about 30 s
 }

@@ -79,11 +79,25 @@ TEST(RunSummaryLine, ASingleVehicleLineHasNoTeamPrefixAndNoClearanceWithoutObsta
   r.metrics.team.error_reference = ErrorReference::PlannedPath;
   r.metrics.reached_goal = false;
   r.metrics.collisions = 2;
-  // No obstacle to measure a clearance to: metrics.json writes null, the console "none".
+  // No obstacle to measure a clearance to: metrics.json writes null, the console says so.
   r.metrics.min_clearance_m = std::numeric_limits<double>::infinity();
   EXPECT_EQ(runSummaryLine(r),
             "reached_goal no, collisions 2, flight 20.5 s, rmse 0.0173 m (against the planned "
-            "path), max error 0.137 m, min clearance none m, 3.5x real time");
+            "path), max error 0.137 m, min clearance none (no obstacles), 3.5x real time");
+}
+
+TEST(RunSummaryLine, ANegativeClearanceSaysItIsTheBoundingSphereAndWhetherAnythingTouched) {
+  RunRecord r = twoVehicleTeam();
+  r.log.vehicles.resize(1);
+  r.metrics.min_clearance_m = -0.0333;
+  EXPECT_NE(runSummaryLine(r).find("min clearance -0.0333 m (bounding sphere into an obstacle, no "
+                                   "part touched it), "),
+            std::string::npos)
+      << runSummaryLine(r);
+  r.metrics.collisions = 1;
+  EXPECT_NE(runSummaryLine(r).find("min clearance -0.0333 m (bounding sphere into an obstacle), "),
+            std::string::npos)
+      << runSummaryLine(r);
 }
 
 TEST(RunSummaryLine, APoolOfDifferentReferencesSaysEachVehicles) {

@@ -91,7 +91,8 @@ TEST(ScenarioLoader, NegativeSizeIsRejected) {
 TEST(ScenarioLoader, StartInsideAnObstacleIsRejected) {
   const std::string e = placeOfError(replace(kGood, "start: [2, 2, 2]", "start: [15, 5, 4]"));
   EXPECT_NE(e.find("vehicles[0].start"), std::string::npos) << e;
-  EXPECT_NE(e.find("inside obstacle 3"), std::string::npos) << e;
+  EXPECT_NE(e.find("inside world.obstacles[2] (obstacles are numbered from 0"), std::string::npos)
+      << e;  // one numbering, the one --set uses
 }
 
 TEST(ScenarioLoader, GoalOutsideBoundsIsRejected) {
@@ -160,7 +161,7 @@ TEST(ScenarioLoader, GridMapRejectsBoundsBesideItAndCellsOffTheMap) {
             std::string::npos);
   // A start on a blocked cell is inside an obstacle.
   EXPECT_NE(placeOfError(gridMapScenario("{file: " + kEightByEight + ", blocked: [[0, 0]]}"))
-                .find("inside obstacle"),
+                .find("inside world.obstacles["),
             std::string::npos);
 }
 
