@@ -148,6 +148,9 @@ std::unique_ptr<Planner> makePlanner(const std::string& name, ParamSet& params,
                                      const std::string& place, std::vector<std::string>* ignored) {
   auto planner = findOrThrow(name, params, place, false).make(params);
   if (!ignored) {
+    // `time_limit` is every planner's (the caller's search budget, checked by planVehicle),
+    // whether or not this planner reads it itself.
+    if (params.has("time_limit")) params.getDouble("time_limit", 30.0);
     params.requireAllUsed("planner '" + name + "'", plannersByParameter());
     return planner;
   }

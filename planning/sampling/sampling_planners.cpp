@@ -113,8 +113,8 @@ void registerSamplingPlanners(PlannerRegistry& r) {
          "Navratil 2019's own RRT* (its Fig. 16: a new node joins its nearest node's parent if "
          "visible, "
          "then rewires within rewire_radius), no goal bias, mode 1 (first path) as the thesis; "
-         "max_tree_nodes > 0 makes it seed "
-         "003's RRT*FN (params: step, rewire_radius, max_nodes, mode, goal_bias, "
+         "max_tree_nodes > 0 makes it Navratil "
+         "2019's RRT*FN (params: step, rewire_radius, max_nodes, mode, goal_bias, "
          "goal_tolerance, max_tree_nodes, neighbour_search, shortcut)",
          [](ParamSet& p) -> std::unique_ptr<Planner> {
            return std::make_unique<RrtStar>(readRrtStarThesis(p));
