@@ -93,5 +93,6 @@ TEST(ScenarioSetOverride, ABadValueInAnElementIsPlacedAtTheAssignment) {
             "numbers [x, y, z]");
   EXPECT_EQ(errorOf({"vehicles[0].goal=[10,10,2]"}),
             "s.yaml: --set vehicles[0].goal=[10,10,2], key vehicles[0].goal: point is inside "
-            "obstacle 1 (world.obstacles[0])");
+            "world.obstacles[0] (obstacles are numbered from 0 in the file's order, as --set "
+            "numbers them)");
 }
