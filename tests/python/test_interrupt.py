@@ -41,8 +41,9 @@ print('then', p.success, round(p.length_m, 3))
     p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=30,
                        env=dict(os.environ))
     assert p.returncode == 0, p.stderr
-    # 44.153 m: the default scenario's Theta* path (metrics.json's planned_length_m).
-    assert p.stdout.splitlines() == ["interrupted", "then True 44.153"]
+    # 43.389 m: the default scenario's Theta* path (metrics.json's planned_length_m), from the
+    # exact start to the exact goal without a step to either's cell centre.
+    assert p.stdout.splitlines() == ["interrupted", "then True 43.389"]
 
 
 def test_sigint_during_a_run_raises_keyboard_interrupt_and_leaves_no_metrics(tmp_path):
