@@ -219,6 +219,7 @@ std::optional<RunLog> verifyTeamPlan(PreparedRun& run, PlanVerificationReport& r
   std::optional<RunLog> flight;
   for (int round = 1; round <= run.scenario.team.verify_rounds; ++round) {
     const auto flight_start = std::chrono::steady_clock::now();
+    flight.reset();  // one flight's log at a time (500 vehicles' take gigabytes)
     SimulationLoop loop(run.world, run.scenario, run.pilots.robots, run.pilots.quadrotors, options);
     while (loop.stepControl()) {
     }
