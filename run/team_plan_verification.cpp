@@ -127,8 +127,7 @@ double counter(const RunPlan& plan, const char* name) {
 // pairs rest around their conflicts; then the team slows.
 std::string repairFor(const VerificationRound& r,
                       const std::map<std::pair<std::size_t, std::size_t>, double>& at,
-                      const RunPlan& plan, double max_separation, TeamRepairs& repairs) {
-  const double planned = counter(plan, "planned_min_separation");
+                      double planned, double step, double max_separation, TeamRepairs& repairs) {
   const double kept = std::max(repairs.min_separation, std::min(planned, max_separation));
   const double widened = std::min(
       max_separation, kept + std::max(kMinWiden, kTouching - r.min_separation + kWidenReserve));
@@ -138,7 +137,6 @@ std::string repairFor(const VerificationRound& r,
     return "the team's separation widened from " + fixed(kept, 2) + " to " + fixed(widened, 2) +
            " ellipsoids (planned again)";
   }
-  const double step = counter(plan, "step_duration_s");
   std::set<std::size_t> rested;
   for (const auto& [pair, t] : at) {
     const long k = static_cast<long>(std::floor(t / step));
@@ -210,7 +208,7 @@ bool verifiesTeamPlan(const PreparedRun& run) {
 std::optional<RunLog> verifyTeamPlan(PreparedRun& run, PlanVerificationReport& report) {
   const auto start = std::chrono::steady_clock::now();
   const TeamView team = teamView(run);
-  const double max_separation = kStartShare * startSpacing(run, team);
+  double max_separation = kStartShare * startSpacing(run, team);
   TeamRepairs repairs;
   repairs.rest_steps.resize(team.vehicles.size());
   SimulationOptions options = run.loop;
@@ -235,11 +233,35 @@ std::optional<RunLog> verifyTeamPlan(PreparedRun& run, PlanVerificationReport& r
         std::chrono::duration<double>(std::chrono::steady_clock::now() - flight_start).count();
     report.clean = r.conflicts.empty() && r.uav_contacts == 0 && r.arrived;
     const bool last = report.clean || round == run.scenario.team.verify_rounds || at.empty();
-    if (!last) r.repair = repairFor(r, at, run.plan, max_separation, repairs);
+    bool planned = true;
+    if (!last) {
+      // What the flown plan kept: the repair is planned from it.
+      const double planned_separation = counter(run.plan, "planned_min_separation");
+      const double step = counter(run.plan, "step_duration_s");
+      const PlanStatus status = run.plan.status;
+      const std::string message = run.plan.message;
+      const TeamRepairs before = repairs;
+      r.repair = repairFor(r, at, planned_separation, step, max_separation, repairs);
+      try {
+        planned = replan(run, repairs);
+      } catch (const InputError&) {
+        planned = false;
+      }
+      if (!planned && repairs.min_separation != before.min_separation) {
+        // No plan at the widened separation (no roadmap holds these starts and goals at it, or
+        // the search found none): widen no further, and repair the pairs where they broke.
+        run.plan.status = status;
+        run.plan.message = message;
+        repairs = before;
+        max_separation = std::max(repairs.min_separation, planned_separation);
+        r.repair = repairFor(r, at, planned_separation, step, max_separation, repairs);
+        planned = replan(run, repairs);
+      }
+    }
     run.report.message(roundLine(r));
     report.rounds.push_back(r);
     if (last) break;
-    if (!replan(run, repairs)) {
+    if (!planned) {
       flight.reset();
       break;
     }
