@@ -28,6 +28,35 @@ std::string faultName(const RecordOf& r) {
   return isFault(r.metrics.end) ? runEndName(r.log.end_reason) : "none";
 }
 
+// A quadrotor team's verification flights: each round's conflicts and the repair it led to.
+JsonObject planVerificationJson(const PlanVerificationReport& v) {
+  std::vector<JsonObject> rounds;
+  for (const VerificationRound& r : v.rounds) {
+    std::vector<JsonObject> conflicts;
+    for (const FlownConflict& c : r.conflicts) {
+      JsonObject o;
+      o.add("a", c.a).add("b", c.b).add("t_s", c.t).add("separation", c.separation);
+      conflicts.push_back(o);
+    }
+    JsonObject o;
+    o.add("round", r.round)
+        .add("flight_wall_s", r.flight_wall_s)
+        .add("min_separation", r.min_separation)
+        .add("uav_contacts", r.uav_contacts)
+        .add("arrived", r.arrived)
+        .add("peak_thrust_fraction", r.peak_thrust_fraction)
+        .addArray("conflicts", conflicts)
+        .add("repair", r.repair);
+    rounds.push_back(o);
+  }
+  JsonObject j;
+  j.add("rounds_flown", static_cast<int>(v.rounds.size()))
+      .add("clean", v.clean)
+      .add("seconds", v.seconds)
+      .addArray("rounds", rounds);
+  return j;
+}
+
 // What every run reports first: the outcome and the top-level vehicles' tracking.
 void addHeadline(JsonObject& j, const RecordOf& r) {
   const RunMetrics& m = r.metrics;
@@ -126,6 +155,8 @@ void addRunFacts(JsonObject& j, const RecordOf& r) {
     j.add("uav_contacts", m.contacts.uav_contacts)
         .add("min_uav_separation_m", m.separation->min_uav_separation)
         .add("downwash_violations", m.separation->downwash_violations);
+  if (r.plan.verification.ran)
+    j.add("plan_verification", planVerificationJson(r.plan.verification));
 }
 
 JsonObject quadrotorEntry(const RecordOf& r, std::size_t v) {

@@ -4,6 +4,7 @@
 #include "run/run_evaluation.h"
 #include "run/run_files.h"
 #include "run/run_simulation.h"
+#include "run/team_plan_verification.h"
 
 namespace cosim {
 
@@ -60,6 +61,8 @@ PreparedRun::PreparedRun(const Scenario& s, const RunRequest& r) try
   report.stage(RunStage::BuildPilots);
   pilots = buildPilots(scenario, setup, world, plan);
   loop = runLoopOptions(*this);
+  // A team's plan is flown before it is trusted, and repaired where it broke.
+  if (verifiesTeamPlan(*this)) verified_flight = verifyTeamPlan(*this, plan.verification);
 } catch (const InputError& e) {
   throw e.inFile(s.file);  // e.g. a planner's grid too large for the scenario's world
 }

@@ -6,6 +6,7 @@
 // cosim.Simulation prepares the same way and steps the loop itself (startRunLoop,
 // run/run_simulation.h), with the same evaluation for its record (summarizeRun).
 #include <memory>
+#include <optional>
 
 #include "run/record/run_setup.h"
 #include "run/run_pilots.h"
@@ -36,6 +37,9 @@ struct PreparedRun {
   RunPlan plan;
   RunPilots pilots;
   SimulationOptions loop;  // the simulation loop's (run/run_simulation.h runLoopOptions)
+  // A quadrotor team's last verification flight (run/team_plan_verification.h): the loop is
+  // deterministic, so it is the run's flight and flyRun does not fly it again.
+  std::optional<RunLog> verified_flight;
   // The request's interrupt flag stopped the preparation before it ended (after resolve or
   // plan): plan, pilots and loop are not to be used.
   bool stopped = false;

@@ -78,10 +78,11 @@ void planEachQuadrotor(const Scenario& s, const PlannerSection& planner, const W
 // The team's paths and timed trajectories, planned jointly.
 void planQuadrotorTeam(const Scenario& s, const MotionSections& m, const WorldModel& world,
                        const std::vector<std::size_t>& vehicles, const RunRequest& request,
-                       const RunReporter& report, QuadrotorPlans& q) {
+                       const RunReporter& report, const TeamRepairs& repairs, QuadrotorPlans& q) {
   report.message("planning " + std::to_string(vehicles.size()) + " quadrotors as a team with " +
                  m.planner.name);
-  QuadrotorTeamFlight flight = planQuadrotorTeamFlight(s, m, world, vehicles, request);
+  QuadrotorTeamFlight flight =
+      planQuadrotorTeamFlight(s, m, world, vehicles, q.airframes, request, repairs);
   q.plans = std::move(flight.plans);
   q.summary = summarizeSeparatePlans(q.plans);
   if (!q.plans.empty()) q.summary.counters = q.plans.front().counters;  // the team's, once
@@ -123,12 +124,13 @@ std::unique_ptr<ReferenceSource> singleReference(const Scenario& s, const Motion
 
 QuadrotorPlans planQuadrotors(const Scenario& s, const MotionSections& m, const WorldModel& world,
                               const std::vector<std::size_t>& vehicles, Planning planning,
-                              const RunRequest& request, const RunReporter& report) {
+                              const RunRequest& request, const RunReporter& report,
+                              const TeamRepairs& repairs) {
   QuadrotorPlans q;
   for (std::size_t v : vehicles)
     q.airframes.push_back(believedAirframe(world.vehicles()[v].params, s.model_error));
   if (planning == Planning::Team) {
-    planQuadrotorTeam(s, m, world, vehicles, request, report, q);
+    planQuadrotorTeam(s, m, world, vehicles, request, report, repairs, q);
   } else {
     planEachQuadrotor(s, m.planner, world, vehicles, request, report, q);
     for (std::size_t k = 0; k < vehicles.size() && q.status == PlanStatus::Ready; ++k)

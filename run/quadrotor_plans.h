@@ -11,6 +11,7 @@
 #include "control/quadrotor_params.h"
 #include "control/reference_source.h"
 #include "run/group_plan.h"
+#include "run/quadrotor_team_planning.h"
 #include "run/record/run_setup.h"
 #include "run/run_events.h"
 #include "run/scenario_planning.h"
@@ -36,10 +37,11 @@ struct QuadrotorPlans {
 
 // Plans scenario.vehicles[i] (flying world.vehicles()[i]) for each i in `vehicles` with the
 // planner and trajectory of `sections` (the team's controller too: its tracking error widens the
-// team's separation). Throws InputError for bad planner or trajectory parameters.
+// team's separation; `repairs`: what verification flights of its earlier plan asked for).
+// Throws InputError for bad planner or trajectory parameters.
 QuadrotorPlans planQuadrotors(const Scenario& scenario, const MotionSections& sections,
                               const WorldModel& world, const std::vector<std::size_t>& vehicles,
                               Planning planning, const RunRequest& request,
-                              const RunReporter& report);
+                              const RunReporter& report, const TeamRepairs& repairs = {});
 
 }  // namespace cosim

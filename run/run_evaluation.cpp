@@ -109,6 +109,7 @@ PlanFigures planFigures(const RunSetup& setup, const RunPlan& plan) {
   f.quadrotor_inflation = plan.quadrotors.summary.inflation;
   f.cruise_speed_mps = plan.robots.cruise_speed;
   f.trajectory_counters = plan.quadrotors.trajectory_counters;
+  f.verification = plan.verification;
   return f;
 }
 

@@ -7,6 +7,7 @@
 
 #include "run/group_plan.h"
 #include "run/quadrotor_plans.h"
+#include "run/record/plan_verification_report.h"
 #include "run/record/run_setup.h"
 #include "run/robot_plans.h"
 #include "run/run_events.h"
@@ -20,6 +21,8 @@ struct RunPlan {
   std::string message;  // why it is not Ready: the robots' failure first, then the quadrotors'
   RobotPlans robots;    // empty in a run without robots
   QuadrotorPlans quadrotors;  // empty in a run without quadrotors
+  // A quadrotor team's plan flown before it was trusted (run/team_plan_verification.h).
+  PlanVerificationReport verification;
 
   bool drivable() const { return cosim::drivable(status); }
   // The planner's figures of the vehicles the top-level sections drive (RunSetup::primary).

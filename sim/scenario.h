@@ -18,6 +18,7 @@
 #include "sim/render_settings.h"
 #include "sim/sensors/sensor_settings.h"
 #include "sim/sim_settings.h"
+#include "sim/team_settings.h"
 #include "sim/vehicle_kind.h"
 
 namespace cosim {
@@ -114,6 +115,7 @@ struct Scenario {
   MotionSections aerial;
 
   SimSettings sim;
+  TeamSettings team;  // a quadrotor team's plan verification and thrust limit
   DisturbanceSettings disturbances;
   SensorSettings sensors;       // what each quadrotor measures (default: ideal)
   EstimatorSettings estimator;  // what turns the measurements into the controller's state

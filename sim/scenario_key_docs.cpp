@@ -35,6 +35,8 @@ std::string declaredKeysMarkdown() {
   out += table("sensors.position", from_mocap, declaredKeyRows(mocap.position));
   out += table("sensors.attitude", from_mocap, declaredKeyRows(mocap.attitude));
   out += table("estimator", "", declaredKeyRows(EstimatorSettings{}));
+  out += table("team", "A quadrotor team planned jointly (docs/quadrotor_teams.md).",
+               declaredKeyRows(TeamSettings{}));
   out += table("disturbances", "All off by default; wind and gusts need a drag term.",
                declaredKeyRows(DisturbanceSettings{}));
   out += table("render", "", declaredKeyRows(RenderSettings{}));

@@ -3,6 +3,7 @@
 // be checked against the ones before it.
 #include "core/input_error.h"
 #include "core/input_file.h"
+#include "sim/declared_key_reader.h"
 #include "sim/scenario.h"
 #include "sim/scenario_overrides.h"
 #include "sim/scenario_sections.h"
@@ -28,7 +29,7 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
   if (!root.IsDefined() || root.IsNull()) root = YAML::Node(YAML::NodeType::Map);
   for (const auto& o : overrides) applyYamlOverride(root, o);
   r.checkKeys(root, "",
-              {"world", "vehicles", "planner", "trajectory", "controller", "aerial", "sim",
+              {"world", "vehicles", "planner", "trajectory", "controller", "aerial", "sim", "team",
                "disturbances", "sensors", "estimator", "model_error", "render"});
 
   Scenario s;
@@ -48,6 +49,7 @@ static Scenario parseScenarioText(const std::string& text, const std::string& fi
   checkVehiclePower(r, root, s);
   readSimSection(r, root, s);
   readDisturbancesSection(r, root, s);
+  if (root["team"]) readDeclaredKeys(r, root["team"], "team", s.team);
   readSensingSections(r, root, s);
   readRenderSection(r, root, s);
   return s;

@@ -121,11 +121,12 @@ void smoothGrid(const TeamPlanningProblem& problem, const TeamGrid& grid, const 
   for (std::size_t i = 0; i < problem.agents.size(); ++i) {
     const TeamAgent& a = problem.agents[i];
     plan.points.push_back(stepPoints(grid, a, r.paths[i], steps));
-    team.push_back({plan.points.back(), a.separation, a.clearance});
+    team.push_back({plan.points.back(), a.separation, a.clearance, {}});
+    if (i < problem.rest_steps.size()) team.back().rest_steps = problem.rest_steps[i];
   }
   TeamTrajectoryOptions options;
-  options.step_duration =
-      teamStepDuration(grid.pitch(), problem.max_speed, problem.max_acceleration);
+  options.step_duration = problem.step_stretch * teamStepDuration(grid.pitch(), problem.max_speed,
+                                                                  problem.max_acceleration);
   options.min_separation = problem.min_separation;
   options.deadline = &deadline;
   say("team plan: " + std::to_string(steps) + " steps found in " +

@@ -41,8 +41,14 @@ struct TeamPlanningProblem {
   double min_separation = 1.5;
   double max_speed = 1.0;         // m/s, for the step duration
   double max_acceleration = 2.0;  // m/s^2, for the step duration
-  double time_limit_s = 30.0;  // for the whole team plan: grid, MAPF search and smoothing
+  double time_limit_s = 30.0;     // for the whole team plan: grid, MAPF search and smoothing
   std::uint64_t seed = 1;
+  // Repairs asked for by a flight of an earlier plan of the same team
+  // (run/team_plan_verification.h): per agent, the waypoints (step indices) at which it must come
+  // to rest, so that it flies the lock-step moves there; and a factor on the step time (a slower
+  // team).
+  std::vector<std::vector<long>> rest_steps;
+  double step_stretch = 1.0;
   const std::atomic<bool>* stop = nullptr;
   // A line for a person following a long plan (the stage reached, repair rounds); may be empty.
   std::function<void(const std::string&)> progress;
@@ -51,7 +57,7 @@ struct TeamPlanningProblem {
 struct TeamPlan {
   bool success = false;
   PlannerStatus status = PlannerStatus::Unknown;  // the MAPF search's, then the smoothing's
-  std::string message;  // why not, on failure
+  std::string message;                            // why not, on failure
   // Per agent: its position at every step (start, cell centres, goal) and its trajectory.
   std::vector<std::vector<Eigen::Vector3d>> points;
   std::vector<PiecewisePolynomialTrajectory> trajectories;

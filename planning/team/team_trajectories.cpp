@@ -79,7 +79,7 @@ class TeamSmoother {
 
  private:
   bool expired() const { return o_.deadline != nullptr && o_.deadline->expired(); }
-  bool fitAll();            // false: stopped or out of time before every agent was fitted
+  bool fitAll();             // false: stopped or out of time before every agent was fitted
   bool checkWindow(long w);  // false: stopped or out of time (the window stays to be checked)
   void stopNear(std::size_t i, double t);
   int refit();  // rebuilds the changed agents, marks the windows they changed; returns how many
@@ -128,6 +128,8 @@ bool TeamSmoother::fitAll() {
     if (expired()) return false;
     stops_[i].assign(team_[i].points.size(), 0);
     stops_[i].front() = stops_[i].back() = 1;
+    for (const long k : team_[i].rest_steps)
+      if (k >= 0 && k < static_cast<long>(stops_[i].size())) stops_[i][k] = 1;
     out_.trajectories.push_back(build(team_[i].points, stops_[i], o_.step_duration));
     end_ = std::max(end_, out_.trajectories.back().duration());
     radius = std::max(radius, team_[i].separation.radius);

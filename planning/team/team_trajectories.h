@@ -30,7 +30,6 @@
 #include <vector>
 
 #include "core/stop_token.h"
-
 #include "planning/planner_status.h"
 #include "planning/team/separation_ellipsoid.h"
 #include "planning/trajectory/piecewise_polynomial_trajectory.h"
@@ -42,6 +41,9 @@ struct TeamMember {
   std::vector<Eigen::Vector3d> points;  // the agent's position at t = k * step; then it holds
   SeparationEllipsoid separation;
   double clearance = 0.0;  // m between its centre and any obstacle surface
+  // Waypoints (step indices) where it rests from the start, besides its ends and waits: where a
+  // flight of an earlier plan broke the separation (run/team_plan_verification.h).
+  std::vector<long> rest_steps;
 };
 
 struct TeamTrajectoryOptions {
@@ -58,14 +60,14 @@ struct TeamTrajectoryOptions {
 struct TeamTrajectories {
   bool success = false;
   PlannerStatus status = PlannerStatus::Unknown;
-  std::string message;                                              // why not, on failure
-  std::vector<PiecewisePolynomialTrajectory> trajectories;          // one per member
+  std::string message;                                      // why not, on failure
+  std::vector<PiecewisePolynomialTrajectory> trajectories;  // one per member
   // At the checked instants; 1.5 x options.min_separation when no pair came that close (the
   // spatial hash's reach: a lower bound).
   double min_separation = std::numeric_limits<double>::infinity();
-  double min_clearance = std::numeric_limits<double>::infinity();   // m beyond the clearance
+  double min_clearance = std::numeric_limits<double>::infinity();  // m beyond the clearance
   int repair_rounds = 0;
-  int stops_added = 0;  // waypoints where an agent was made to stop
+  int stops_added = 0;   // waypoints where an agent was made to stop
   long pair_checks = 0;  // pair distances evaluated (pairs x instants, over all rounds)
 };
 

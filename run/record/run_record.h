@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "run/record/plan_verification_report.h"
 #include "run/record/run_metrics.h"
 #include "run/record/run_setup.h"
 #include "run/record/vehicle_plan.h"
@@ -41,6 +42,7 @@ struct PlanFigures {
   double quadrotor_inflation = 0.0;
   double cruise_speed_mps = 0.0;                      // the robots' timed plans'
   std::map<std::string, double> trajectory_counters;  // the quadrotors' minimum-snap fits
+  PlanVerificationReport verification;                // a quadrotor team's verification flights
 };
 
 struct RunRecord {

@@ -48,10 +48,12 @@ TEST(QuadrotorTeamRun, FourCrossingCf2ArriveWithoutEnteringEachOthersDownwashEll
 }
 
 TEST(QuadrotorTeamRun, ASeparationSmallerThanTheModelsIsCaughtByTheMetrics) {
-  // Planned for ellipsoids of 0.1 m x 0.25 m, the pairs pass closer than the cf2's 0.24 x 0.6 m.
+  // Planned for ellipsoids of 0.1 m x 0.25 m, the pairs pass closer than the cf2's 0.24 x 0.6 m
+  // (flown unverified: a verification flight would repair it).
   std::string metrics;
   const RunRecord r =
-      runTeam(crossingTeam("{name: lacam, margin: 0.1, separation: {radius: 0.1, height: 0.25}}"),
+      runTeam(crossingTeam("{name: lacam, margin: 0.1, separation: {radius: 0.1, height: 0.25}}") +
+                  "team: {verify_rounds: 0}\n",
               "team-cf2-small", metrics);
   EXPECT_LT(test::jsonNumber(metrics, "min_uav_separation_m"), 1.0) << r.message;
   EXPECT_GT(test::jsonNumber(metrics, "downwash_violations"), 0);
