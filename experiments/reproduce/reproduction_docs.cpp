@@ -53,6 +53,9 @@ std::string seconds(double s) {
   return buf;
 }
 
+// Where the verdict list starts.
+const char* const kVerdictsAnchor = "\nVerdicts of the full runs";
+
 std::string beginMarker(const std::string& path) {
   return "<!-- generated from " + path + ": begin -->\n";
 }
@@ -70,14 +73,19 @@ void placeBlock(std::string& doc, const std::string& path, const std::string& na
     doc.replace(b, e + end.size() - b, block);
     return;
   }
-  if (const std::size_t item = doc.find("\n- **" + name + "**"); item != std::string::npos) {
+  // Only in the verdict list: the page's earlier sections have items named after reproductions too.
+  const std::size_t list = doc.find(kVerdictsAnchor);
+  if (list == std::string::npos)
+    throw InputError("docs/reproductions.md", "verdicts",
+                     std::string("no line starting \"") + (kVerdictsAnchor + 1) + "\"");
+  if (const std::size_t item = doc.find("\n- **" + name + "**", list); item != std::string::npos) {
     std::size_t stop = doc.find('\n', item + 1);
     while (stop != std::string::npos && doc.compare(stop + 1, 2, "  ") == 0)
       stop = doc.find('\n', stop + 1);
     doc.replace(item + 1, (stop == std::string::npos ? doc.size() : stop + 1) - item - 1, block);
     return;
   }
-  const std::size_t next = doc.find("\n## Other reproductions");
+  const std::size_t next = doc.find("\n## Other reproductions", list);
   if (next == std::string::npos)
     throw InputError("docs/reproductions.md", "verdicts", "no \"## Other reproductions\" heading");
   doc.insert(next, block);

@@ -19,8 +19,9 @@ inline constexpr const char* kCommittedReportsDir = "experiments/reproduce/resul
 std::string reproductionVerdictBlock(const std::string& json_path, const std::string& json_text);
 
 // `doc` (docs/reproductions.md's text) with every report's block and run time put in: an existing
-// block is replaced, else the hand-written item "- **NAME**..." (with its indented lines) is, else
-// the block is added at the end of the verdict list; the run-time table's "full run" cell of the
+// block is replaced, else the hand-written item "- **NAME**..." (with its indented lines) of the
+// verdict list (from the line "Verdicts of the full runs" on) is, else the block is added at the
+// end of that list; the run-time table's "full run" cell of the
 // row "| `NAME` |" becomes the JSON's run_time_s. `reports` maps each report's path (as named in
 // the markers) to its JSON text. Throws InputError if the page has no such table row.
 std::string reproductionDocsWithReports(std::string doc,

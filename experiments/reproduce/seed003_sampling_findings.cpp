@@ -112,10 +112,12 @@ bool clearlySlower(const TableFinding& f, int k) {
 // Sec. 4.1.2: RRT*FN faster than RRT* at caps N/5 to N/3 in almost every 3D test, mainly mode 2.
 Finding capWindow(const std::vector<TableFinding>& findings) {
   int faster[3] = {0, 0, 0}, slower[3] = {0, 0, 0}, columns[3] = {0, 0, 0};  // mode 1, 2, 3D all
+  int bound_mode1 = 0;  // mode-1 columns where the cap binds (the first path comes after it)
   for (const auto& f : findings) {
     if (std::string(f.table->map) == "2d") continue;
     for (int k = 0; k < 2; ++k) {  // caps N/5 and N/4 (N/3 lies between the 2nd and 3rd cap)
       const int m = f.table->mode - 1;
+      if (m == 0) bound_mode1 += f.fn_first[k] > f.table->caps[k];
       ++columns[m], ++columns[2];
       faster[m] += clearlyFaster(f, k), faster[2] += clearlyFaster(f, k);
       slower[m] += clearlySlower(f, k), slower[2] += clearlySlower(f, k);
@@ -130,9 +132,17 @@ Finding capWindow(const std::vector<TableFinding>& findings) {
           share(faster[2], columns[2]) + " columns (mode 1: " + share(faster[0], columns[0]) +
           ", mode 2: " + share(faster[1], columns[1]) + "), slower in " +
           share(slower[2], columns[2]),
-      "where our cap binds it saves less time than the thesis's: the Tab. 10 line gives the "
-      "largest case, and the linear-scan check there shows that the thesis's distance-to-every-"
-      "node cost does not explain it");
+      "in mode 1 our first path comes before the cap in " +
+          std::to_string(columns[0] - bound_mode1) + " of " + std::to_string(columns[0]) +
+          " of those columns, where RRT*FN is RRT* step for step and cannot be faster; where the "
+          "cap binds (the other " +
+          std::to_string(bound_mode1) +
+          " mode-1 columns and all of mode 2) it gives clear speed-ups in " +
+          share(faster[0] + faster[1], bound_mode1 + columns[1]) +
+          " (mode 2: " + share(faster[1], columns[1]) +
+          ", the thesis's \"mainly in mode 2\"), fewer than the thesis's; the linear-scan check "
+          "(Tab. 10) rules out its per-node scans as the difference, and no other was found",
+      false);
 }
 
 // Tab. 5: in 2D mode 2, caps 200 and 250 (N/5, N/4) take 76.8 and 86.7 % of RRT*'s time.
@@ -144,15 +154,24 @@ Finding twoDimensionalCapWindow(const std::vector<TableFinding>& findings) {
   if (!t5)
     return statedFinding(claim, Finding::Verdict::kDiffersUnknown, "Tab. 5 not run",
                          "run the full reproduction");
+  const bool window_faster = clearlyFaster(*t5, 0) && clearlyFaster(*t5, 1);
+  const bool larger_not = !clearlyFaster(*t5, 2) && !clearlyFaster(*t5, 3);
+  auto range = [&](int k) {
+    return fmt("%.1f", 100 * t5->fn_time_ratio[k]) + " % [" + fmt("%.1f", t5->fn_time_q1[k]) + "-" +
+           fmt("%.1f", t5->fn_time_q3[k]) + " ms]";
+  };
   return checkedFinding(
-      claim, t5->fn_time_ratio[0] < 0.95 && t5->fn_time_ratio[1] < 0.95,
-      "ours: " + fmt("%.1f", 100 * t5->fn_time_ratio[0]) + " and " +
-          fmt("%.1f", 100 * t5->fn_time_ratio[1]) +
-          " % (caps 350, 500: " + fmt("%.1f", 100 * t5->fn_time_ratio[2]) + ", " +
-          fmt("%.1f", 100 * t5->fn_time_ratio[3]) + " %)",
-      "the linear-scan check (Tab. 10) rules out the cost of the thesis's nearest-node scans; "
-      "what else makes its capped 2D runs cheaper is not in its text",
-      false);
+      claim, window_faster && larger_not,
+      "ours: caps 200, 250 " + range(0) + ", " + range(1) + "; caps 350, 500 " + range(2) + ", " +
+          range(3) + "; RRT* [" + fmt("%.1f", t5->star_time_q1) + "-" +
+          fmt("%.1f", t5->star_time_q3) + " ms]",
+      window_faster ? "our larger caps are not slower than RRT*: the thesis put their extra time "
+                      "down to its farthest-from-goal search, which our heap of leaves does in "
+                      "logarithmic time"
+                    : "the medians differ by less than the spread of the runs: the linear-scan "
+                      "check (Tab. 10) rules out the thesis's per-node scans as the saving, and "
+                      "what else made its capped 2D runs cheaper is not in its text",
+      window_faster);
 }
 
 // Sec. 4.1.2: caps below N/5 fail in more than 90 % of runs (2D).
@@ -234,11 +253,14 @@ std::vector<Finding> samplingFindings(const std::vector<TableFinding>& findings,
     out.push_back(checkedFinding(
         "RRT*FN with cap 400 takes 41 % of RRT*'s time on 3D map 2, set 1 (Tab. 10)",
         t10->fn_time_ratio[0] < 0.7, fmt("%.0f", 100 * t10->fn_time_ratio[0]) + " %",
-        "capping the tree makes the thesis's MATLAB cheaper per node (it computes the distance "
-        "to every node), while in our C++ the collision checks dominate each iteration, so a "
-        "smaller tree saves little; the linear-scan check above gives every query the thesis's "
-        "kind of cost and still shows no such saving, and removing the farthest leaf does not "
-        "make the tree reach the goal sooner"));
+        "the linear-scan check above gives every query the thesis's kind of cost (the distance "
+        "to every node) and still shows no such saving, and removing the farthest leaves " +
+            std::string(t10->fn_first[0] < 0.9 * t10->star_first ? "makes" : "does not make") +
+            " our tree reach the goal markedly sooner (first path after " +
+            fmt("%.0f", t10->fn_first[0]) + " nodes with the cap, " + fmt("%.0f", t10->star_first) +
+            " without; the thesis's explanation is that the cap concentrates sampling near start "
+            "and goal), so what saved the thesis's time is not in our rebuild",
+        false));
   out.push_back(capWindow(findings));
   out.push_back(twoDimensionalCapWindow(findings));
   if (!checks.small_caps.empty()) out.push_back(smallCaps(checks));

@@ -37,7 +37,11 @@ const char* seedClaim(Seed004Environment env, const std::string& key) {
   if (planner == "lra_star")
     return env == Seed004Environment::kOpen ? "may be enough in open space (§1.1)"
                                             : "cycles in bottlenecks (§3.2.1)";
-  if (planner == "whca2") return "most promising (§3.6); bottleneck only for about 2 (§4.4)";
+  if (planner == "whca2")
+    return env == Seed004Environment::kBottleneck
+               ? "most promising (§3.6); the author's solved the bottleneck only for about 2 "
+                 "(§4.4)"
+               : "most promising (§3.6)";
   if (planner == "ca_star") return "better than LRA* (§3.6)";
   return "";
 }
