@@ -1,5 +1,6 @@
 // cosim reproduce NAME: re-runs one of the seed documents' experiments and writes a markdown
 // table with the seed's published numbers beside ours.
+#include <chrono>
 #include <iostream>
 
 #include "cli/command.h"
@@ -119,7 +120,11 @@ void addReproduceCommand(CLI::App& app, CommandContext& ctx) {
       for (const auto& p : matchingOutputs(opt.out_dir, {args->name + "*"}))
         requireCosimOutput(p, "--out");
       OutputManifestScope manifest(opt.out_dir, "reproduce");
-      const std::string report = reproduce::writeReportFiles(args->name, opt, e.run(opt));
+      const auto started = std::chrono::steady_clock::now();
+      reproduce::Report result = e.run(opt);
+      result.run_time_s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      const std::string report = reproduce::writeReportFiles(args->name, opt, result);
       manifest.finish();
       std::cout << report << "\nwritten: " << opt.out_dir << "/" << args->name << ".md and "
                 << args->name << ".json\n";

@@ -41,6 +41,10 @@ const Docs& commonDocs() {
        "near: cheapest neighbour as parent (Karaman-Frazzoli); nearest_parent: Navratil 2019's "
        "Fig. 16"},
       {"max_tree_nodes", "RRT*FN: nodes kept (the childless node farthest from the goal goes)"},
+      {"rewire_costs",
+       "subtree: a rewired node's new cost reaches its descendants; node: only its own changes"},
+      {"goal_reattach",
+       "the goal moves to a node that reaches it more cheaply (false: it keeps its first parent)"},
       {"k", "roadmap neighbours joined per sample"},
       // Ant colonies and other swarms.
       {"ants", "ants per iteration"},

@@ -1,5 +1,7 @@
 #include "experiments/reproduce/agreement_section.h"
 
+#include <algorithm>
+
 namespace cosim::reproduce {
 
 Finding checkedFinding(const std::string& claim, bool agrees, const std::string& ours,
@@ -42,6 +44,21 @@ std::string agreementSection(const std::vector<Finding>& findings) {
     md += "\n";
   }
   return md + "\n";
+}
+
+std::vector<std::string> agreementLines(const std::string& markdown) {
+  const std::string heading = "## Where we agree and where we differ\n";
+  std::vector<std::string> lines;
+  const std::size_t at = markdown.find(heading);
+  if (at == std::string::npos) return lines;
+  std::size_t pos = at + heading.size();
+  while (pos < markdown.size() && markdown[pos] == '\n') ++pos;
+  while (pos < markdown.size() && markdown.compare(pos, 2, "- ") == 0) {
+    const std::size_t end = std::min(markdown.find('\n', pos), markdown.size());
+    lines.push_back(markdown.substr(pos + 2, end - pos - 2));
+    pos = end + 1;
+  }
+  return lines;
 }
 
 }  // namespace cosim::reproduce

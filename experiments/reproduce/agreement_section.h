@@ -30,4 +30,9 @@ Finding statedFinding(const std::string& claim, Finding::Verdict verdict, const 
 // "**differs, reason unknown** (ours; tried: reason)."
 std::string agreementSection(const std::vector<Finding>& findings);
 
+// The finding lines ("- ...") of the agreement section in a report's markdown, without their
+// "- "; empty if the report has no such section. NAME.json carries them as "agreement", and
+// docs/reproductions.md quotes them from there.
+std::vector<std::string> agreementLines(const std::string& markdown);
+
 }  // namespace cosim::reproduce

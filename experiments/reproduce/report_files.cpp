@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/atomic_file.h"
+#include "experiments/reproduce/agreement_section.h"
 
 namespace cosim::reproduce {
 
@@ -14,8 +15,11 @@ const char* kQuickNote =
 }  // namespace
 
 std::string reportMarkdown(const Options& options, const Report& report) {
-  if (!options.quick) return report.markdown;
-  const std::string& md = report.markdown;
+  std::string md = report.markdown;
+  if (report.run_time_s >= 0)
+    md += (md.empty() || md.back() == '\n' ? "" : "\n") + std::string("\nRun time: ") +
+          fixed(report.run_time_s, 0) + " s (wall clock, the whole reproduction).\n";
+  if (!options.quick) return md;
   // Under the title line if there is one, else at the top.
   const std::size_t title_end = md.rfind('#', 0) == 0 ? md.find('\n') : std::string::npos;
   if (title_end == std::string::npos) return std::string(kQuickNote) + "\n\n" + md;
@@ -26,8 +30,12 @@ std::string reportJson(const std::string& name, const Options& options, const Re
   JsonObject doc;
   doc.add("experiment", name)
       .add("quick", options.quick)
-      .add("seed", static_cast<double>(options.seed))
-      .addArray("rows", report.rows);
+      .add("seed", static_cast<double>(options.seed));
+  if (report.run_time_s >= 0) doc.add("run_time_s", report.run_time_s);
+  std::string agreement = "[";
+  for (const std::string& line : agreementLines(report.markdown))
+    agreement += (agreement.size() > 1 ? "," : "") + JsonObject::quote(line);
+  doc.raw("agreement", agreement + "]").addArray("rows", report.rows);
   return doc.str() + "\n";
 }
 

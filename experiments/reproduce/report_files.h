@@ -8,7 +8,8 @@
 
 namespace cosim::reproduce {
 
-// The report as written to NAME.md: with --quick, a line under the title says it is a quick run.
+// The report as written to NAME.md: with --quick, a line under the title says it is a quick run;
+// a timed run ends with its run time.
 std::string reportMarkdown(const Options& options, const Report& report);
 
 // One number for a report's tables, printf-style (fmt("%.2f", x)), or with `decimals` digits
@@ -16,7 +17,8 @@ std::string reportMarkdown(const Options& options, const Report& report);
 std::string fmt(const char* printf_format, double v);
 std::string fixed(double v, int decimals);
 
-// NAME.json's text.
+// NAME.json's text: {"experiment", "quick", "seed", "run_time_s" (if timed), "agreement" (the
+// closing section's finding lines, agreementLines()), "rows"}.
 std::string reportJson(const std::string& name, const Options& options, const Report& report);
 
 // Writes both files into options.out_dir, each atomically; returns the markdown written.

@@ -23,6 +23,9 @@ struct Options {
 struct Report {
   std::string markdown;
   std::vector<JsonObject> rows;
+  // Wall-clock time of the whole run [s], set by `cosim reproduce` (< 0: not timed); written to
+  // both files (docs/reproductions.md quotes it from NAME.json).
+  double run_time_s = -1.0;
 };
 
 using Function = Report (*)(const Options& options);

@@ -45,17 +45,21 @@ ReproductionMap gridMap(const std::string& title, const OccupancyGrid& grid, con
   ReproductionMap m;
   m.title = title;
   m.hi = Eigen::Vector2d(grid.nx(), grid.ny());
-  const auto blocked_at = [&](int x, int y) {
-    int n = 0;
-    for (int z = 0; z < grid.nz(); ++z) n += grid.blocked(x, y, z);
-    return n;
-  };
-  m.blocks =
-      rowRuns(grid.nx(), grid.ny(), [&](int x, int y) { return blocked_at(x, y) == grid.nz(); });
-  m.partial_blocks = rowRuns(grid.nx(), grid.ny(), [&](int x, int y) {
-    const int n = blocked_at(x, y);
-    return n > 0 && n < grid.nz();
-  });
+  if (grid.nz() == 1) {
+    m.blocks = rowRuns(grid.nx(), grid.ny(), [&](int x, int y) { return grid.blocked(x, y, 0); });
+  } else {
+    // The top of a column: one above its highest blocked cell (0: free at every height).
+    const auto top = [&](int x, int y) {
+      for (int z = grid.nz() - 1; z >= 0; --z)
+        if (grid.blocked(x, y, z)) return z + 1;
+      return 0;
+    };
+    for (int h = 1; h <= grid.nz(); ++h)
+      for (const auto& r :
+           rowRuns(grid.nx(), grid.ny(), [&](int x, int y) { return top(x, y) == h; }))
+        m.height_blocks.push_back({r, static_cast<double>(h)});
+    m.height_max = grid.nz();
+  }
   m.start = Eigen::Vector2d(start.x + 0.5, start.y + 0.5);
   m.goal = Eigen::Vector2d(goal.x + 0.5, goal.y + 0.5);
   return m;
@@ -97,11 +101,18 @@ std::string writeReproductionMap(const std::filesystem::path& out_dir, const std
         "'blocks.dat' with boxxyerror fs solid 1.0 noborder lc rgb '#6b6b6b' "
         "title 'obstacle'");
   }
-  if (!map.partial_blocks.empty()) {
-    scratch.write("partial.dat", blockData(map.partial_blocks));
+  if (!map.height_blocks.empty()) {
+    std::ostringstream d;
+    for (const auto& b : map.height_blocks)
+      d << 0.5 * (b.rect[0] + b.rect[2]) << ' ' << 0.5 * (b.rect[1] + b.rect[3]) << ' ' << b.rect[0]
+        << ' ' << b.rect[2] << ' ' << b.rect[1] << ' ' << b.rect[3] << ' ' << b.top << '\n';
+    scratch.write("heights.dat", d.str());
+    body << "set palette defined (0 '#e6e6e6', 1 '#3a3a3a')\nset cbrange [0:" << map.height_max
+         << "]\nset cblabel " << gnuplotString(std::string("obstacle top [") + map.unit + "]")
+         << "\nset colorbox user origin graph 1.04, graph 0 size 0.025, 0.45\n";
     plots.push_back(
-        "'partial.dat' with boxxyerror fs solid 1.0 noborder lc rgb '#c8c8c8' "
-        "title 'obstacle at some heights'");
+        "'heights.dat' using 1:2:3:4:5:6:7 with boxxyerror fs solid 1.0 noborder lc palette "
+        "title 'obstacle (shade: its top)'");
   }
   if (!map.polygons.empty())  // a key entry for the polygons drawn as objects
     plots.push_back("NaN with boxes fs solid 0.55 lc rgb '#707070' title 'obstacle'");

@@ -2,8 +2,8 @@
 // The rebuilt maps of a thesis reproduction, drawn beside its report as NAME_mapK.png and .svg
 // (gnuplot, render/gnuplot.h): the obstacles, the start, the goal and the best path of each
 // method on that map, seen from above. Grid maps are drawn cell by cell (a 3D grid as its
-// footprint: dark where a column is blocked at every height, light where only at some);
-// polygon maps (MAKLINK) as filled polygons.
+// footprint, each column shaded by the top of its highest blocked cell, with a scale: a wall on
+// a slab shows apart from the slab); polygon maps (MAKLINK) as filled polygons.
 #include <Eigen/Core>
 #include <filesystem>
 #include <string>
@@ -22,8 +22,16 @@ struct ReproductionMap {
   std::string title;           // the map's name and how it was rebuilt
   const char* unit = "cells";  // the axes' unit (a literal)
   Eigen::Vector2d lo = Eigen::Vector2d::Zero(), hi = Eigen::Vector2d::Zero();  // drawn extent
-  // Filled rectangles {x0, y0, x1, y1}; `partial` ones are drawn lighter (3D: some heights).
-  std::vector<Eigen::Vector4d> blocks, partial_blocks;
+  // Filled rectangles {x0, y0, x1, y1} (2D maps).
+  std::vector<Eigen::Vector4d> blocks;
+  // 3D maps seen from above: rectangles of columns whose obstacles reach up to `top` (in `unit`,
+  // above the grid's floor), shaded from light (low) to dark (height_max).
+  struct HeightBlock {
+    Eigen::Vector4d rect;
+    double top;
+  };
+  std::vector<HeightBlock> height_blocks;
+  double height_max = 0;
   std::vector<std::vector<Eigen::Vector2d>> polygons;
   std::vector<Eigen::Vector2d> moving_obstacle_starts;  // drawn as hollow squares
   Eigen::Vector2d start = Eigen::Vector2d::Zero(), goal = Eigen::Vector2d::Zero();
@@ -33,7 +41,8 @@ struct ReproductionMap {
 };
 
 // A map over `grid` in cell units (cell (x, y) spans [x, x+1) x [y, y+1)), with rows of blocked
-// cells merged into rectangles; start and goal at their cells' centres.
+// cells merged into rectangles (3D: rows of columns with the same top, as height_blocks, tops in
+// cells = metres on 1 m grids); start and goal at their cells' centres.
 ReproductionMap gridMap(const std::string& title, const OccupancyGrid& grid, const Cell& start,
                         const Cell& goal);
 

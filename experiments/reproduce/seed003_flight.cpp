@@ -8,9 +8,12 @@
 //    settings), raw waypoints, 0.2 m switching, the cascade controller of its Fig. 2;
 //  - grown_waypoints: the plan grown by the vehicle's radius plus a margin, still raw waypoints;
 //  - cosim: the grown plan, a minimum-snap trajectory, the geometric controller.
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -82,17 +85,52 @@ std::vector<Eigen::Vector2d> plannedPoints(const std::filesystem::path& path_csv
   return points;
 }
 
-std::string flightMap(const Options& options, const std::vector<MapPath>& planned) {
+// The flown track of a run (its timeseries.csv, columns x and y), seen from above, every 20th
+// sample (a few centimetres apart at these speeds).
+std::vector<Eigen::Vector2d> flownPoints(const std::filesystem::path& timeseries_csv) {
+  std::ifstream in(timeseries_csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  for (std::stringstream h(line); std::getline(h, line, ',');) header.push_back(line);
+  const auto column = [&](const char* name) {
+    return std::find(header.begin(), header.end(), name) - header.begin();
+  };
+  const auto ix = column("x"), iy = column("y");
+  std::vector<Eigen::Vector2d> points;
+  for (int row = 0; std::getline(in, line); ++row) {
+    if (row % 20) continue;
+    std::vector<double> v;
+    for (std::stringstream c(line); std::getline(c, line, ',');)
+      v.push_back(std::atof(line.c_str()));
+    if (static_cast<std::size_t>(std::max(ix, iy)) < v.size()) points.emplace_back(v[ix], v[iy]);
+  }
+  return points;
+}
+
+// One figure per way of flying (the thesis's, ours): both paths' plans and flights, as the
+// thesis's Figs. 39-40 set the flown track against the plan.
+std::string flightMap(const Options& options,
+                      const std::map<std::string, std::vector<MapPath>>& drawn) {
   const Seed003Map map = seed003Maps().back();  // 3D map 3
   const OccupancyGrid grid = seed003Grid(map);
-  ReproductionMap fig = gridMap("3D map 3 seen from above: the plans flown", grid,
-                                grid.cellOf(map.start), grid.cellOf(map.goal));
-  fig.unit = "m";
-  fig.paths = planned;
-  const std::string file = writeReproductionMap(options.out_dir, "seed003-flight", 1, fig);
-  return mapFiguresMarkdown({file}, {"3D map 3: an equivalent rebuilt from the thesis's figure "
-                                     "only (size, start, goal and description from the text), "
-                                     "the boxes of experiments/scenarios/zigzag_walls.yaml"});
+  std::vector<std::string> files, how;
+  for (const char* pipeline : {"thesis", "cosim"}) {
+    const auto it = drawn.find(pipeline);
+    if (it == drawn.end()) continue;
+    ReproductionMap fig = gridMap(
+        std::string("3D map 3 seen from above: ") + pipeline + " pipeline, plans and flights", grid,
+        grid.cellOf(map.start), grid.cellOf(map.goal));
+    fig.unit = "m";
+    fig.paths = it->second;
+    files.push_back(writeReproductionMap(options.out_dir, "seed003-flight",
+                                         static_cast<int>(files.size()) + 1, fig));
+    how.push_back(std::string(pipeline) +
+                  " pipeline on 3D map 3 (an equivalent rebuilt from the thesis's figure only: "
+                  "size, start, goal and description from the text; the boxes of "
+                  "experiments/scenarios/zigzag_walls.yaml), each path's plan and its flight");
+  }
+  return mapFiguresMarkdown(files, how);
 }
 
 // How the run ended ("goal", "max_time", "saturated", ...): metrics.json's end_reason.
@@ -193,7 +231,7 @@ struct FlightTally {
   bool thesis_intrudes_all = true, cosim_clean_all = true;
   int thesis_rows = 0, thesis_intruding = 0, cosim_rows = 0, cosim_clean = 0;
   double thesis_min_max_error = INFINITY;
-  std::vector<MapPath> planned;
+  std::map<std::string, std::vector<MapPath>> drawn;  // per pipeline: plans and flights
 };
 
 // One path flown one way, in its folder flight<index>-<path>-<pipeline> under options.out_dir:
@@ -231,10 +269,14 @@ JsonObject flyOne(const Options& options, const PathSetting& path, const Pipelin
     ++tally.cosim_rows;
     tally.cosim_clean += clean;
   }
-  if (pipeline == "thesis" || pipeline == "cosim")
-    tally.planned.push_back(
-        {std::string(path.name) + ", " + pipeline + " plan (" + fmt(f.planned_length_m, 1) + " m)",
+  if (pipeline == "thesis" || pipeline == "cosim") {
+    tally.drawn[pipeline].push_back(
+        {std::string(path.name) + " plan (" + fmt(f.planned_length_m, 1) + " m)",
          plannedPoints(request.out_dir / "path.csv")});
+    tally.drawn[pipeline].push_back(
+        {std::string(path.name) + " flight (" + std::to_string(f.collisions) + " contacts)",
+         flownPoints(request.out_dir / "timeseries.csv")});
+  }
   md << "| " << path.name << " | " << p.label << " | " << fmt(f.planned_length_m, 2) << " | "
      << fmt(plan_clearance) << " | " << ended << " | " << f.collisions << " | " << fmt(f.rmse_m, 4)
      << " | " << fmt(f.max_error_m, 4) << " | " << fmt(f.min_clearance_m) << " | "
@@ -310,7 +352,7 @@ Report seed003Flight(const Options& options) {
       rows.push_back(flyOne(options, path, p, index++, md, tally));
   md << "\nEach flight's files (metrics.json, timeseries.csv, path.csv, final.png) are in the "
         "flight* folders beside this report.\n\n"
-     << flightMap(options, tally.planned);
+     << flightMap(options, tally.drawn);
   md << agreementSection(flightFindings(options, tally));
   return {md.str(), rows};
 }

@@ -22,92 +22,15 @@
 #include "experiments/reproduce/reproduction.h"
 #include "experiments/reproduce/run_spread.h"
 #include "experiments/reproduce/seed003_maps.h"
+#include "experiments/reproduce/seed003_sampling_checks.h"
 #include "experiments/reproduce/seed003_sampling_findings.h"
+#include "experiments/reproduce/seed003_sampling_runs.h"
 #include "experiments/reproduce/seed003_sampling_tables.h"
 #include "planning/planner_registry.h"
 
 namespace cosim::reproduce {
 
 namespace {
-
-// One column of a table: the row name in NAME.json, the registered planner, its choose-parent
-// rule and the RRT*FN cap (0: none); seed_index: the thesis's column (-1: not in the thesis).
-struct SamplingColumn {
-  std::string label, json_name, planner;
-  bool thesis_parent;
-  int cap;
-  int seed_index;
-};
-
-std::vector<SamplingColumn> columnsOf(const Seed003SamplingTable& t) {
-  std::vector<SamplingColumn> c = {
-      {"RRT", "rrt", "rrt", false, 0, 0},
-      {"RRT* (thesis, Fig. 16)", "rrt_star_thesis", "rrt_star_thesis", true, 0, 1},
-      {"RRT* (Karaman-Frazzoli)", "rrt_star", "rrt_star", false, 0, -1}};
-  for (int k = 0; k < 4; ++k)
-    c.push_back({"RRT*FN " + std::to_string(t.caps[k]) + " (thesis)",
-                 "rrt_star_fn_" + std::to_string(t.caps[k]), "rrt_star_thesis", true, t.caps[k],
-                 2 + k});
-  return c;
-}
-
-struct Samples {
-  int runs = 0, successes = 0;
-  std::vector<double> lengths, times_ms, nodes, first_path_nodes, removed;
-  Path best;  // the shortest path over the runs (for the map figures)
-};
-
-// How a column is run besides the table's settings: the goal tolerance (< 0: one step, the
-// rule of the tables) and the nearest-neighbour search.
-struct RunVariant {
-  double goal_tolerance = -1.0;
-  bool linear_scan = false;
-};
-
-Samples runColumn(const Seed003SamplingTable& t, const Seed003Map& map, const SamplingColumn& col,
-                  const Options& options, int runs, RunVariant variant = {}) {
-  Samples s;
-  for (int i = 0; i < runs; ++i) {
-    ParamSet p("seed003-sampling");
-    p.set("mode", std::to_string(t.mode));
-    p.set("max_nodes", std::to_string(t.max_nodes));
-    p.set("step", std::to_string(t.step));
-    // The thesis's settings for every column (rrt_star_thesis has them as defaults).
-    p.set("goal_bias", "0");
-    p.set("goal_tolerance",
-          std::to_string(variant.goal_tolerance < 0 ? t.step : variant.goal_tolerance));
-    if (variant.linear_scan) p.set("neighbour_search", "linear");
-    if (col.planner != "rrt") p.set("rewire_radius", std::to_string(t.radius));
-    if (col.cap > 0) p.set("max_tree_nodes", std::to_string(col.cap));
-    auto solver = makePlanner(col.planner, p, "seed003-sampling");
-    PlanningProblem prob;
-    prob.world = &map.world;
-    prob.start = map.start;
-    prob.goal = map.goal;
-    prob.inflation = 0.0;  // the thesis planned for a point mass
-    prob.planar = map.planar;
-    prob.time_limit_s = 60.0;
-    prob.seed = options.seed + static_cast<std::uint64_t>(i);
-    const PlanResult r = solver->solve(prob, StopToken::untimed());
-    ++s.runs;
-    s.times_ms.push_back(r.time_ms);
-    auto counter = [&](const char* k) { return r.counters.count(k) ? r.counters.at(k) : 0.0; };
-    s.nodes.push_back(counter("nodes"));
-    if (col.cap > 0) s.removed.push_back(counter("removed_nodes"));
-    if (r.success) {
-      ++s.successes;
-      s.lengths.push_back(r.path.length());
-      if (s.best.empty() || r.path.length() < s.best.length()) s.best = r.path;
-      // RRT reports no first-path count: in mode 1 it stops at its first path, so that is its
-      // node count; in mode 2 it is not known (left out, not the total).
-      if (r.counters.count("first_path_nodes"))
-        s.first_path_nodes.push_back(r.counters.at("first_path_nodes"));
-      else if (t.mode == 1)
-        s.first_path_nodes.push_back(counter("nodes"));
-    }
-  }
-  return s;
-}
 
 std::string fmt(const char* format, double v) {
   char buf[64];
@@ -221,9 +144,10 @@ TableFinding runTable(const Seed003SamplingTable& t, const Seed003Map& map, cons
      << "| planner | success | length [m] | % of RRT* | time [ms] median [IQR] | time % of "
         "RRT* | first path after (nodes) | seed length [m] | seed % of RRT* | seed time [s] "
         "| seed time % of RRT* |\n|---|---|---|---|---|---|---|---|---|---|---|\n";
-  const std::vector<SamplingColumn> columns = columnsOf(t);
+  const std::vector<SamplingColumn> columns = samplingColumnsOf(t);
   std::vector<Samples> samples;
-  for (const SamplingColumn& c : columns) samples.push_back(runColumn(t, map, c, options, runs));
+  for (const SamplingColumn& c : columns)
+    samples.push_back(runSamplingColumn(t, map, c, options, runs));
   const double ref_length = spreadOf(samples[1].lengths).mean;
   const double ref_time = spreadOf(samples[1].times_ms).median;
   for (std::size_t c = 0; c < columns.size(); ++c)
@@ -234,11 +158,15 @@ TableFinding runTable(const Seed003SamplingTable& t, const Seed003Map& map, cons
   f.kf_ratio = spreadOf(samples[2].lengths).mean / ref_length;
   f.star_length = ref_length;
   f.star_time_ms = ref_time;
+  f.star_time_q1 = spreadOf(samples[1].times_ms).q1;
+  f.star_time_q3 = spreadOf(samples[1].times_ms).q3;
   f.star_first = spreadOf(samples[1].first_path_nodes).median;
   for (std::size_t c = 3; c < columns.size(); ++c) {
     f.fn_time_ratio.push_back(spreadOf(samples[c].times_ms).median / ref_time);
     f.fn_length_ratio.push_back(spreadOf(samples[c].lengths).mean / ref_length);
     f.fn_first.push_back(spreadOf(samples[c].first_path_nodes).median);
+    f.fn_time_q1.push_back(spreadOf(samples[c].times_ms).q1);
+    f.fn_time_q3.push_back(spreadOf(samples[c].times_ms).q3);
   }
   for (std::size_t c = 0; c < columns.size(); ++c)
     best.offer(std::min<std::size_t>(c, 3), samples[c].best);
@@ -257,9 +185,9 @@ std::string goalRuleSection(const Options& options, int runs, const std::vector<
     const Seed003SamplingTable& t = *f.table;
     if (t.mode != 1) continue;
     const Seed003Map* map = mapNamed(maps, t.map);
-    const SamplingColumn rrt = columnsOf(t)[0];
-    const Samples loose = runColumn(t, *map, rrt, options, runs);
-    const Samples tight = runColumn(t, *map, rrt, options, runs, {0.5, false});
+    const SamplingColumn rrt = samplingColumnsOf(t)[0];
+    const Samples loose = runSamplingColumn(t, *map, rrt, options, runs);
+    const Samples tight = runSamplingColumn(t, *map, rrt, options, runs, {0.5, false, {}});
     md << "| " << t.label << " | " << loose.successes << "/" << loose.runs << " | "
        << tight.successes << "/" << tight.runs << " |\n";
   }
@@ -279,9 +207,9 @@ std::string linearScanSection(const Options& options, int runs, const std::vecto
     const Seed003SamplingTable& t = *f.table;
     if (std::string(t.label) != "Tab. 10") continue;
     const Seed003Map* map = mapNamed(maps, t.map);
-    const std::vector<SamplingColumn> columns = columnsOf(t);
-    const Samples star = runColumn(t, *map, columns[1], options, runs, {-1.0, true});
-    const Samples fn = runColumn(t, *map, columns[3], options, runs, {-1.0, true});
+    const std::vector<SamplingColumn> columns = samplingColumnsOf(t);
+    const Samples star = runSamplingColumn(t, *map, columns[1], options, runs, {-1.0, true, {}});
+    const Samples fn = runSamplingColumn(t, *map, columns[3], options, runs, {-1.0, true, {}});
     const double ratio = spreadOf(fn.times_ms).median / spreadOf(star.times_ms).median;
     md << "\n## Linear-scan check (" << t.label << ", map " << t.map << ", " << t.set
        << ")\n\nThe same runs with nearest-neighbour and radius queries scanning every node, as "
@@ -327,9 +255,13 @@ Report seed003Sampling(const Options& options) {
   md << ratioTable(findings);
   md << goalRuleSection(options, runs, maps, findings);
   md << linearScanSection(options, runs, maps, findings, rows);
+  SamplingChecks checks;
+  md << smallCapSection(options, runs, maps, checks, rows);
+  md << modeTwoSection(options, runs, maps, checks, rows);
   if (!options.out_dir.empty())
     writeFileAtomically(std::filesystem::path(options.out_dir) / "seed003-sampling.csv", csv.str());
-  md << samplingMaps(options, maps, best_paths) << agreementSection(samplingFindings(findings));
+  md << samplingMaps(options, maps, best_paths)
+     << agreementSection(samplingFindings(findings, checks));
   return {md.str(), rows};
 }
 

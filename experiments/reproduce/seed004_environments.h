@@ -26,4 +26,10 @@ OccupancyGrid seed004Map(Seed004Environment e, int width, int height, std::uint6
 MapfInstance randomlyPlacedRobots(const OccupancyGrid& grid, int robots, std::uint64_t seed,
                                   int connectivity = 4);
 
+// The bottleneck with every robot forced through the door: random distinct starts left of the
+// dividing wall (column width / 2), random distinct goals right of it. Throws InputError if a
+// room has fewer free cells than robots.
+MapfInstance robotsThroughTheDoor(const OccupancyGrid& grid, int robots, std::uint64_t seed,
+                                  int connectivity = 4);
+
 }  // namespace cosim

@@ -22,12 +22,14 @@ namespace cosim::reproduce {
 namespace {
 
 struct PlannerSetting {
-  const char* label;
+  std::string label;
+  std::string key;  // the row's name in NAME.json and the findings
   const char* planner;
   std::vector<std::pair<std::string, std::string>> params;
 };
 
-const char* seedClaim(Seed004Environment env, const std::string& planner) {
+const char* seedClaim(Seed004Environment env, const std::string& key) {
+  const std::string& planner = key;
   // The thesis's potential field "didn't work out, because of local minima" (§4.6), said of its
   // maze-like maps; it makes no claim for an open room.
   if (planner == "potential_field")
@@ -35,14 +37,19 @@ const char* seedClaim(Seed004Environment env, const std::string& planner) {
   if (planner == "lra_star")
     return env == Seed004Environment::kOpen ? "may be enough in open space (§1.1)"
                                             : "cycles in bottlenecks (§3.2.1)";
-  if (planner == "whca_star") return "most promising (§3.6)";
+  if (planner == "whca2")
+    return env == Seed004Environment::kBottleneck
+               ? "most promising (§3.6); the author's solved the bottleneck only for about 2 "
+                 "(§4.4)"
+               : "most promising (§3.6)";
   if (planner == "ca_star") return "better than LRA* (§3.6)";
   return "";
 }
 
 struct PlannerOutcomes {
   std::map<std::tuple<Seed004Environment, int, std::string>, double> success;  // percent
-  std::map<int, double> door_share;  // bottleneck: mean share of agents that must pass the door
+  std::map<int, double> door_share;    // bottleneck: mean share of agents that must pass the door
+  std::map<int, double> through_door;  // WHCA2's success % with every robot through the door
   double at(Seed004Environment e, int robots, const std::string& planner) const {
     return success.at({e, robots, planner});
   }
@@ -59,6 +66,34 @@ std::string percentRow(const PlannerOutcomes& o, Seed004Environment e, const std
   return s.append(")");
 }
 
+// §4.4: the author's WHCA* solved the bottleneck only for about 2 agents; ours on random
+// placements and with every robot forced through the door.
+Finding bottleneckFinding(const PlannerOutcomes& o, const std::vector<int>& n) {
+  using E = Seed004Environment;
+  const int big = n.back();
+  std::string forced;
+  double forced_big = 0;
+  for (const auto& [robots, pct] : o.through_door) {
+    forced += (forced.empty() ? "" : " / ") + formatFixed(pct, 0);
+    if (robots == big) forced_big = pct;
+  }
+  return checkedFinding(
+      "The thesis's WHCA* solves the bottleneck only for a small number of agents, about 2 (§4.4)",
+      o.at(E::kBottleneck, big, "whca2") < 50 && forced_big < 50,
+      "our WHCA2 (the author's rules): random placements " +
+          percentRow(o, E::kBottleneck, n, "whca2") + ", of which " +
+          formatFixed(100.0 * o.door_share.at(big), 0) + " % of the " + std::to_string(big) +
+          " robots must pass the door; with every robot forced through it " + forced + " %",
+      "the door share is not the reason (with every robot forced through the door ours still "
+      "solves " +
+          formatFixed(forced_big, 0) + " % at " + std::to_string(big) +
+          " robots); our WHCA* differs from the author's in what the text and code leave open or "
+          "what we made complete: swap conflicts reserved, a reverse-resumable A* heuristic, "
+          "replanning every w/2 steps rather than when a robot runs out of moves; which of these "
+          "closes the gap was not isolated",
+      false);
+}
+
 std::vector<Finding> plannerFindings(const PlannerOutcomes& o, const std::vector<int>& n) {
   using E = Seed004Environment;
   std::vector<Finding> f;
@@ -66,7 +101,7 @@ std::vector<Finding> plannerFindings(const PlannerOutcomes& o, const std::vector
   for (int r : n) {
     pf_maze += o.at(E::kMaze, r, "potential_field") / n.size();
     pf_open += o.at(E::kOpen, r, "potential_field") / n.size();
-    whca_maze += o.at(E::kMaze, r, "whca_star") / n.size();
+    whca_maze += o.at(E::kMaze, r, "whca2") / n.size();
     lra_maze += o.at(E::kMaze, r, "lra_star") / n.size();
     ca_bottle += o.at(E::kBottleneck, r, "ca_star") / n.size();
     lra_bottle += o.at(E::kBottleneck, r, "lra_star") / n.size();
@@ -91,30 +126,32 @@ std::vector<Finding> plannerFindings(const PlannerOutcomes& o, const std::vector
       "bottleneck, mean over robot counts: LRA* " + formatFixed(lra_bottle, 0) + " %, CA* " +
           formatFixed(ca_bottle, 0) + " %",
       "with a one-cell door and random goals, LRA*'s waits resolve the jams our instances make"));
-  const int big = n.back();
-  const double whca_big = o.at(E::kBottleneck, big, "whca_star");
-  f.push_back(checkedFinding(
-      "The thesis's WHCA* solves the bottleneck only for a small number of agents, about 2 (§4.4)",
-      whca_big < 50,
-      "our WHCA* (w = 8, dynamic priorities): " + percentRow(o, E::kBottleneck, n, "whca_star"),
-      "ours is Silver's WHCA* with a reverse-resumable A* heuristic, swap-conflict reservations "
-      "and the thesis's priority bumps, where the thesis's own was an unfinished draft (§4.4 is "
-      "TODO notes); and in our bottleneck only " +
-          formatFixed(100.0 * o.door_share.at(big), 0) + " % of the " + std::to_string(big) +
-          " robots must pass the door (random starts and goals), so most never meet there"));
+  f.push_back(bottleneckFinding(o, n));
   return f;
 }
 
 // The planners compared, in the table's order (CBS last: the others' SOC is set against it).
-std::vector<PlannerSetting> comparedPlanners() {
+// Both WHCA* rows take the author's settings (its WHCAEffectivenessTest: the window is the number
+// of robots + 1): WHCA2 is the author's own (priority raised when a robot finds no route, window
+// widened to the highest priority), the fixed-order one stands for the third-party "kilavuz"
+// WHCA* it was to be compared with (Silver's, fixed order, fixed depth).
+std::vector<PlannerSetting> comparedPlanners(int robots) {
+  const std::string w = std::to_string(robots + 1);
   return {
-      {"independent A*", "independent_astar", {}},
-      {"LRA*", "lra_star", {}},
-      {"CA*", "ca_star", {}},
-      {"HCA*", "hca_star", {}},
-      {"WHCA* (w=8, dynamic)", "whca_star", {}},
-      {"potential field", "potential_field", {}},
-      {"CBS (optimal)", "cbs", {}},
+      {"independent A*", "independent_astar", "independent_astar", {}},
+      {"LRA*", "lra_star", "lra_star", {}},
+      {"CA*", "ca_star", "ca_star", {}},
+      {"HCA*", "hca_star", "hca_star", {}},
+      {"WHCA2 (w = robots + 1 = " + w + ", dynamic priorities, window widened to the highest)",
+       "whca2",
+       "whca_star",
+       {{"window", w}, {"priorities", "dynamic"}}},
+      {"WHCA* fixed order (kilavuz's kind, w = " + w + ")",
+       "whca_fixed",
+       "whca_star",
+       {{"window", w}, {"priorities", "fixed"}}},
+      {"potential field", "potential_field", "potential_field", {}},
+      {"CBS (optimal)", "cbs", "cbs", {}},
   };
 }
 
@@ -132,11 +169,15 @@ std::string plannersIntroduction(const Options& options, int runs, int size, dou
          "never form a 2 x 2 block); maze = the seed's generator (§4.1), open = no obstacles, "
          "bottleneck = two rooms joined by one door. The thesis's third environment, \"puzzle "
          "15\" (§6.2), is not explained in its text, so the bottleneck of its §4.4 stands in for "
-         "it. Its planned \"WHCA2 vs kilavuz WHCA\" comparison is not run: the thesis names its "
-         "own WHCA2 but gives no flowchart or pseudo-code for it (§4.4), and does not describe the "
-         "third-party \"kilavuz\" variant, so neither can be rebuilt from the text; WHCA* here is "
-         "Silver's (2005) with the thesis's dynamic priorities (§4.5). random distinct starts and "
-         "goals; " +
+         "it. The text has no pseudo-code for its WHCA2 (§4.4) and does not explain its planned "
+         "\"WHCA2 vs kilavuz WHCA\" comparison (§6.1); the author's code (igrek51/coop-pathfinder, "
+         "from which the map size, the 20 simulations and the step limit of width x height are "
+         "taken) holds both, and both rows take its window of robots + 1: WHCA2 is our WHCA* "
+         "with the author's rules (an agent that finds no route gets a higher priority, the "
+         "window widens to the highest priority), the fixed-order WHCA* stands for the "
+         "third-party \"kilavuz\" library (Hakan Eryargi's: Silver's WHCA*, fixed order, fixed "
+         "depth). Our WHCA* replans every w/2 steps; the author's when a robot runs out of moves. "
+         "Random distinct starts and goals; " +
          std::to_string(runs) + " instances per row (seed " + std::to_string(options.seed) +
          " + i), the same instances for every planner; time limit " + formatFixed(time_limit_s, 0) +
          " s per run. A run counts as solved only if the independent validator accepts its paths. "
@@ -151,7 +192,6 @@ struct PlannersSetting {
   int runs, size;
   double time_limit_s;
   int connectivity;
-  std::vector<PlannerSetting> planners;
   int first_robot_count;  // the figures show the first instance at this count
 };
 
@@ -169,7 +209,7 @@ PlannersRow runPlannersRow(const PlannersSetting& at, Seed004Environment env, in
   const Options& options = at.options;
   const int runs = at.runs, size = at.size, connectivity = at.connectivity;
   const double time_limit_s = at.time_limit_s;
-  const std::vector<PlannerSetting>& planners = at.planners;
+  const std::vector<PlannerSetting> planners = comparedPlanners(robots);
   PlannersRow row{std::vector<MapfTrialSummary>(planners.size()),
                   std::vector<double>(planners.size(), 0.0), std::vector<int>(planners.size(), 0)};
   std::vector<MapfTrialSummary>& summary = row.summary;
@@ -188,10 +228,10 @@ PlannersRow runPlannersRow(const PlannersSetting& at, Seed004Environment env, in
           options.out_dir, "seed004-planners", static_cast<int>(map_files.size()) + 1,
           std::string(seed004EnvironmentName(env)) + ", " + std::to_string(robots) + " robots",
           inst,
-          {{"CBS", &trials[6]},
-           {"WHCA*", &trials[4]},
+          {{"CBS", &trials[7]},
+           {"WHCA2", &trials[4]},
            {"LRA*", &trials[1]},
-           {"potential field", &trials[5]}}));
+           {"potential field", &trials[6]}}));
     if (env == Seed004Environment::kBottleneck)
       outcomes.door_share[robots] += doorCrossingShare(inst) / runs;
     for (std::size_t k = 0; k < planners.size(); ++k) {
@@ -216,18 +256,63 @@ void writePlannersRow(const std::vector<PlannerSetting>& planners, Seed004Enviro
           planners[k].label + " | " + formatFixed(s.successPercent(), 0) + " | " +
           formatFixed(s.solved ? s.meanSumOfCosts() : NAN, 1) + " | " +
           formatFixed(soc_over_cbs, 3) + " | " + formatFixed(s.meanTimeMs(), 2) + " | " +
-          seedClaim(env, planners[k].planner) + " |\n";
-    outcomes.success[{env, robots, planners[k].planner}] = s.successPercent();
+          seedClaim(env, planners[k].key) + " |\n";
+    outcomes.success[{env, robots, planners[k].key}] = s.successPercent();
     JsonObject row;
     row.add("environment", seed004EnvironmentName(env))
         .add("robots", robots)
-        .add("planner", planners[k].planner);
+        .add("planner", planners[k].key);
     addMapfOutcome(row, s)
         .add("soc_over_cbs", soc_over_cbs)
         .add("mean_time_ms", s.meanTimeMs())
-        .add("seed_claim", seedClaim(env, planners[k].planner));
+        .add("seed_claim", seedClaim(env, planners[k].key));
     rows.push_back(row);
   }
+}
+
+// The bottleneck with every robot's start left of the wall and its goal right of it: WHCA2 on the
+// same sizes, so the §4.4 line can tell the door share from the algorithm.
+std::string throughDoorSection(const PlannersSetting& at, const std::vector<int>& robot_counts,
+                               PlannerOutcomes& outcomes, std::vector<JsonObject>& rows) {
+  std::string md =
+      "\n## Every robot through the door\n\nThe bottleneck with every start in the left room "
+      "and every goal in the right one (random, distinct), the same number of instances; WHCA2 "
+      "as above:\n\n| robots | WHCA2 success % | mean SOC |\n|---|---|---|\n";
+  for (const int robots : robot_counts) {
+    MapfTrialSummary s;
+    const PlannerSetting whca2 = comparedPlanners(robots)[4];
+    for (int i = 0; i < at.runs; ++i) {
+      const std::uint64_t seed = at.options.seed + static_cast<std::uint64_t>(i);
+      const MapfInstance inst =
+          robotsThroughTheDoor(seed004Map(Seed004Environment::kBottleneck, at.size, at.size, seed),
+                               robots, seed * 7919 + robots, at.connectivity);
+      s.add(runMapfTrial(whca2.planner, whca2.params, inst, at.time_limit_s, seed));
+    }
+    outcomes.through_door[robots] = s.successPercent();
+    md += "| " + std::to_string(robots) + " | " + formatFixed(s.successPercent(), 0) + " | " +
+          formatFixed(s.solved ? s.meanSumOfCosts() : NAN, 1) + " |\n";
+    JsonObject row;
+    row.add("environment", "bottleneck, all through the door")
+        .add("robots", robots)
+        .add("planner", whca2.key);
+    rows.push_back(addMapfOutcome(row, s));
+  }
+  return md;
+}
+
+// §6.1's planned "WHCA2 vs kilavuz WHCA": the thesis has no result; ours, in words from the table.
+std::string whcaComparison(const PlannerOutcomes& o, const std::vector<int>& n) {
+  int better = 0, worse = 0, cells = 0;
+  for (const auto e :
+       {Seed004Environment::kMaze, Seed004Environment::kOpen, Seed004Environment::kBottleneck})
+    for (const int r : n) {
+      const double d = o.at(e, r, "whca2") - o.at(e, r, "whca_fixed");
+      ++cells, better += d > 1e-9, worse += d < -1e-9;
+    }
+  return "\n**WHCA2 vs kilavuz WHCA** (planned in §6.1, no result in the thesis): WHCA2's "
+         "success is higher than the fixed-order WHCA*'s in " +
+         std::to_string(better) + " of " + std::to_string(cells) + " rows above, lower in " +
+         std::to_string(worse) + ".\n\n";
 }
 
 }  // namespace
@@ -243,8 +328,7 @@ Report seed004Planners(const Options& options) {
   // Seed 004 §4.2: a diagonal move is allowed when all four cells it touches are free
   // (MapfInstance's 8-connectivity).
   const int connectivity = 8;
-  const PlannersSetting at{
-      options, runs, size, time_limit_s, connectivity, comparedPlanners(), robot_counts.front()};
+  const PlannersSetting at{options, runs, size, time_limit_s, connectivity, robot_counts.front()};
   std::string md = plannersIntroduction(options, runs, size, time_limit_s);
   std::vector<JsonObject> rows;
   PlannerOutcomes outcomes;
@@ -252,13 +336,15 @@ Report seed004Planners(const Options& options) {
   for (const auto env :
        {Seed004Environment::kMaze, Seed004Environment::kOpen, Seed004Environment::kBottleneck})
     for (const int robots : robot_counts)
-      writePlannersRow(at.planners, env, robots,
+      writePlannersRow(comparedPlanners(robots), env, robots,
                        runPlannersRow(at, env, robots, outcomes, map_files), md, rows, outcomes);
   md.append("\n").append(
       mapFiguresMarkdown(map_files, {"maze: the thesis's own generator (§4.1), exact",
                                      "open: an empty room (the thesis's \"open\")",
                                      "bottleneck: two rooms and a one-cell door, built "
                                      "from §4.4's description"}));
+  md += throughDoorSection(at, robot_counts, outcomes, rows);
+  md += whcaComparison(outcomes, robot_counts);
   md += agreementSection(plannerFindings(outcomes, robot_counts));
   return {md, rows};
 }

@@ -76,6 +76,9 @@ class RrtStarRun {
     result.counters["tree_nodes"] = static_cast<double>(tree_.size());
     result.counters["rewires"] = rewires_;
     if (solved()) result.counters["first_path_nodes"] = first_path_nodes_;
+    // The goal's cost-to-come as the tree holds it: the path's length unless rewired costs were
+    // not passed on (rewire_costs: node), when it keeps an older, longer value.
+    if (solved()) result.counters["goal_cost"] = tree_.cost(goal_node_);
     if (fixed_nodes_) result.counters["removed_nodes"] = removed_;
     if (solved() && o_.mode == 2 &&
         (o_.max_nodes == 0 || tree_.generated() < static_cast<std::size_t>(o_.max_nodes)))
@@ -188,13 +191,13 @@ class RrtStarRun {
   void rewire(std::uint32_t id, std::uint32_t parent, double cost_new,
               const Eigen::Vector3d& x_new) {
     for (Neighbor& n : near_) {
-      if (n.id == parent) continue;
+      if (n.id == parent || (!options_.reattach_goal && n.id == goal_node_)) continue;
       const double c = cost_new + n.distance;
       if (c >= tree_.cost(n.id)) continue;
       if (n.free < 0) n.free = ctx_.segmentFree(tree_.position(n.id), x_new) ? 1 : 0;
       if (n.free == 0) continue;
       const std::uint32_t old_parent = tree_.parent(n.id);
-      tree_.reparent(n.id, id, c);
+      tree_.reparent(n.id, id, c, options_.propagate_rewire_costs);
       ++rewires_;
       if (fixed_nodes_ && tree_.isLeaf(old_parent)) leaves_.push(tree_, old_parent, goal_);
     }
@@ -206,14 +209,14 @@ class RrtStarRun {
     const double d = (goal_ - p).norm();
     if (id == goal_node_ || d > o_.goal_tolerance) return;
     const double c = tree_.cost(id) + d;
-    if (solved() && c >= tree_.cost(goal_node_)) return;
+    if (solved() && (!options_.reattach_goal || c >= tree_.cost(goal_node_))) return;
     if (!ctx_.segmentFree(p, goal_)) return;
     if (!solved()) {
       goal_node_ = tree_.add(goal_, id, c);
       first_path_nodes_ = static_cast<double>(tree_.generated());
     } else {
       const std::uint32_t old_parent = tree_.parent(goal_node_);
-      tree_.reparent(goal_node_, id, c);
+      tree_.reparent(goal_node_, id, c, options_.propagate_rewire_costs);
       if (fixed_nodes_ && tree_.isLeaf(old_parent)) leaves_.push(tree_, old_parent, goal_);
     }
   }

@@ -33,6 +33,12 @@ struct RrtStarOptions {
   double rewire_radius = 4.0;
   int max_tree_nodes = 0;  // RRT*FN cap M; 0 = no cap (plain RRT*)
   bool informed = false;   // Informed RRT*
+  // Seed 003's two untested explanations of its mode 2 barely shortening the path (both true is
+  // the usual RRT*): a rewired node's new cost passed on to its descendants, and the goal
+  // re-attached to any node that reaches it more cheaply, by the goal test or by rewiring
+  // (false: it keeps the node that first reached it).
+  bool propagate_rewire_costs = true;
+  bool reattach_goal = true;
 };
 
 class RrtStar : public Planner {

@@ -70,6 +70,10 @@ RrtStarOptions readRrtStarThesis(ParamSet& p) {
   o.rewire_radius = p.getDouble("rewire_radius", 4.0, 1e-6, 1e6);
   o.max_tree_nodes = p.getInt("max_tree_nodes", 0, 0, kNodeMemoryBound);
   o.choose_parent = ChooseParent::NearestParent;
+  // The thesis's mode 2 barely shortens its paths; its two candidate causes, each switchable.
+  o.propagate_rewire_costs =
+      p.getString("rewire_costs", "subtree", {"subtree", "node"}) == "subtree";
+  o.reattach_goal = p.getBool("goal_reattach", true);
   return o;
 }
 
@@ -113,9 +117,9 @@ void registerSamplingPlanners(PlannerRegistry& r) {
          "Navratil 2019's own RRT* (its Fig. 16: a new node joins its nearest node's parent if "
          "visible, "
          "then rewires within rewire_radius), no goal bias, mode 1 (first path) as the thesis; "
-         "max_tree_nodes > 0 makes it Navratil "
-         "2019's RRT*FN (params: step, rewire_radius, max_nodes, mode, goal_bias, "
-         "goal_tolerance, max_tree_nodes, neighbour_search, shortcut)",
+         "max_tree_nodes > 0 makes it Navratil 2019's RRT*FN (params: step, rewire_radius, "
+         "max_nodes, mode, goal_bias, goal_tolerance, max_tree_nodes, neighbour_search, "
+         "rewire_costs, goal_reattach, shortcut)",
          [](ParamSet& p) -> std::unique_ptr<Planner> {
            return std::make_unique<RrtStar>(readRrtStarThesis(p));
          },

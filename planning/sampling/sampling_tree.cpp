@@ -34,11 +34,13 @@ void SamplingTree::unlink(std::uint32_t node) {
   n.parent = n.next_sibling = n.prev_sibling = kNone;
 }
 
-void SamplingTree::reparent(std::uint32_t node, std::uint32_t new_parent, double new_cost) {
+void SamplingTree::reparent(std::uint32_t node, std::uint32_t new_parent, double new_cost,
+                            bool propagate) {
   unlink(node);
   link(node, new_parent);
   const double delta = new_cost - nodes_[node].cost;
   nodes_[node].cost = new_cost;
+  if (!propagate) return;
   stack_.clear();
   for (std::uint32_t c = nodes_[node].first_child; c != kNone; c = nodes_[c].next_sibling)
     stack_.push_back(c);

@@ -24,7 +24,11 @@ class SamplingTree {
   std::uint32_t add(const Eigen::Vector3d& p, std::uint32_t parent, double cost);
   // Makes new_parent the parent of node, whose cost-to-come becomes new_cost; the costs of all
   // its descendants change by the same amount.
-  void reparent(std::uint32_t node, std::uint32_t new_parent, double new_cost);
+  // With propagate false only `node`'s cost changes and its descendants keep their old costs
+  // (seed 003's untested mode-2 hypothesis: a tree kept as parent and cost arrays without a pass
+  // over the subtree).
+  void reparent(std::uint32_t node, std::uint32_t new_parent, double new_cost,
+                bool propagate = true);
   // Removes a node without children from the tree and from the nearest-neighbour index.
   void removeLeaf(std::uint32_t node);
 

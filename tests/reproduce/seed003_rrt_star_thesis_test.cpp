@@ -84,5 +84,37 @@ TEST(RrtStarThesis, LinearScanChangesTheCostNotTheTree) {
   }
 }
 
+// The thesis's two candidate causes of its mode 2 barely shortening the path (Tabs. 4-5). With
+// both, the goal keeps the cost it got at the first path: the same as mode 1's on the same seed
+// (the runs are identical up to that path), though the path itself still shortens through its
+// rewired ancestors. With neither (the usual RRT*), mode 2 lowers the goal's cost to the length.
+TEST(RrtStarThesis, WithoutCostPassingOrGoalReattachingTheGoalKeepsItsFirstCost) {
+  const Seed003Map map = seed003Maps()[0];
+  ASSERT_EQ(map.name, "2d");
+  const std::map<std::string, std::string> both = {{"rewire_costs", "node"},
+                                                   {"goal_reattach", "false"}};
+  auto settings = [](const char* mode, std::map<std::string, std::string> extra) {
+    extra.insert({{"mode", mode}, {"max_nodes", "1000"}, {"step", "1"}, {"rewire_radius", "3"}});
+    return extra;
+  };
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const PlanResult m1 = plan("rrt_star_thesis", map, seed, settings("1", both));
+    const PlanResult m2 = plan("rrt_star_thesis", map, seed, settings("2", both));
+    ASSERT_TRUE(m1.success && m2.success);
+    EXPECT_DOUBLE_EQ(m2.counters.at("goal_cost"), m1.counters.at("goal_cost"));
+    EXPECT_LT(m2.path.length(), m2.counters.at("goal_cost") - 1e-9);  // the stale value
+    const PlanResult usual = plan("rrt_star_thesis", map, seed, settings("2", {}));
+    ASSERT_TRUE(usual.success);
+    EXPECT_NEAR(usual.counters.at("goal_cost"), usual.path.length(), 1e-6);
+    EXPECT_LT(usual.counters.at("goal_cost"), m1.counters.at("goal_cost"));
+  }
+}
+
+TEST(RrtStarThesis, RejectsAnUnknownRewireCostRule) {
+  ParamSet p("test");
+  p.set("rewire_costs", "ancestors");
+  EXPECT_THROW(makePlanner("rrt_star_thesis", p), InputError);
+}
+
 }  // namespace
 }  // namespace cosim
