@@ -163,7 +163,7 @@ Finding maxOneTime(const MsacResults& r) {
   int third = 0;
   for (std::size_t k = 0; k < r.m[0].size(); ++k) {
     const double ratio = r.m[1][k].ours.mean_ms / r.m[0][k].ours.mean_ms;
-    third += ratio > 0.2 && ratio < 0.5;
+    third += ratio > 0.25 && ratio < 0.45;
     q += (k ? " / " : "") + seed000Number(ratio, 2);
     steps += (k ? " / " : "") + seed000Number(r.m[1][k].ours.mean_steps, 0) + " of " +
              seed000Number(r.m[0][k].ours.mean_steps, 0);
