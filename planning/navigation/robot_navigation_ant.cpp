@@ -28,6 +28,22 @@ void RobotNavigationAnt::reset(const NavigationWorld& world, const Cell& start, 
   visited_.assign(world.grid().cellCount(), 0);
   visited_[world.grid().index(start.x, start.y)] = 1;
   temporary_.clear();
+  lifted_.clear();
+}
+
+bool RobotNavigationAnt::wasLifted(const Cell& c) const {
+  for (const Cell& b : lifted_)
+    if (sameCell(b, c)) return true;
+  return false;
+}
+
+void RobotNavigationAnt::liftNewestTemporary() {
+  auto it = temporary_.end();
+  while (it != temporary_.begin() && wasLifted(*(it - 1))) --it;
+  if (it == temporary_.begin()) it = temporary_.end();  // all lifted before: the newest
+  --it;
+  if (!wasLifted(*it)) lifted_.push_back(*it);
+  temporary_.erase(it);
 }
 
 bool RobotNavigationAnt::temporarilyBlocked(const Cell& c) const {
@@ -156,7 +172,7 @@ NavigationDecision RobotNavigationAnt::decide(const Cell& at_in, double t) {
   if (!found) {
     // §4.2.2: lift the newest anti-oscillation obstacle and search with S_max x 1.5.
     if (!temporary_.empty()) {
-      temporary_.pop_back();
+      liftNewestTemporary();
       w = buildWindow(at);
     }
     found = localGoal(w, at, local) && plan(w, at, local, 1.5, path, plan_limit);
