@@ -37,13 +37,21 @@ bool RobotNavigationAnt::wasLifted(const Cell& c) const {
   return false;
 }
 
-void RobotNavigationAnt::liftNewestTemporary() {
-  auto it = temporary_.end();
-  while (it != temporary_.begin() && wasLifted(*(it - 1))) --it;
-  if (it == temporary_.begin()) it = temporary_.end();  // all lifted before: the newest
-  --it;
+bool RobotNavigationAnt::liftNewestTemporary(const Cell& at) {
+  // §4.2 b: only the temporary obstacles in the field of view count.
+  auto newest = [&](bool skip_lifted) {
+    for (auto it = temporary_.end(); it != temporary_.begin();) {
+      --it;
+      if (NavigationWorld::inView(at, *it, p_.sight) && !(skip_lifted && wasLifted(*it))) return it;
+    }
+    return temporary_.end();
+  };
+  auto it = newest(true);
+  if (it == temporary_.end()) it = newest(false);  // all in view were lifted before
+  if (it == temporary_.end()) return false;
   if (!wasLifted(*it)) lifted_.push_back(*it);
   temporary_.erase(it);
+  return true;
 }
 
 bool RobotNavigationAnt::temporarilyBlocked(const Cell& c) const {
@@ -171,10 +179,7 @@ NavigationDecision RobotNavigationAnt::decide(const Cell& at_in, double t) {
   d.replans = 1;
   if (!found) {
     // §4.2.2: lift the newest anti-oscillation obstacle and search with S_max x 1.5.
-    if (!temporary_.empty()) {
-      liftNewestTemporary();
-      w = buildWindow(at);
-    }
+    if (liftNewestTemporary(at)) w = buildWindow(at);
     found = localGoal(w, at, local) && plan(w, at, local, 1.5, path, plan_limit);
     ++d.replans;
   }
