@@ -105,10 +105,10 @@ TEST(NavigationNavigators, UnreachableGoalEndsTheRunWithAMessage) {
 }
 
 // Seed 000 §4.2 b: when the view shows no way (the robot has walled itself in with its own
-// anti-oscillation obstacles), the dead-lock handling lifts the newest of them. Lifting always the
-// newest re-opened only the cell the robot had just left: it stepped in, back out, marked it
-// again and lifted it again, forever (this run, seed 2 at sight 4 inside seed000-rna's dead end,
-// hit the decision limit). Lifting the newest not lifted before opens the next one each time.
+// anti-oscillation obstacles), the dead-lock handling lifts the newest of them in view. Lifting
+// always the newest re-opened only the cell the robot had just left: it stepped in, back out,
+// marked it again and lifted it again, forever (this run, seed 2 at sight 4 inside seed000-rna's
+// dead end, hit the decision limit). Lifting the newest not lifted before opens the next one.
 TEST(NavigationNavigators, RnaDeadLockHandlingLetsTheRobotOutOfItsOwnTemporaryObstacles) {
   OccupancyGrid g(50, 50);
   const auto block = [&](int x0, int y0, int x1, int y1) {
