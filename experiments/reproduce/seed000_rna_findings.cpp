@@ -145,6 +145,44 @@ std::vector<Finding> figureFindings(const RnaTables& t) {
   return f;
 }
 
+// The runs that never arrive, with how they ended.
+Finding nonArrivals(const RnaTables& t) {
+  // Runs that never arrive, with the waits for want of a static path (§4.2 b's dead-lock
+  // handling: lift the newest anti-oscillation obstacle, MSAC with 1.5 S_max, then wait; the run
+  // ends after max_waits waits in a row).
+  std::string missing;
+  const auto note = [&](const std::string& where, const NavigationStats& s) {
+    if (s.reached == s.runs) return;
+    missing += std::string(missing.empty() ? "" : "; ") + where + ": " +
+               std::to_string(s.runs - s.reached) + " of " + std::to_string(s.runs) +
+               " runs did not arrive (" + std::to_string(s.waits) + " waits in all), ending with";
+    for (const auto& [message, count] : s.endings)
+      missing += " '" + message + "' x" + std::to_string(count);
+  };
+  for (const char* name : {"rna", "wf_rna"}) {
+    for (std::size_t k = 0; k < t.dead_end_sights.size(); ++k)
+      note(std::string(name) + ", dead end, sight " + std::to_string(t.dead_end_sights[k]),
+           t.dead_end.at(name)[k]);
+    for (std::size_t k = 0; k < t.scene2_sights.size(); ++k)
+      note(std::string(name) + ", scene 2, sight " + std::to_string(t.scene2_sights[k]),
+           t.scene2.at(name)[k]);
+  }
+  return checkedFinding(
+      "With the dead-lock handling of §4.2 b (lift the newest anti-oscillation obstacle, MSAC "
+      "with 1.5 S_max, then wait, end after too many waits in a row) the robot reaches the goal "
+      "(the thesis's figures show only runs that arrive; ours lifts the newest in view not "
+      "lifted before, see robot_navigation_ant.h)",
+      missing.empty(), missing.empty() ? "every RNA and WF-RNA run arrived" : missing,
+      "a run that gives up after max_waits = 20 waits in a row (§4.2 b's maximum number of "
+      "waits, whose value the thesis does not give) is walled in by more anti-oscillation "
+      "obstacles in view than 20 waits lift, one per wait: with 200 allowed, " +
+          std::to_string(t.scene2_many_waits.reached) + " of " +
+          std::to_string(t.scene2_many_waits.runs) + " scene-2 runs at sight " +
+          std::to_string(t.scene2_sights.front()) + " arrive (" +
+          std::to_string(t.scene2_many_waits.waits) + " waits in all)",
+      true);
+}
+
 }  // namespace
 
 std::vector<Finding> rnaFindings(const RnaTables& t) {
@@ -207,40 +245,7 @@ std::vector<Finding> rnaFindings(const RnaTables& t) {
       Finding::Verdict::kDiffers, "rebuilt scenes and pre-drawn obstacle routes",
       "the maps are not in the text (our dead end, scene 2 and random maps are equivalents built "
       "from the descriptions), and fixed routes make every navigator meet the same traffic"));
-  // Runs that never arrive, with the waits for want of a static path (§4.2 b's dead-lock
-  // handling: lift the newest anti-oscillation obstacle, MSAC with 1.5 S_max, then wait; the run
-  // ends after max_waits waits in a row).
-  std::string missing;
-  const auto note = [&](const std::string& where, const NavigationStats& s) {
-    if (s.reached == s.runs) return;
-    missing += std::string(missing.empty() ? "" : "; ") + where + ": " +
-               std::to_string(s.runs - s.reached) + " of " + std::to_string(s.runs) +
-               " runs did not arrive (" + std::to_string(s.waits) + " waits in all), ending with";
-    for (const auto& [message, count] : s.endings)
-      missing += " '" + message + "' x" + std::to_string(count);
-  };
-  for (const char* name : {"rna", "wf_rna"}) {
-    for (std::size_t k = 0; k < t.dead_end_sights.size(); ++k)
-      note(std::string(name) + ", dead end, sight " + std::to_string(t.dead_end_sights[k]),
-           t.dead_end.at(name)[k]);
-    for (std::size_t k = 0; k < t.scene2_sights.size(); ++k)
-      note(std::string(name) + ", scene 2, sight " + std::to_string(t.scene2_sights[k]),
-           t.scene2.at(name)[k]);
-  }
-  f.push_back(checkedFinding(
-      "With the dead-lock handling of §4.2 b (lift the newest anti-oscillation obstacle, MSAC "
-      "with 1.5 S_max, then wait, end after too many waits in a row) the robot reaches the goal "
-      "(the thesis's figures show only runs that arrive; ours lifts the newest in view not "
-      "lifted before, see robot_navigation_ant.h)",
-      missing.empty(), missing.empty() ? "every RNA and WF-RNA run arrived" : missing,
-      "a run that gives up after max_waits = 20 waits in a row (§4.2 b's maximum number of "
-      "waits, whose value the thesis does not give) is walled in by more anti-oscillation "
-      "obstacles in view than 20 waits lift, one per wait: with 200 allowed, " +
-          std::to_string(t.scene2_many_waits.reached) + " of " +
-          std::to_string(t.scene2_many_waits.runs) + " scene-2 runs at sight " +
-          std::to_string(t.scene2_sights.front()) + " arrive (" +
-          std::to_string(t.scene2_many_waits.waits) + " waits in all)",
-      true));
+  f.push_back(nonArrivals(t));
   for (Finding& x : figureFindings(t)) f.push_back(x);
   return f;
 }
