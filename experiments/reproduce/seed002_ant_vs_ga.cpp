@@ -88,6 +88,7 @@ struct AntVsGaTally {
   // Per workspace and method: the iterations (ants) or generations (GA) that found the runs'
   // final paths, over all queries and runs.
   std::vector<double> best_iterations[3][kMethodCount];
+  int effort_divisor = 1;  // --quick runs a fifth of the iterations and generations
   std::vector<std::string> map_files;
 };
 
@@ -235,31 +236,37 @@ std::vector<double> runWorkspace(const Options& options, int runs, int effort_di
 
 // The seed's claims against the tally.
 // The slides' convergence table: the ants need fewer iterations (and a smaller population) than
-// the GA; ours: the iteration or generation that found each run's final path.
+// the GA; ours: the iteration or generation that found each run's final path, against the budget.
 Finding convergence(const AntVsGaTally& tally) {
-  int fewer[2] = {0, 0};
+  const auto ws = seed002Workspaces();
+  int fewer[2] = {0, 0}, late = 0;  // late: a described method's path came in its last 15 %
   std::string ours;
   for (int wi = 0; wi < 3; ++wi) {
     double m[kMethodCount];
     for (int k = 0; k < kMethodCount; ++k) m[k] = spreadOf(tally.best_iterations[wi][k]).mean;
     for (int v = 0; v < 2; ++v) fewer[v] += m[2 * v] < m[2 * v + 1];
-    ours += std::string(wi ? "; " : "") + "workspace " + std::to_string(wi + 1) + ": " +
-            fmt("%.1f", m[0]) + " vs " + fmt("%.1f", m[1]) + " as described, " + fmt("%.1f", m[2]) +
-            " vs " + fmt("%.1f", m[3]) + " ours";
+    const int ant_budget = std::max(1, ws[wi].ant_iterations / tally.effort_divisor),
+              ga_budget = std::max(1, ws[wi].generations / tally.effort_divisor);
+    late += m[0] > 0.85 * ant_budget && m[1] > 0.85 * ga_budget;
+    ours += std::string(wi ? "; " : "") + "workspace " + std::to_string(wi + 1) +
+            ": as described " + fmt("%.1f", m[0]) + " of " + std::to_string(ant_budget) + " vs " +
+            fmt("%.1f", m[1]) + " of " + std::to_string(ga_budget) + ", ours " + fmt("%.1f", m[2]) +
+            " vs " + fmt("%.1f", m[3]);
   }
   return checkedFinding(
       "The ants need fewer iterations than the GA needs generations, with a smaller population "
       "(the slides' convergence table: 30 / 45 / 50 iterations of 20 / 25 / 30 ants against 50 / "
       "80 / 100 generations of 20 / 35 / 50 chromosomes)",
-      fewer[0] == 3 && fewer[1] == 3,
-      "the ants' final path found earlier than the GA's in " + std::to_string(fewer[0]) +
-          " of 3 workspaces as described, " + std::to_string(fewer[1]) +
-          " of 3 with ours (iteration vs generation that found it, means: " + ours +
-          "); the populations are the slides' budgets, not measured",
-      "compared the iteration or generation that found each run's final path (the table "
-      "above); the slides give no convergence criterion, so which measure they used is not "
-      "known",
-      false);
+      fewer[0] == 3 && fewer[1] == 3 && late == 0,
+      "iteration (ants) vs generation (GA) that found the final path, means: " + ours +
+          "; the populations are the slides' budgets, not measured",
+      late == 3 ? "as described, both methods still found their final paths in the last 15 % of "
+                  "their budgets in every workspace, so neither converged and the earlier ant "
+                  "iteration only reflects the smaller ant budget; with ours the GA's guided "
+                  "start and shortening mutation find its final path first"
+                : "compared the iteration or generation that found each run's final path (the "
+                  "table above); the slides give no convergence criterion",
+      late == 3);
 }
 
 std::vector<Finding> antVsGaFindings(const AntVsGaTally& tally) {
@@ -327,6 +334,7 @@ Report seed002AntVsGa(const Options& options) {
            "[ms] | GA, ours [ms] | plain GA/ant | our GA/ant |\n"
            "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   AntVsGaTally tally;
+  tally.effort_divisor = effort_divisor;
   const auto ws = seed002Workspaces();
   for (std::size_t wi = 0; wi < ws.size(); ++wi) {
     const Seed002Workspace& w = ws[wi];
