@@ -81,7 +81,11 @@ const std::map<std::string, Docs>& specificDocs() {
         {"s_max", "steps per iteration; 0 = N*N/2 with N the larger grid side (Pencik 2014)"},
         {"post_processing", "cycle removal and light smoothing of each path found"},
         {"tabu_version", "tabu list variant of Pencik 2014 (1, 2 or 3)"},
-        {"keep_dead_ends", "dead-end marks carry over between iterations (Pencik 2014 §4.3.2)"}}},
+        {"keep_dead_ends", "dead-end marks carry over between iterations (Pencik 2014 §4.3.2)"},
+        {"iteration_end",
+         "meeting: an iteration ends when the two groups meet (Pencik 2014 §4.3); shorter_path: "
+         "only when a meeting gives a shorter path than the best so far, else the scouts walk on "
+         "to S_max"}}},
       {"saco",
        {{"gamma", "memory capacity: visited cells held as obstacles (0 = none)"},
         {"memory", "first: the first gamma cells visited; rolling: the last gamma (Pencik 2014)"},

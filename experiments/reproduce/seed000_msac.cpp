@@ -18,19 +18,6 @@ namespace {
 
 constexpr double kNone = std::numeric_limits<double>::quiet_NaN();
 
-Seed000Stats msacRuns(const Seed000Scene& scene, int m, int max_iterations, bool post_processing,
-                      int tabu_version, int runs, std::uint64_t seed) {
-  MsacParams p;
-  p.ants = m;
-  p.iterations = max_iterations;
-  p.s_max = 1250;
-  p.post_processing = post_processing;
-  p.tabu_version = tabu_version;
-  p.conditional_diagonal = false;
-  Msac msac(p);
-  return runSeed000(msac, scene, runs, seed);
-}
-
 // What every table of this reproduction runs on: the scenes, their optima, the runs and seed.
 struct MsacSetting {
   const Options& options;
@@ -38,6 +25,132 @@ struct MsacSetting {
   std::uint64_t seed;
   const Seed000SceneSet& scenes;
 };
+
+// The thesis's MSAC settings: S_max 1250, unconditional diagonals, an iteration ends when the
+// groups meet (§4.3).
+MsacParams thesisMsac(int m, int max_iterations, bool post_processing, int tabu_version) {
+  MsacParams p;
+  p.ants = m;
+  p.iterations = max_iterations;
+  p.s_max = 1250;
+  p.post_processing = post_processing;
+  p.tabu_version = tabu_version;
+  p.conditional_diagonal = false;
+  p.iteration_end = MsacIterationEnd::Meeting;
+  return p;
+}
+
+Seed000Stats msacRuns(const Seed000Scene& scene, int m, int max_iterations, bool post_processing,
+                      int tabu_version, int runs, std::uint64_t seed) {
+  Msac msac(thesisMsac(m, max_iterations, post_processing, tabu_version));
+  return runSeed000(msac, scene, runs, seed);
+}
+
+// Which rule ends an iteration: the thesis's (the groups meet) against the literal step 6 (only
+// a shorter path), m 4, MAX 3, on scenes 1 and 2.
+IterationEndResults iterationEndSection(const MsacSetting& at, std::ostringstream& out,
+                                        std::vector<JsonObject>& rows) {
+  IterationEndResults r;
+  const Seed000Scene* scenes[2] = {&at.scenes.scene1, &at.scenes.scene2};
+  for (int rule = 0; rule < 2; ++rule)
+    for (int k = 0; k < 2; ++k) {
+      MsacParams p = thesisMsac(4, 3, true, 3);
+      p.iteration_end = rule == 0 ? MsacIterationEnd::Meeting : MsacIterationEnd::ShorterPath;
+      Msac msac(p);
+      r.stats[rule][k] = runSeed000(msac, *scenes[k], at.runs, at.seed);
+    }
+  out << "### What ends an iteration (§4.3), m 4, MAX 3\n\nThe thesis: an iteration ends when "
+         "an ant of one group comes upon the path of the other group, or after S_max steps "
+         "(used in every other table). Step 6 read literally: only a meeting that gives a "
+         "shorter path than the best so far ends it, so from the second iteration on the scouts "
+         "walk on, often to S_max. Steps are synchronised steps over all MAX iterations.\n\n"
+         "| iteration ends | scene 1 time [ms] | scene 1 steps | scene 1 avg. length | scene 2 "
+         "time [ms] | scene 2 steps | scene 2 avg. length |\n|---|---|---|---|---|---|---|\n";
+  for (int rule = 0; rule < 2; ++rule) {
+    const char* name = rule == 0 ? "groups meet (thesis)" : "shorter path (step 6 literally)";
+    out << "| " << name << " |";
+    JsonObject row;
+    row.add("table", "iteration end").add("rule", name);
+    for (int k = 0; k < 2; ++k) {
+      const Seed000Stats& st = r.stats[rule][k];
+      out << " " << seed000Number(st.mean_ms, 3) << " | " << seed000Number(st.mean_steps, 0)
+          << " | " << seed000Number(st.mean_length, 2) << " |";
+      const std::string scene = k == 0 ? "scene1_" : "scene2_";
+      row.add(scene + "time_ms", st.mean_ms)
+          .add(scene + "steps", st.mean_steps)
+          .add(scene + "mean_length", st.mean_length);
+    }
+    out << "\n";
+    rows.push_back(row);
+  }
+  out << "\n";
+  return r;
+}
+
+// Whether a path makes no detour down the right side of scene 3: its part between rows 12 and 46
+// is as long as the octile distance between that part's ends.
+bool straightDownTheEdge(const std::vector<Cell>& cells) {
+  std::size_t first = cells.size(), last = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i)
+    if (cells[i].y >= 12 && cells[i].y <= 46) {
+      first = std::min(first, i);
+      last = i;
+    }
+  if (first >= cells.size()) return false;
+  const std::vector<Cell> part(cells.begin() + first, cells.begin() + last + 1);
+  const double dx = std::abs(part.front().x - part.back().x),
+               dy = std::abs(part.front().y - part.back().y);
+  const double octile = std::max(dx, dy) + (std::sqrt(2.0) - 1.0) * std::min(dx, dy);
+  return gridPathLength(part) < octile + 1e-9;
+}
+
+// §6.1.4, scene 3: the seed's light smoothing against the wider-range smoothing its author
+// proposes, m 4, MAX 3.
+Scene3Results scene3Section(const MsacSetting& at, std::ostringstream& out,
+                            std::vector<JsonObject>& rows) {
+  Scene3Results r;
+  r.scene = seed000Scene3();
+  r.optimum = seed000Optimum(r.scene, false);
+  out << "### Scene 3 (§6.1.4), m 4, MAX 3\n\n"
+      << r.scene.origin << "; optimum " << seed000Number(r.optimum, 2)
+      << ". The thesis gives no table: [41]'s path runs straight down column 50, the thesis's "
+         "MSAC paths do not, with any parameters, and its author proposes a wider-range "
+         "smoothing. 'No detour' counts the runs whose path between rows 12 and 46 (the right "
+         "side) is as short as the octile distance between its ends.\n\n| smoothing | runs | avg. "
+         "length | min. length | no detour "
+         "on the right side |\n|---|---|---|---|---|\n";
+  for (int k = 0; k < 2; ++k) {
+    MsacParams p = thesisMsac(4, 3, true, 3);
+    p.smoothing_range = k == 0 ? 1 : kWideSmoothing;
+    Msac msac(p);
+    r.stats[k] = runSeed000(msac, r.scene, at.runs, at.seed);
+    for (int i = 0; i < at.runs; ++i) {
+      GridQuery q;
+      q.grid = &r.scene.grid;
+      q.start = r.scene.start;
+      q.goal = r.scene.goal;
+      q.seed = at.seed + static_cast<std::uint64_t>(i);
+      const GridPlanResult run = msac.solveGrid(q, StopToken::untimed());
+      r.straight[k] += run.success && straightDownTheEdge(run.cells);
+    }
+    const std::string name = k == 0 ? "light (the thesis's)"
+                                    : "wider, over " + std::to_string(kWideSmoothing) + " nodes";
+    out << "| " << name << " | " << at.runs << " | " << seed000Number(r.stats[k].mean_length, 2)
+        << " | " << seed000Number(r.stats[k].min_length, 2) << " | " << r.straight[k] << "/"
+        << at.runs << " |\n";
+    JsonObject row;
+    row.add("table", "scene 3 (6.1.4)")
+        .add("smoothing", name)
+        .add("optimum", r.optimum)
+        .add("mean_length", r.stats[k].mean_length)
+        .add("min_length", r.stats[k].min_length)
+        .add("straight_runs", r.straight[k])
+        .add("runs", at.runs);
+    rows.push_back(row);
+  }
+  out << "\n";
+  return r;
+}
 
 // Table 6.1: tabu table versions (time only; 100 searches in the seed).
 std::vector<Seed000Column> tabuTable(const MsacSetting& at, std::ostringstream& out,
@@ -185,7 +298,9 @@ Report seed000Msac(const Options& options) {
   std::ostringstream out;
   std::vector<JsonObject> rows;
   out << seed000Preamble("Seed 000: MSAC (Multi-Scout Ants Cooperation)", scenes, runs, seed,
-                         "unconditional diagonals, S_max = 1250. Our MSAC stops early when its "
+                         "unconditional diagonals, S_max = 1250; an iteration ends when the "
+                         "two groups meet (§4.3; the last tables compare the literal step 6). "
+                         "Our MSAC stops early when its "
                          "path equals the obstacle-free octile distance (nothing can be "
                          "shorter); the seed's always ran MAX iterations.");
   const MsacSetting at{options, runs, seed, scenes};
@@ -195,7 +310,9 @@ Report seed000Msac(const Options& options) {
     post_cols[scene_no - 1] = postProcessingTable(at, scene_no, out, rows);
   const std::vector<std::vector<Seed000Column>> sweep_cols = antSweepTables(at, out, rows);
   const Seed000Stats s2 = maxOneSection(at, out, rows);
-  MsacResults results{tabu_cols, post_cols[0], post_cols[1], sweep_cols, s2};
+  const IterationEndResults ends = iterationEndSection(at, out, rows);
+  const Scene3Results scene3 = scene3Section(at, out, rows);
+  MsacResults results{tabu_cols, post_cols[0], post_cols[1], sweep_cols, s2, ends, scene3};
   out << msacMaps(options, scenes, results) << agreementSection(msacFindings(results, scenes));
   return {out.str(), rows};
 }

@@ -20,6 +20,7 @@ struct NavigationStats {
   double length = 0, length_sq = 0, plan_ms = 0, max_plan_ms = 0, replans = 0;
   std::vector<Cell> shortest;  // the shortest executed path (for the map figures)
   double shortest_length = 0;
+  std::map<std::string, int> endings;  // why the runs that did not arrive ended, with counts
   double mean() const { return reached ? length / reached : std::nan(""); }
   // Two standard errors of the mean length (0 with fewer than two arrivals).
   double twoSe() const {
@@ -36,7 +37,8 @@ struct RnaTables {
   std::vector<int> dead_end_sights, scene2_sights;
   std::map<std::string, std::vector<NavigationStats>> dead_end, scene2;  // per navigator, per sight
   std::map<std::string, NavigationStats> random_maps;
-  NavigationStats moving[2][3];  // [prediction][navigator]
+  NavigationStats scene2_many_waits;  // RNA at scene 2's smallest sight, max_waits 200
+  NavigationStats moving[2][3];       // [prediction][navigator]
   int maps = 0;
   double opt_dead_end = 0, opt2 = 0;
 };

@@ -11,6 +11,13 @@
 
 namespace cosim::reproduce {
 
+namespace {
+constexpr int kTimingRepeats = 9;
+constexpr double kTimingBudgetMs = 20.0;
+constexpr int kMinRepeats = 3;
+constexpr double kRepeatBelowMs = 100.0;
+}  // namespace
+
 Seed000Stats runSeed000(GridPlanner& planner, const Seed000Scene& scene, int runs,
                         std::uint64_t seed, double time_limit_s) {
   Seed000Stats s;
@@ -25,7 +32,19 @@ Seed000Stats runSeed000(GridPlanner& planner, const Seed000Scene& scene, int run
     q.seed = seed + static_cast<std::uint64_t>(i);
     q.time_limit_s = time_limit_s;
     const GridPlanResult r = planner.solveGrid(q, StopToken::untimed());
-    time_sum += r.time_ms;
+    // A search of a tenth of a millisecond is timed below the noise of a shared machine (one
+    // preempted run can weigh more than the other nine): repeat a search of under 100 ms (same
+    // seed, same search) at least 3 times and on until 20 ms have passed, at most 9 times, and
+    // count its fastest repeat.
+    double fastest = r.time_ms, spent = r.time_ms;
+    for (int k = 1; k < kTimingRepeats && r.time_ms < kRepeatBelowMs &&
+                    (k < kMinRepeats || spent < kTimingBudgetMs);
+         ++k) {
+      const double t = planner.solveGrid(q, StopToken::untimed()).time_ms;
+      fastest = std::min(fastest, t);
+      spent += t;
+    }
+    time_sum += fastest;
     if (r.counters.count("steps")) s.mean_steps += r.counters.at("steps") / runs;
     if (!r.success) {
       ++s.failures;
@@ -118,7 +137,10 @@ std::string seed000Preamble(const std::string& title, const Seed000SceneSet& sce
   for (const Seed000Scene* s : {&scenes.free_scene, &scenes.scene1, &scenes.scene2})
     out << s->name << " (" << s->origin << ")" << (s == &scenes.scene2 ? ".\n" : "; ");
   out << runs << " runs per setting (seeds " << seed << "..." << seed + runs - 1 << "); "
-      << settings << "\n\n";
+      << settings
+      << " A run of under 100 ms is timed as the fastest of 3 to 9 repeats (the same seed repeats "
+         "the same search; repeats stop after 20 ms): searches of a tenth of a millisecond are "
+         "otherwise timed below the noise of a shared machine.\n\n";
   const double opt2 = seed000Optimum(scenes.scene2, false);
   out << "Scene 2's optimum (" << seed000Number(opt2, 2)
       << ") lies below every path the seed reports there: its best ever, 132.41, is "

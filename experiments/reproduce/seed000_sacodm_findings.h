@@ -21,6 +21,7 @@ struct SacodmResults {
   const Seed000Stats* msac;  // [3]: MSAC m 4, MAX 3 on the free scene, scene 1, scene 2
   const Fig65* fig65;        // [2]: the free scene, scene 2
   const Seed000SceneSet& scenes;
+  const Fig65 (&fig64)[2][2];  // Fig. 6.4: [first gamma, rolling][gamma 1, gamma 100]
 };
 
 std::vector<Finding> sacodmFindings(const SacodmResults& r);

@@ -48,6 +48,22 @@ Seed000Scene seed000Scene2() {
           "optimum 106.80 (the seed gives none)"};
 }
 
+Seed000Scene seed000Scene3() {
+  OccupancyGrid g(50, 50);
+  block(g, 6, 22, 24, 23);   // cup A's bottom: the greedy scouts from the start run into it
+  block(g, 23, 6, 24, 23);   // cup A's right side (the cup opens up and left, to the start)
+  block(g, 26, 38, 39, 39);  // cup B's bottom
+  block(g, 38, 26, 39, 39);  // cup B's right side
+  block(g, 42, 10, 44, 49);  // the wall that leaves the way to the goal down the right edge
+  return {"scene 3",
+          std::move(g),
+          {1, 1, 0},
+          {49, 48, 0},
+          "built for §6.1.4 ([41]'s Fig. 6.3 is not in the text): 50x50, two cups opening "
+          "towards the start (local minima), the goal reached down the map's last column "
+          "(the thesis's column 50) from its top, in a corridor five cells wide"};
+}
+
 Seed000Scene seed000DeadEndScene() {
   OccupancyGrid g(50, 50);
   block(g, 34, 15, 35, 35);  // the dead end's end, facing the start

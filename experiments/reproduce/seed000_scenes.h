@@ -32,6 +32,12 @@ Seed000Scene seed000Scene1();
 // for an optimum just below 132.41 (128.43) left SACOdm 25 % above the seed's lengths.
 Seed000Scene seed000Scene2();
 
+// Scene 3 ([41] Fig. 6.3, §6.1.4): "with local minima", at least 50 columns; [41]'s path runs
+// straight down column 50 on the right, the thesis's MSAC paths make detours there. Built: two
+// cups opening towards the start and a wall that leaves the way to the goal only down the last
+// column (x = 49, the thesis's 1-based column 50) from its top.
+Seed000Scene seed000Scene3();
+
 // For RNA (Fig. 5.1): a 50x50 map with a U-shaped dead end (17 x 17 cells inside) opening towards
 // the start, between start and goal; from the start, a robot sees its end with sight 30 or more.
 Seed000Scene seed000DeadEndScene();

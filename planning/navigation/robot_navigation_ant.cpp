@@ -28,6 +28,30 @@ void RobotNavigationAnt::reset(const NavigationWorld& world, const Cell& start, 
   visited_.assign(world.grid().cellCount(), 0);
   visited_[world.grid().index(start.x, start.y)] = 1;
   temporary_.clear();
+  lifted_.clear();
+}
+
+bool RobotNavigationAnt::wasLifted(const Cell& c) const {
+  for (const Cell& b : lifted_)
+    if (sameCell(b, c)) return true;
+  return false;
+}
+
+bool RobotNavigationAnt::liftNewestTemporary(const Cell& at) {
+  // §4.2 b: only the temporary obstacles in the field of view count.
+  auto newest = [&](bool skip_lifted) {
+    for (auto it = temporary_.end(); it != temporary_.begin();) {
+      --it;
+      if (NavigationWorld::inView(at, *it, p_.sight) && !(skip_lifted && wasLifted(*it))) return it;
+    }
+    return temporary_.end();
+  };
+  auto it = newest(true);
+  if (it == temporary_.end()) it = newest(false);  // all in view were lifted before
+  if (it == temporary_.end()) return false;
+  if (!wasLifted(*it)) lifted_.push_back(*it);
+  temporary_.erase(it);
+  return true;
 }
 
 bool RobotNavigationAnt::temporarilyBlocked(const Cell& c) const {
@@ -155,10 +179,7 @@ NavigationDecision RobotNavigationAnt::decide(const Cell& at_in, double t) {
   d.replans = 1;
   if (!found) {
     // §4.2.2: lift the newest anti-oscillation obstacle and search with S_max x 1.5.
-    if (!temporary_.empty()) {
-      temporary_.pop_back();
-      w = buildWindow(at);
-    }
+    if (liftNewestTemporary(at)) w = buildWindow(at);
     found = localGoal(w, at, local) && plan(w, at, local, 1.5, path, plan_limit);
     ++d.replans;
   }

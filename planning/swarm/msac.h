@@ -11,6 +11,18 @@
 
 namespace cosim {
 
+// What ends one of MSAC's MAX iterations (besides S_max steps).
+enum class MsacIterationEnd {
+  // The thesis (seed 000 §4.3): "the process ends either when an ant of one group comes upon the
+  // path of an ant of the other group, or when the number of steps exceeds S_max"; the joined
+  // path replaces the best so far if shorter.
+  Meeting,
+  // Step 6 of the algorithm read literally: only a meeting that gives a path shorter than the
+  // best so far ends the iteration; after the first iteration, a meeting that gives an equal or
+  // longer path lets the scouts walk on, often until S_max.
+  ShorterPath,
+};
+
 struct MsacParams {
   int ants = 4;                 // m, ants per group ([41]'s typical value)
   int iterations = 3;           // MAX, outer iterations (seed: 3)
@@ -24,6 +36,7 @@ struct MsacParams {
   // the other group), 2 which group explored a cell, 3 group and ant in one uint8 (final).
   int tabu_version = 3;
   bool keep_dead_ends = true;  // §4.3.2 conditional transfer of dead-end marks between iterations
+  MsacIterationEnd iteration_end = MsacIterationEnd::Meeting;
 };
 
 class Msac : public GridPlanner {

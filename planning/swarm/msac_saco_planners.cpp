@@ -21,6 +21,10 @@ MsacParams readMsacParams(ParamSet& params) {
   p.conditional_diagonal = readConditionalDiagonal(params);
   p.tabu_version = params.getInt("tabu_version", p.tabu_version, 1, 3);
   p.keep_dead_ends = params.getBool("keep_dead_ends", p.keep_dead_ends);
+  p.iteration_end =
+      params.getString("iteration_end", "meeting", {"meeting", "shorter_path"}) == "meeting"
+          ? MsacIterationEnd::Meeting
+          : MsacIterationEnd::ShorterPath;
   return p;
 }
 

@@ -104,6 +104,33 @@ TEST(NavigationNavigators, UnreachableGoalEndsTheRunWithAMessage) {
   }
 }
 
+// Seed 000 §4.2 b: when the view shows no way (the robot has walled itself in with its own
+// anti-oscillation obstacles), the dead-lock handling lifts the newest of them in view. Lifting
+// always the newest re-opened only the cell the robot had just left: it stepped in, back out,
+// marked it again and lifted it again, forever (this run, seed 2 at sight 4 inside seed000-rna's
+// dead end, hit the decision limit). Lifting the newest not lifted before opens the next one.
+TEST(NavigationNavigators, RnaDeadLockHandlingLetsTheRobotOutOfItsOwnTemporaryObstacles) {
+  OccupancyGrid g(50, 50);
+  const auto block = [&](int x0, int y0, int x1, int y1) {
+    for (int y = y0; y <= y1; ++y)
+      for (int x = x0; x <= x1; ++x) g.setBlocked(x, y, 0, true);
+  };
+  block(34, 15, 35, 35);  // the dead end's end, facing the start
+  block(16, 15, 35, 16);
+  block(16, 34, 35, 35);
+  const NavigationWorld world(g);
+  RnaParams p;
+  p.sight = 4;
+  p.conditional_diagonal = false;
+  RobotNavigationAnt rna(p);
+  NavigationLimits limits;
+  limits.max_decisions = 2000;
+  const NavigationRun run = runNavigation(rna, world, {5, 25, 0}, {45, 25, 0}, limits, 2);
+  ASSERT_TRUE(run.reached) << run.message;
+  EXPECT_GT(run.waits, 0);  // the handling fired: the view showed no way at least once
+  EXPECT_LT(run.steps, 1000);
+}
+
 // Seed 000 §4.2.1: several moving obstacles cross the robot's way; with collision prediction the
 // robot waits or re-plans and is never hit.
 TEST(NavigationNavigators, CrossingTrafficCausesNoCollision) {
