@@ -4,12 +4,21 @@
 
 namespace cosim {
 
+std::string vehicleControllers(const RunRecord& record) {
+  const RunSetup& s = record.setup;
+  const std::string& robots = s.robot_sections.controller.name;
+  const std::string& quadrotors = s.quadrotor_sections.controller.name;
+  if (s.robots.empty()) return quadrotors + " controller";
+  if (s.quadrotors.empty() || robots == quadrotors) return robots + " controller";
+  return "robots: " + robots + " controller, quadrotors: " + quadrotors + " controller";
+}
+
 std::string runTitle(const Scenario& scenario, const RunRecord& record) {
   const MotionSections& primary = record.setup.primarySections();
   const std::string planner =
       primary.planner.name.empty() ? "given waypoints" : primary.planner.name;
   return "cosim run: " + std::filesystem::path(scenario.file).stem().string() + " (" + planner +
-         ", " + primary.controller.name + " controller)";
+         ", " + vehicleControllers(record) + ")";
 }
 
 std::string runStatusLine(const RunRecord& record) {
