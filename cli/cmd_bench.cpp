@@ -2,20 +2,21 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cli/command.h"
+#include "core/input_error.h"
+#include "core/json_writer.h"
 #include "experiments/bench/ant_planners.h"
 #include "experiments/bench/bench_section.h"
 #include "experiments/bench/grid_astar_vs_boost.h"
 #include "experiments/bench/mapf_planners.h"
 #include "experiments/bench/physics_loop.h"
 #include "experiments/bench/reference_flight.h"
-#include "experiments/bench/team_render.h"
-#include "experiments/bench/team_scale.h"
 #include "experiments/bench/render_pipeline.h"
 #include "experiments/bench/sweep_throughput.h"
+#include "experiments/bench/team_figures.h"
+#include "experiments/bench/team_render.h"
+#include "experiments/bench/team_scale.h"
 #include "experiments/bench/trajectory_generation.h"
-#include "cli/command.h"
-#include "core/input_error.h"
-#include "core/json_writer.h"
 
 namespace cosim::cli {
 
@@ -33,6 +34,7 @@ const std::vector<NamedSection>& sections() {
       {"team_scale", bench::benchTeamScale},
       {"render_pipeline", bench::benchRenderPipeline},
       {"team_render", bench::benchTeamRender},
+      {"team_figures", bench::benchTeamFigures},
       {"trajectory_generation", bench::benchTrajectoryGeneration},
       {"mapf_planners", bench::benchMapfPlanners},
       {"ant_planners", bench::benchAntPlanners},

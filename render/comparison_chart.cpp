@@ -85,7 +85,7 @@ void lineChart(const ChartCells& c, std::ostringstream& data, std::ostringstream
   for (std::size_t g = 0; g < groups.size(); ++g)
     body << (g ? ", \\\n     " : "") << "'chart.dat' index " << g
          << " using 1:2:3 with yerrorlines lw 2 pt 7 ps 0.8 lc rgb '"
-         << hexColour(agentColour(g + 4)) << "' title " << gnuplotString(groups[g]);
+         << hexColour(vehicleColour(g + 4)) << "' title " << gnuplotString(groups[g]);
   body << "\n";
 }
 
@@ -116,8 +116,8 @@ void barChart(const ChartCells& c, std::ostringstream& data, std::ostringstream&
   body << "plot ";
   for (std::size_t g = 0; g < groups.size(); ++g)
     body << (g ? ", \\\n     " : "") << "'chart.dat' using " << 2 + 2 * g << ":" << 3 + 2 * g
-         << (g == 0 ? ":xtic(1)" : "") << " lc rgb '" << hexColour(agentColour(g + 4)) << "' title "
-         << gnuplotString(groups[g]);
+         << (g == 0 ? ":xtic(1)" : "") << " lc rgb '" << hexColour(vehicleColour(g + 4))
+         << "' title " << gnuplotString(groups[g]);
   body << "\n";
 }
 

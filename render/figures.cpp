@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <map>
 #include <sstream>
 
 #include "core/atomic_file.h"
 #include "core/input_error.h"
 #include "core/temporary_name.h"
 #include "render/csv_table.h"
+#include "render/figure_data.h"
 #include "render/gnuplot.h"
 #include "render/log_lookup.h"
 #include "render/overlay_palette.h"
@@ -19,7 +18,6 @@ namespace cosim {
 
 namespace {
 
-constexpr std::size_t kMaxPlotRows = 2500;  // per series: smooth at print size, small SVGs
 const char* kObstacleFill = "#9aa3b0";
 const char* kObstacleEdge = "#5b6473";
 
@@ -45,12 +43,6 @@ class WorkDir {
   std::filesystem::path path_;
 };
 
-void writeText(const std::filesystem::path& p, const std::string& text) {
-  std::ofstream out(p);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + p.string());
-}
-
 // Viridis for the error palette, as in the videos.
 std::string errorPalette(double scale, const std::string& label) {
   std::ostringstream s;
@@ -60,31 +52,6 @@ std::string errorPalette(double scale, const std::string& label) {
   s << ")\nset cbrange [0:" << gnuplotNumber(scale) << "]\nset cblabel " << gnuplotString(label)
     << "\n";
   return s.str();
-}
-
-// One series file per vehicle: t x y z ref_x ref_y ref_z error (decimated evenly in time).
-void writeVehicleData(const VehicleLog& v, const std::vector<double>& err,
-                      const std::filesystem::path& file) {
-  std::ostringstream s;
-  const std::size_t step = std::max<std::size_t>(1, v.samples.size() / kMaxPlotRows);
-  for (std::size_t i = 0; i < v.samples.size();
-       i = (i + 1 < v.samples.size() && i + step >= v.samples.size())
-               ? v.samples.size() - 1  // always end with the last sample
-               : i + step) {
-    const LogSample& x = v.samples[i];
-    s << gnuplotNumber(x.t) << ' ' << gnuplotNumber(x.pos.x()) << ' ' << gnuplotNumber(x.pos.y())
-      << ' ' << gnuplotNumber(x.pos.z()) << ' ' << gnuplotNumber(x.ref_pos.x()) << ' '
-      << gnuplotNumber(x.ref_pos.y()) << ' ' << gnuplotNumber(x.ref_pos.z()) << ' '
-      << gnuplotNumber(err[i]) << '\n';
-  }
-  writeText(file, s.str());
-}
-
-void writePathData(const std::vector<Eigen::Vector3d>& path, const std::filesystem::path& file) {
-  std::ostringstream s;
-  for (const auto& p : path)
-    s << gnuplotNumber(p.x()) << ' ' << gnuplotNumber(p.y()) << ' ' << gnuplotNumber(p.z()) << '\n';
-  writeText(file, s.str());
 }
 
 // Obstacles as gnuplot objects seen along an axis: `horizontal`/`vertical` are the world axes
@@ -162,7 +129,7 @@ std::vector<bool> obstaclesNearPaths(const World& world, const RunLog& log) {
     };
     for (const VehicleLog& v : log.vehicles) {
       for (const auto& p : v.planned_path) near[i] = near[i] || close(p);
-      const std::size_t step = std::max<std::size_t>(1, v.samples.size() / kMaxPlotRows);
+      const std::size_t step = std::max<std::size_t>(1, v.samples.size() / kMaxPlotRowsPerVehicle);
       for (std::size_t k = 0; k < v.samples.size() && !near[i]; k += step)
         near[i] = close(v.samples[k].pos);
     }
@@ -170,129 +137,137 @@ std::vector<bool> obstaclesNearPaths(const World& world, const RunLog& log) {
   return near;
 }
 
-// "v0.dat" (vehicle series), "p0.dat" (planned path), "g0.dat" (goal), built piece by piece:
-// GCC 12's -Wrestrict misfires on operator+ chains with std::to_string.
-std::string dataFile(char kind, std::size_t vehicle) {
-  std::string name(1, kind);
-  name += std::to_string(vehicle);
-  name += ".dat";
-  return name;
-}
-
 std::string axisName(int axis) {
   return axis == 0 ? "x" : axis == 1 ? "y" : "z";
 }
 
-// The paths over the obstacles along two world axes (top: x,y; side: x or y, z). plans: the
-// planned paths and references too; a team's figures leave them out unless asked
-// (render.team_plans): a grid planner's right angles, one per member, hide where they flew.
-std::string pathPlot(const RunLog& log, int h, int v, const std::vector<ErrorReference>& refs,
-                     bool plans) {
-  const bool several = log.vehicles.size() > 1;
-  std::ostringstream p;
-  p << "plot ";
-  bool first = true;
-  const auto sep = [&] {
-    if (!first) p << ", \\\n     ";
-    first = false;
-  };
-  const std::string hc = std::to_string(h + 2), vc = std::to_string(v + 2);
-  const std::string rh = std::to_string(h + 5), rv = std::to_string(v + 5);
-  // A team's key names each kind of line once (32 vehicles made a key taller than the plot).
-  const auto title = [&](std::size_t a, const std::string& one, const std::string& team) {
-    return gnuplotString(!several ? one : a == 0 ? team : "");
-  };
-  for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
-    const VehicleLog& vl = log.vehicles[a];
-    const std::string planned = hexColour(several ? agentColour(a) : kPlannedPathColour);
-    const std::string id = std::to_string(a);
-    if (!vl.samples.empty()) {
-      if (plans && refs[a] == ErrorReference::Trajectory) {
-        sep();
-        p << "'v" << id << ".dat' using " << rh << ":" << rv
-          << " with lines lw 1.2 dt (6,4) lc rgb '" << hexColour(kReferenceColour) << "' title "
-          << gnuplotString(a == 0 ? "reference trajectory" : "");
-      }
-      sep();
-      p << "'v" << id << ".dat' using " << hc << ":" << vc << ":8 with lines lw 3 lc palette title "
-        << title(a, "flown (colour: tracking error)", "flown paths (colour: tracking error)");
-    }
-    if (plans && vl.planned_path.size() > 1) {
-      sep();
-      p << "'p" << id << ".dat' using " << h + 1 << ":" << v + 1
-        << " with linespoints lw 1.8 pt 7 ps 0.5 lc rgb '" << planned << "' title "
-        << title(a, "planned path", "planned paths (one colour each)");
-    }
-    sep();
-    p << "'p" << id << ".dat' every ::0::0 using " << h + 1 << ":" << v + 1
-      << " with points pt 7 ps 1.6 lc rgb '" << hexColour(several ? agentColour(a) : kStartColour)
-      << "' title " << title(a, "start", "starts (one colour each)");
-    sep();
-    p << "'g" << id << ".dat' using " << h + 1 << ":" << v + 1
-      << " with points pt 5 ps 1.6 lc rgb '" << hexColour(several ? agentColour(a) : kGoalColour)
-      << "' title " << title(a, "goal", "goals");
-  }
-  return p.str();
-}
-
-// Each vehicle's data files in `work_dir`: samples with the record's errors, planned path, goal.
-void writeFigureData(const RunRecord& record, const std::filesystem::path& work_dir) {
-  const RunLog& log = record.log;
-  for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
-    const VehicleLog& v = log.vehicles[a];
-    writeVehicleData(v, record.metrics.tracking_errors[a], work_dir / dataFile('v', a));
-    std::vector<Eigen::Vector3d> planned = v.planned_path;
-    if (planned.empty() && !v.samples.empty()) planned.push_back(v.samples.front().pos);
-    if (planned.empty()) planned.push_back(v.goal);
-    writePathData(planned, work_dir / dataFile('p', a));
-    writePathData({v.goal}, work_dir / dataFile('g', a));
-  }
-}
-
-// The largest tracking error of any vehicle (the colour scale's top).
-double largestError(const RunRecord& record) {
-  double max_error = 0.0;
-  for (const std::vector<double>& err : record.metrics.tracking_errors)
-    for (double e : err) max_error = std::max(max_error, e);
-  return max_error;
-}
-
-// The error figure's series (one per vehicle, from writeFigureData's files): the plot command,
-// and the RMSE and arrival marks from each vehicle's metrics in the record.
-struct ErrorSeries {
-  std::string plot, marks;
+// How the figures draw a run, decided once for all three.
+struct FigureStyle {
+  bool several = false;   // a team: one colour per vehicle
+  bool by_error = false;  // the flown paths coloured by tracking error (the palette)
+  bool plans = false;     // planned paths and references drawn
+  FigureFiles files;
 };
 
-ErrorSeries errorSeries(const RunRecord& record) {
+// The paths over the obstacles along two world axes (top: x,y; side: x or y, z), lowest first:
+// planned paths (a thin line, small open circles at the corners, so the flown line on top shows
+// through), references (dashed), flown paths, goals (open squares), starts (small dots inside
+// them where a start is another's goal). Five plot elements whatever the team's size: each
+// vehicle's colour comes from the files' rgb column.
+std::string pathPlot(int h, int v, const FigureStyle& f) {
+  std::vector<std::string> items;
+  const std::string hc = std::to_string(h + 2), vc = std::to_string(v + 2);
+  const std::string rh = std::to_string(h + 5), rv = std::to_string(v + 5);
+  const std::string ph = std::to_string(h + 1), pv = std::to_string(v + 1);
+  const auto title = [&](const std::string& one, const std::string& team) {
+    return " title " + gnuplotString(f.several ? team : one);
+  };
+  if (f.plans && f.files.any_plan)
+    items.push_back("'plans.dat' using " + ph + ":" + pv +
+                    ":4 with linespoints lw 1.2 pt 6 ps 0.45 lc rgb variable" +
+                    title("planned path", "planned paths (one colour each)"));
+  if (f.plans && f.files.any_reference)
+    items.push_back("'refs.dat' using " + rh + ":" + rv + " with lines lw 1.2 dt (6,4) lc rgb '" +
+                    hexColour(kReferenceColour) + "'" +
+                    title("reference trajectory", "reference trajectories"));
+  if (f.files.any_flown) {
+    if (f.by_error)
+      items.push_back(
+          "'flown.dat' using " + hc + ":" + vc + ":8 with lines lw " + (f.several ? "1.6" : "2.6") +
+          " lc palette" +
+          title("flown (colour: tracking error)", "flown paths (colour: tracking error)"));
+    else
+      items.push_back("'flown.dat' using " + hc + ":" + vc +
+                      ":9 with lines lw 1.6 lc rgb variable" +
+                      title("flown", "flown paths (one colour each)"));
+  }
+  items.push_back("'goals.dat' using " + ph + ":" + pv +
+                  ":4 with points pt 4 ps 1.5 lw 1.5 lc rgb variable" + title("goal", "goals"));
+  items.push_back("'starts.dat' using " + ph + ":" + pv + ":4 with points pt 7 ps " +
+                  (f.several ? "0.6" : "1.0") + " lc rgb variable" + title("start", "starts"));
+  std::string p = "plot ";
+  for (std::size_t i = 0; i < items.size(); ++i) p += (i ? ", \\\n     " : "") + items[i];
+  return p;
+}
+
+// The data's extent: flown and planned paths, starts and goals (a figure's axes fit it, not the
+// whole world: a Crazyflie's 1 m figure-eight in a 6 m room filled a third of its axes).
+struct Extent {
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(HUGE_VAL),
+                  hi = Eigen::Vector3d::Constant(-HUGE_VAL);
+  void add(const Eigen::Vector3d& p) {
+    if (!p.allFinite()) return;
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+};
+
+Extent dataExtent(const RunLog& log, const World& world) {
+  Extent e;
+  for (const VehicleLog& v : log.vehicles) {
+    for (std::size_t i : evenSampleIndices(v.samples.size(), kMinPlotRowsPerVehicle))
+      e.add(v.samples[i].pos);
+    for (const auto& p : v.planned_path) e.add(p);
+    e.add(v.goal);
+  }
+  if (!(e.lo.x() <= e.hi.x())) return {world.bounds_min, world.bounds_max};
+  // A margin of a tenth of the span (at least 0.2 m), inside the world where the data is.
+  const Eigen::Vector3d pad = (0.1 * (e.hi - e.lo)).cwiseMax(0.2);
+  Extent fitted;
+  fitted.lo = (e.lo - pad).cwiseMax(world.bounds_min).cwiseMin(e.lo);
+  fitted.hi = (e.hi + pad).cwiseMin(world.bounds_max).cwiseMax(e.hi);
+  return fitted;
+}
+
+// The error figure: each vehicle's tracking error over the flight, the time axis ending where
+// the data does. Up to eight vehicles each have a key entry with its RMSE and max, a dashed RMSE
+// line and its arrival mark; a larger team one key entry (the worst vehicle named).
+std::string errorPlot(const RunRecord& record, const FigureStyle& f) {
   const RunLog& log = record.log;
-  std::ostringstream error_plot, error_marks;
-  error_plot << "plot ";
+  std::ostringstream s;
+  const bool named = log.vehicles.size() <= 8;
+  std::size_t worst = 0;
   for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
     const VehicleLog& v = log.vehicles[a];
-    const bool several = log.vehicles.size() > 1;
-    const std::string colour =
-        hexColour(several ? agentColour(a) : Eigen::Vector3f(0.13f, 0.35f, 0.65f));
     const FlightMetrics& m = record.metrics.vehicles[a];
-    error_plot << (a ? ", \\\n     " : "") << "'v" << a
-               << ".dat' using 1:8 with lines lw 2 lc rgb '" << colour << "' title "
-               << gnuplotString((several ? v.name + ": " : std::string()) + "RMSE " +
-                                gnuplotNumber(std::round(m.rmse_m * 1000) / 1000) + " m, max " +
-                                gnuplotNumber(std::round(m.max_error_m * 1000) / 1000) + " m");
-    error_marks << "set arrow from graph 0, first " << gnuplotNumber(m.rmse_m)
-                << " to graph 1, first " << gnuplotNumber(m.rmse_m)
-                << " nohead dt (4,4) lw 1 lc rgb '" << colour << "'\n";
+    if (m.rmse_m > record.metrics.vehicles[worst].rmse_m) worst = a;
+    if (!named) continue;
+    const std::string colour = hexColour(f.several ? vehicleColour(a) : kFlownPathColour);
+    s << "set arrow from graph 0, first " << gnuplotNumber(m.rmse_m) << " to graph 1, first "
+      << gnuplotNumber(m.rmse_m) << " nohead dt (4,4) lw 1 lc rgb '" << colour << "'\n";
     if (v.reached_goal && v.arrival_time >= 0)
-      error_marks << "set arrow from first " << gnuplotNumber(v.arrival_time)
-                  << ", graph 0 to first " << gnuplotNumber(v.arrival_time)
-                  << ", graph 1 nohead dt (2,3) lw 1 lc rgb '#606060'\n"
-                  << "set label " << gnuplotString("goal reached ") << " at first "
-                  << gnuplotNumber(v.arrival_time)
-                  << ", graph 0.5 right rotate by 90 offset -0.8,0 tc rgb '#404040' font ',9'\n";
-    error_marks << "set label " << gnuplotString("RMSE") << " at graph 0.005, first "
-                << gnuplotNumber(m.rmse_m) << " left offset 0,0.6 tc rgb '" << colour
-                << "' font ',9'\n";
+      s << "set arrow from first " << gnuplotNumber(v.arrival_time) << ", graph 0 to first "
+        << gnuplotNumber(v.arrival_time) << ", graph 1 nohead dt (2,3) lw 1 lc rgb '#606060'\n"
+        << "set label " << gnuplotString("goal reached ") << " at first "
+        << gnuplotNumber(v.arrival_time)
+        << ", graph 0.5 right rotate by 90 offset -0.8,0 tc rgb '#404040' font ',9'\n";
+    s << "set label " << gnuplotString("RMSE") << " at graph 0.005, first "
+      << gnuplotNumber(m.rmse_m) << " left offset 0,0.6 tc rgb '" << colour << "' font ',9'\n";
   }
-  return {error_plot.str(), error_marks.str()};
+  const auto round_mm = [](double x) { return gnuplotNumber(std::round(x * 1000) / 1000); };
+  std::string plot = "plot ";
+  if (named) {
+    // One element per vehicle (its key entry): every index'th block of flown.dat.
+    for (std::size_t a = 0; a < log.vehicles.size(); ++a) {
+      if (log.vehicles[a].samples.empty()) continue;
+      const FlightMetrics& m = record.metrics.vehicles[a];
+      const std::string colour = hexColour(f.several ? vehicleColour(a) : kFlownPathColour);
+      plot += std::string(plot.size() > 5 ? ", \\\n     " : "") +
+              "'flown.dat' every :::" + std::to_string(a) + "::" + std::to_string(a) +
+              " using 1:8 with lines lw 2 lc rgb '" + colour + "' title " +
+              gnuplotString((f.several ? log.vehicles[a].name + ": " : std::string()) + "RMSE " +
+                            round_mm(m.rmse_m) + " m, max " + round_mm(m.max_error_m) + " m");
+    }
+  } else if (!log.vehicles.empty()) {
+    const FlightMetrics& m = record.metrics.vehicles[worst];
+    plot += "'flown.dat' using 1:8:9 with lines lw 1 lc rgb variable title " +
+            gnuplotString(std::to_string(log.vehicles.size()) +
+                          " vehicles, one colour each; worst RMSE " + log.vehicles[worst].name +
+                          " " + round_mm(m.rmse_m) + " m");
+  }
+  if (plot.size() <= 5) plot += "0 notitle";  // nothing flown: an empty frame
+  s << "set xrange [0:" << gnuplotNumber(std::max(f.files.duration, 1e-3)) << "]\n" << plot << "\n";
+  return s.str();
 }
 
 // What the colour bar measures against: the reference every vehicle shares, or each one's own.
@@ -310,29 +285,28 @@ const char* kCommonStyle =
     "set tics out nomirror\nset key box lc rgb '#bbbbbb' opaque samplen 2.5 spacing 1.1 "
     "font ',10' Left reverse\n";
 
-// The top view's script: equal axes over the whole world.
-std::string topView(const RunLog& log, const World& world, const std::string& planner,
-                    const std::vector<ErrorReference>& refs, const std::string& palette,
-                    bool plans) {
-  const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
+// The top view's script: equal axes over the data's extent.
+std::string topView(const World& world, const Extent& fit, const std::string& what,
+                    const std::string& palette, const FigureStyle& f) {
   std::ostringstream top;
-  top << kCommonStyle << palette << obstacleObjects(world, 0, 1) << "set title "
-      << gnuplotString(
-             std::string(plans ? "Top view: planned vs flown path (" : "Top view: flown paths (") +
-             planner + "; darker obstacles are taller)")
+  top << kCommonStyle << (f.by_error ? palette : "unset colorbox\n") << obstacleObjects(world, 0, 1)
+      << "set title "
+      << gnuplotString(std::string(f.plans ? "Top view: planned vs flown path ("
+                                           : "Top view: flown paths (") +
+                       what + "; darker obstacles are taller)")
       << "\n"
       << "set xlabel 'x [m]'\nset ylabel 'y [m]'\nset size ratio -1\n"
-      << "set xrange [" << gnuplotNumber(lo.x()) << ":" << gnuplotNumber(hi.x())
-      << "]\nset yrange [" << gnuplotNumber(lo.y()) << ":" << gnuplotNumber(hi.y())
+      << "set xrange [" << gnuplotNumber(fit.lo.x()) << ":" << gnuplotNumber(fit.hi.x())
+      << "]\nset yrange [" << gnuplotNumber(fit.lo.y()) << ":" << gnuplotNumber(fit.hi.y())
       << "]\nset key outside below horizontal center\n"
-      << pathPlot(log, 0, 1, refs, plans) << "\n";
+      << pathPlot(0, 1, f) << "\n";
   return top.str();
 }
 
 // The side view's script, along the axis the flight crosses most (the other horizontal axis is
 // depth).
-std::string sideView(const RunLog& log, const World& world, const std::vector<ErrorReference>& refs,
-                     const std::string& palette, bool plans) {
+std::string sideView(const RunLog& log, const World& world, const Extent& fit,
+                     const std::string& palette, const FigureStyle& f) {
   const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
   int along = 0;
   if (!log.vehicles.empty() && !log.vehicles[0].samples.empty()) {
@@ -340,17 +314,25 @@ std::string sideView(const RunLog& log, const World& world, const std::vector<Er
     along = std::abs(d.y()) > std::abs(d.x()) ? 1 : 0;
   }
   std::ostringstream side;
-  side << kCommonStyle << palette
+  side << kCommonStyle << (f.by_error ? palette : "unset colorbox\n")
        << obstacleObjects(world, along, 2, obstaclesNearPaths(world, log)) << "set title "
        << gnuplotString("Side view (looking along " + axisName(1 - along) + "; obstacles within " +
                         gnuplotNumber(kSideViewDepth) + " m of the paths only; height exaggerated)")
        << "\n"
        << "set xlabel '" << axisName(along) << " [m]'\nset ylabel 'z [m]'\nset size ratio 0.42\n"
-       << "set xrange [" << gnuplotNumber(lo[along]) << ":" << gnuplotNumber(hi[along])
+       << "set xrange [" << gnuplotNumber(fit.lo[along]) << ":" << gnuplotNumber(fit.hi[along])
        << "]\nset yrange [" << gnuplotNumber(lo.z()) << ":" << gnuplotNumber(hi.z())
        << "]\nset key outside below horizontal center\n"
-       << pathPlot(log, along, 2, refs, plans) << "\n";
+       << pathPlot(along, 2, f) << "\n";
   return side.str();
+}
+
+// The largest tracking error of any vehicle (the colour scale's top).
+double largestError(const RunRecord& record) {
+  double max_error = 0.0;
+  for (const std::vector<double>& err : record.metrics.tracking_errors)
+    for (double e : err) max_error = std::max(max_error, e);
+  return max_error;
 }
 
 }  // namespace
@@ -363,33 +345,35 @@ std::vector<std::string> writeRunFigures(const Scenario& scenario, const RunReco
   // Each vehicle's error against its own reference, as in its metrics (the record's).
   std::vector<ErrorReference> refs;
   for (std::size_t a = 0; a < log.vehicles.size(); ++a) refs.push_back(record.errorReferenceOf(a));
-  writeFigureData(record, work.path());
-  const ErrorSeries series = errorSeries(record);
+  FigureStyle f;
+  f.several = log.vehicles.size() > 1;
+  f.by_error = !f.several || scenario.render.team_error;
+  f.plans = !f.several || scenario.render.team_plans;
+  f.files = writeFigureFiles(record, work.path());
   const double scale =
       errorScaleMax(largestError(record), errorScaleFloor(scenario.sim.goal_tolerance));
-  const Eigen::Vector3d lo = world.bounds_min, hi = world.bounds_max;
+  const Extent fit = dataExtent(log, world);
   const std::string& planner_name = record.setup.primarySections().planner.name;
-  const std::string planner = pathSourceName(scenario, planner_name);
+  const std::string what =
+      pathSourceName(scenario, planner_name) + ", " + vehicleControllers(record);
   const std::string reference_name = referenceName(refs);
   const std::string palette = errorPalette(scale, "error to " + reference_name + " [m]");
 
   std::ostringstream error;
   error << kCommonStyle << "set title "
-        << gnuplotString("Tracking error against " + reference_name + " (" + planner + ")")
-        << "\nset xlabel 'time [s]'\nset ylabel 'position error [m]'\nset yrange [0:*]\nset xrange "
-           "[0:*]\n"
+        << gnuplotString("Tracking error against " + reference_name + " (" + what + ")")
+        << "\nset xlabel 'time [s]'\nset ylabel 'position error [m]'\nset yrange [0:*]\n"
         << "set key top right\n"
-        << series.marks << series.plot << "\n";
+        << errorPlot(record, f);
 
-  const bool plans = log.vehicles.size() <= 1 || scenario.render.team_plans;
-  // The top view keeps equal axes: the canvas height follows the world's aspect ratio (the
+  // The top view keeps equal axes: the canvas height follows the data's aspect ratio (the
   // plot is ~760 px wide; title, axes and key take ~190 px).
-  const double aspect = (hi.y() - lo.y()) / std::max(1e-9, hi.x() - lo.x());
+  const double aspect = (fit.hi.y() - fit.lo.y()) / std::max(1e-9, fit.hi.x() - fit.lo.x());
   const int top_height = 2 * static_cast<int>(std::clamp(95.0 + 380.0 * aspect, 250.0, 700.0));
-  std::string script =
-      plotBoth("error", 1000, 480, error.str()) + "reset\n" +
-      plotBoth("top", 1000, top_height, topView(log, world, planner, refs, palette, plans)) +
-      "reset\n" + plotBoth("side", 1000, 560, sideView(log, world, refs, palette, plans));
+  std::string script = plotBoth("error", 1000, 480, error.str()) + "reset\n" +
+                       plotBoth("top", 1000, top_height, topView(world, fit, what, palette, f)) +
+                       "reset\n" +
+                       plotBoth("side", 1000, 560, sideView(log, world, fit, palette, f));
   runGnuplot(script, work.path());
   const std::vector<std::string> names = {"error", "top", "side"};
   for (const auto& n : names)

@@ -4,24 +4,9 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 
 namespace cosim {
-
-Eigen::Vector3f agentColour(std::size_t agent) {
-  // Reds, purples, a light blue and a grey: none near the viridis error scale's purple, blue, teal,
-  // green or yellow (at least 0.3 apart in RGB from every point of it), neighbours apart.
-  static const std::array<Eigen::Vector3f, 8> palette = {
-      Eigen::Vector3f{0.84f, 0.37f, 0.0f},   // vermillion (Okabe & Ito)
-      Eigen::Vector3f{0.34f, 0.71f, 0.91f},  // sky blue (Okabe & Ito)
-      Eigen::Vector3f{0.80f, 0.47f, 0.65f},  // reddish purple (Okabe & Ito)
-      Eigen::Vector3f{0.62f, 0.10f, 0.42f},  // plum (Okabe & Ito's orange lit up read as yellow)
-      Eigen::Vector3f{0.75f, 0.08f, 0.16f},  // crimson
-      Eigen::Vector3f{1.0f, 0.62f, 0.80f},   // pink
-      Eigen::Vector3f{0.55f, 0.30f, 0.12f},  // brown
-      Eigen::Vector3f{0.50f, 0.50f, 0.50f},  // grey
-  };
-  return palette[agent % palette.size()];
-}
 
 Eigen::Vector3f errorColour(double fraction) {
   // viridis sampled at 0, 0.25, 0.5, 0.75, 1 and interpolated linearly in between.
@@ -53,9 +38,45 @@ double errorScaleMax(double max_error, double floor) {
   if (std::isfinite(floor)) max_error = std::max(max_error, floor);
   if (!(max_error > 1e-6)) return 0.1;
   const double decade = std::pow(10.0, std::floor(std::log10(max_error)));
-  for (double m : {1.0, 2.0, 5.0, 10.0})
+  // Steps whose labels read at a glance; finer than 1-2-5 so that the run's largest error uses
+  // most of the scale (0.13 m: 0 to 0.15 m, where 0 to 0.2 m left the flight dark purple).
+  for (double m : {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0})
     if (max_error <= m * decade * (1 + 1e-9)) return m * decade;
   return 10 * decade;
+}
+
+std::vector<double> errorScaleTops(const std::vector<ErrorReference>& references,
+                                   const std::vector<std::vector<double>>& errors,
+                                   double goal_tolerance) {
+  std::map<ErrorReference, double> largest;  // per kind of reference
+  for (std::size_t a = 0; a < references.size(); ++a) {
+    double& m = largest[references[a]];
+    if (a < errors.size())
+      for (double e : errors[a])
+        if (std::isfinite(e)) m = std::max(m, e);
+  }
+  std::vector<double> tops;
+  for (ErrorReference r : references)
+    tops.push_back(errorScaleMax(largest[r], errorScaleFloor(goal_tolerance)));
+  return tops;
+}
+
+nlohmann::json visualLanguageJson(std::size_t vehicles) {
+  nlohmann::json j;
+  j["planned"] = hexColour(kPlannedPathColour);
+  j["reference"] = hexColour(kReferenceColour);
+  j["flown"] = hexColour(kFlownPathColour);
+  j["estimate"] = hexColour(kEstimateColour);
+  j["start"] = hexColour(kStartColour);
+  j["goal"] = hexColour(kGoalColour);
+  j["heading"] = hexColour(kHeadingColour);
+  nlohmann::json stops = nlohmann::json::array();
+  for (int i = 0; i <= 8; ++i) stops.push_back(hexColour(errorColour(i / 8.0)));
+  j["error_stops"] = stops;
+  nlohmann::json colours = nlohmann::json::array();
+  for (std::size_t v = 0; v < vehicles; ++v) colours.push_back(hexColour(vehicleColour(v)));
+  j["vehicles"] = colours;
+  return j;
 }
 
 }  // namespace cosim

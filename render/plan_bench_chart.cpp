@@ -31,7 +31,7 @@ std::string boxPanel(const std::vector<std::vector<double>>& values, const std::
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (values[i].empty()) continue;
     plot << (plot.tellp() > 0 ? ", \\\n     " : "") << "'" << file << "' index " << i << " using ("
-         << i + 1 << "):1 with boxplot lc rgb '" << hexColour(agentColour(i)) << "' notitle";
+         << i + 1 << "):1 with boxplot lc rgb '" << hexColour(vehicleColour(i)) << "' notitle";
   }
   if (plot.tellp() > 0) {
     s << "plot " << plot.str() << "\n";

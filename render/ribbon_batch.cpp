@@ -8,11 +8,11 @@
 namespace cosim {
 
 namespace {
-// A trail capsule is lit by its emission (0.7), the headlight (0.35 ambient, 0.5 diffuse) and
-// the sun: its middle, facing the camera, comes out about 1.7 times its colour and its rims
-// about 1.2 times (compared by eye on the swarm32 overview); the ribbon is shaded the same way.
-constexpr float kMiddleShade = 1.9f;
-constexpr float kEdgeShade = 1.4f;
+// A line's middle shows its colour exactly (the colour the figures and viewer.html draw it in:
+// the run's visual language, render/overlay_palette.h), its edges a little darker, as a tube
+// lit from the front looks.
+constexpr float kMiddleShade = 1.0f;
+constexpr float kEdgeShade = 0.78f;
 
 void push(std::vector<float>& out, const Eigen::Vector3d& p) {
   out.push_back(static_cast<float>(p.x()));

@@ -203,6 +203,16 @@ void RunRenderer::annotate(double t) {
   } else {
     planners.emplace_back("planner", plannerName(scenario_.motion.planner.name));
   }
+  // Each group's controller, as the run resolved it (a team's quadrotors over robots fly their
+  // own).
+  const RunSetup& setup = record_.setup;
+  if (ground && flying &&
+      setup.robot_sections.controller.name != setup.quadrotor_sections.controller.name) {
+    planners.emplace_back("robot controller", setup.robot_sections.controller.name);
+    planners.emplace_back("quadrotor controller", setup.quadrotor_sections.controller.name);
+  } else {
+    planners.emplace_back("controller", setup.primarySections().controller.name);
+  }
   // MuJoCo 2.2's smallest font is 18 px high (its 50 % scale falls back to 100 %): a frame
   // with room for fewer than 30 lines (640x360) gets short labels and fewer of them, so the
   // boxes cover about the same share of it as of a 1280x720 frame.
@@ -215,7 +225,8 @@ void RunRenderer::annotate(double t) {
   const int legend_room = compact ? 3 : std::max(3, ann.linesFitting(0.4));
   overlay_boxes_.push_back(
       ann.legend(legendEntries(static_cast<std::size_t>(legend_room), compact)));
-  for (std::size_t k = 0; k < scales_.size(); ++k) {
+  // A team's trails in their vehicles' colours have no error scale to read.
+  for (std::size_t k = 0; trailsShowError() && k < scales_.size(); ++k) {
     // One scale: its full name; one per kind of vehicle: the kind, and short names.
     const ErrorReference r = scales_[k].reference;
     const std::string kind = r == ErrorReference::TimedPlan ? "robots" : "quadrotors";

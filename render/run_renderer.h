@@ -102,6 +102,9 @@ class RunRenderer {
   // room: the most entries the frame has room for; compact: short labels for small frames.
   std::vector<LegendEntry> legendEntries(std::size_t room, bool compact) const;
   bool isGround(std::size_t vehicle) const;
+  // The flown trails are coloured by tracking error: a single vehicle's always, a team's with
+  // render.team_error (otherwise each member's trail is in its own colour).
+  bool trailsShowError() const { return log_.vehicles.size() == 1 || scenario_.render.team_error; }
   Eigen::Vector3f plannedColour(std::size_t vehicle) const;
 
   struct ErrorScale {

@@ -1,5 +1,6 @@
 // The lines and markers a rendered frame draws over the scene: each vehicle's trail coloured by
-// its tracking error, the planned paths, the dashed reference, heading arrows and goal spheres.
+// its tracking error (a team's in each member's own colour unless render.team_error), the planned
+// paths, the dashed reference, heading arrows and goal spheres.
 #include <algorithm>
 #include <cmath>
 
@@ -13,8 +14,9 @@ namespace cosim {
 
 void RunRenderer::addSegment(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
                              const Eigen::Vector3f& rgb, double radius, float alpha, int type) {
-  // A team's lines (trails, and plans and references when asked) as ribbons in one draw call.
-  if (log_.vehicles.size() > 1 && alpha >= 1.0f) return ribbons_.add(a, b, rgb, radius);
+  // Opaque lines (trails, plans, references) as ribbons in one draw call, unlit: their middle
+  // shows the visual language's colour exactly, as the figures and viewer.html do.
+  if (alpha >= 1.0f) return ribbons_.add(a, b, rgb, radius);
   if (scene_.ngeom >= scene_.maxgeom || (b - a).norm() < 1e-9) return;
   mjvGeom* g = scene_.geoms + scene_.ngeom;
   const float rgba[4] = {rgb.x(), rgb.y(), rgb.z(), alpha};
@@ -64,11 +66,12 @@ void RunRenderer::addSphere(const Eigen::Vector3d& p, double radius, const Eigen
 }
 
 bool RunRenderer::isGround(std::size_t vehicle) const {
-  return vehicle < scenario_.vehicles.size() && scenario_.vehicles[vehicle].kind == VehicleKind::GroundRobot;
+  return vehicle < scenario_.vehicles.size() &&
+         scenario_.vehicles[vehicle].kind == VehicleKind::GroundRobot;
 }
 
 Eigen::Vector3f RunRenderer::plannedColour(std::size_t vehicle) const {
-  return log_.vehicles.size() == 1 ? kPlannedPathColour : agentColour(vehicle);
+  return log_.vehicles.size() == 1 ? kPlannedPathColour : vehicleColour(vehicle);
 }
 
 void RunRenderer::addTrail(std::size_t vehicle, double t) {
@@ -102,12 +105,14 @@ void RunRenderer::addTrail(std::size_t vehicle, double t) {
   const std::vector<double>& err = errors_[vehicle];
   const std::vector<std::size_t>& kept = trail_vertices_[vehicle];
   const double scale = errorScale(vehicle);
+  const bool by_error = trailsShowError();
+  const Eigen::Vector3f own = vehicleColour(vehicle);
   const std::size_t last = sampleIndexAt(v, t);
   std::size_t from = 0;
   for (std::size_t k = 1; k < kept.size() && from < last; ++k) {
     const std::size_t i = std::min(kept[k], last);  // the trail ends at the vehicle
     addSegment(towardEye(v.samples[from].pos, 2.5), towardEye(v.samples[i].pos, 2.5),
-               errorColour(0.5 * (err[from] + err[i]) / scale), line_radius_);
+               by_error ? errorColour(0.5 * (err[from] + err[i]) / scale) : own, line_radius_);
     from = i;
   }
 }
@@ -129,15 +134,17 @@ void RunRenderer::addOverlays(double t, CameraKind camera) {
         addSegment(plan[i - 1], plan[i], planned, 2.0 * line_radius_);
     }
     // Start and goal; the goal stands on a thin pole to the floor so its height reads in
-    // perspective views. A team's members start where their trails begin: goals only.
+    // perspective views.
     const Eigen::Vector3d start = !v.planned_path.empty() ? v.planned_path.front()
                                   : !v.samples.empty()    ? v.samples.front().pos
                                                           : v.goal;
     if (!several) addSphere(start, 3.0 * line_radius_, kStartColour, 0.95f);
-    // A team's goals small and see-through: its vehicles' markers are the solid balls.
-    if (several)
+    // A team's goals see-through and its starts small and solid, each in the member's colour:
+    // where one member's start is another's goal, both show.
+    if (several) {
       addSphere(v.goal, 2.0 * line_radius_, planned, 0.5f);
-    else
+      addSphere(start, 1.1 * line_radius_, planned, 1.0f);
+    } else
       addSphere(v.goal, 3.5 * line_radius_, kGoalColour, 0.95f);
     if (plans) {
       const Eigen::Vector3d floor(v.goal.x(), v.goal.y(), scenario_.world.bounds_min.z());

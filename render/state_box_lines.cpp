@@ -72,8 +72,11 @@ std::vector<StateLine> stateBoxLines(double t, const std::vector<StateBoxVehicle
     if (!list_quadrotors && !quadrotors.empty()) summarise(quadrotors, "quadrotor", lines);
   }
   if (lines.size() + planners.size() > max_lines && planners.size() > 1) {
-    // Short of room: the planners on one line.
-    StateLine joined{"planners", ""};
+    // Short of room: the planners (and controllers) on one line.
+    bool only_planners = true;
+    for (const StateLine& p : planners)
+      only_planners = only_planners && p.first.find("planner") != std::string::npos;
+    StateLine joined{only_planners ? "planners" : "set-up", ""};
     for (const StateLine& p : planners)
       joined.second += (joined.second.empty() ? "" : " / ") + p.second;
     lines.push_back(joined);

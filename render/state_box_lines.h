@@ -28,9 +28,10 @@ struct StateBoxVehicle {
 constexpr std::size_t kListedRobots = 4;
 
 // The box's lines: "time", then the vehicles, then `planners` (label "planner" and, in a mixed
-// run, "quadrotor planner"). max_lines: the most lines the frame has room for; a listing that
-// would exceed it is summarised, and then the column heading dropped and the planners joined
-// on one line ("planners": "cbs / theta_star"); the time and the planners are always shown.
+// run, "quadrotor planner"; then the controllers). max_lines: the most lines the frame has room
+// for; a listing that would exceed it is summarised, and then the column heading dropped and the
+// planners joined on one line ("planners": "cbs / theta_star", or "set-up" when controllers are
+// among them); the time and the planners are always shown.
 std::vector<StateLine> stateBoxLines(double t, const std::vector<StateBoxVehicle>& vehicles,
                                      const std::vector<StateLine>& planners, std::size_t max_lines);
 

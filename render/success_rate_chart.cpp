@@ -24,7 +24,7 @@ void writeSuccessRateChart(const std::vector<SuccessRateSeries>& series, const s
   for (std::size_t g = 0; g < series.size(); ++g)
     body << (g ? ", \\\n     " : "") << "'success.dat' index " << g
          << " using 1:2 with linespoints lw 2 dt " << g + 1 << " pt " << 4 + 2 * g
-         << " ps 0.9 lc rgb '" << hexColour(agentColour(g + 4)) << "' title "
+         << " ps 0.9 lc rgb '" << hexColour(vehicleColour(g + 4)) << "' title "
          << gnuplotString(series[g].name);
   body << "\n";
   runGnuplot(plotBoth("success", 900, 500, body.str()), scratch.dir());

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/base64.h"
+#include "render/overlay_palette.h"
 #include "render/run_moments.h"
 #include "render/scene_shapes.h"
 #include "render/trail_decimation.h"
@@ -115,7 +116,7 @@ bool estimatesDiffer(const RunLog& log) {
 
 // Each vehicle's resampled frames, channel after channel.
 void packVehicles(const RunLog& log, const Scenario& scenario, const Quantiser& q, int frames,
-                  double rate, TrackPacker& pack) {
+                  double rate, const std::vector<std::vector<double>>& errors, TrackPacker& pack) {
   const bool est = estimatesDiffer(log);
   bool thrust = false;
   for (const VehicleLog& v : log.vehicles) thrust = thrust || v.max_thrust > 0.0;
@@ -138,6 +139,18 @@ void packVehicles(const RunLog& log, const Scenario& scenario, const Quantiser& 
   positions("pos", &LogSample::pos);
   positions("ref", &LogSample::ref_pos);
   if (est) positions("est", &LogSample::est_pos);
+  // Each vehicle's tracking error at each frame (the last sample at or before it), in mm.
+  pack.begin("err", 1, "u16");
+  for (std::size_t v = 0; v < at.size(); ++v) {
+    const std::vector<LogSample>& samples = log.vehicles[v].samples;
+    std::size_t i = 0;
+    for (int k = 0; k < frames; ++k) {
+      while (i + 1 < samples.size() && samples[i + 1].t <= k / rate) ++i;
+      const double e = v < errors.size() && i < errors[v].size() ? errors[v][i] : 0.0;
+      pack.put(static_cast<int>(
+          std::clamp(std::isfinite(e) ? std::lround(e * 1000.0) : 65535L, 0L, 65535L)));
+    }
+  }
   pack.begin("quat", 4, "i16");  // x, y, z, w
   for (const auto& frames_of : at)
     for (const LogSample& s : frames_of)
@@ -176,6 +189,7 @@ void packMovingObstacles(const RunLog& log, const Quantiser& q, int frames, doub
 }
 
 nlohmann::json vehiclesJson(const WorldModel& world, const Scenario& scenario, const RunLog& log,
+                            const RunRecord* record, const std::vector<double>& scale_tops,
                             nlohmann::json& models) {
   nlohmann::json out = nlohmann::json::array();
   for (std::size_t v = 0; v < log.vehicles.size(); ++v) {
@@ -197,15 +211,39 @@ nlohmann::json vehiclesJson(const WorldModel& world, const Scenario& scenario, c
          {"goal",
           {rounded(vl.goal.x(), 1e-3), rounded(vl.goal.y(), 1e-3), rounded(vl.goal.z(), 1e-3)}},
          {"reached_goal", vl.reached_goal},
+         {"arrival_time", vl.reached_goal ? rounded(vl.arrival_time, 1e-3) : -1.0},
+         {"controller", record && v < record->setup.vehicles.size()
+                            ? record->setup.sectionsOf(v).controller.name
+                            : std::string()},
+         {"error_scale", scale_tops[v]},
          {"planned", path}});
   }
   return out;
 }
 
+// Each vehicle's tracking errors: the record's, else the distance to the logged reference.
+std::vector<std::vector<double>> trackingErrors(const RunLog& log, const RunRecord* record) {
+  if (record) return record->metrics.tracking_errors;
+  std::vector<std::vector<double>> errors;
+  for (const VehicleLog& v : log.vehicles) {
+    std::vector<double>& e = errors.emplace_back();
+    for (const LogSample& s : v.samples) e.push_back((s.pos - s.ref_pos).norm());
+  }
+  return errors;
+}
+
 }  // namespace
 
 nlohmann::json viewerData(const WorldModel& world, const Scenario& scenario, const RunLog& log,
-                          const std::string& title, const std::string& status) {
+                          const std::string& title, const std::string& status,
+                          const RunRecord* record) {
+  const std::vector<std::vector<double>> errors = trackingErrors(log, record);
+  std::vector<ErrorReference> references;
+  for (std::size_t v = 0; v < log.vehicles.size(); ++v)
+    references.push_back(record && v < record->setup.vehicles.size() ? record->errorReferenceOf(v)
+                                                                     : ErrorReference::Trajectory);
+  const std::vector<double> scale_tops =
+      errorScaleTops(references, errors, scenario.sim.goal_tolerance);
   double duration = 0.0;
   std::size_t longest = 1;
   for (const VehicleLog& v : log.vehicles)
@@ -222,6 +260,9 @@ nlohmann::json viewerData(const WorldModel& world, const Scenario& scenario, con
   d["status"] = status;
   // A team's plans and references are hidden until asked for, as in its pictures.
   d["team_plans"] = scenario.render.team_plans;
+  // A team's flown paths in each member's colour unless it asks for the error colouring.
+  d["team_error"] = scenario.render.team_error;
+  d["style"] = visualLanguageJson(log.vehicles.size());
   d["duration"] = duration;
   d["rate"] = rate;
   d["frames"] = frames;
@@ -234,7 +275,7 @@ nlohmann::json viewerData(const WorldModel& world, const Scenario& scenario, con
   d["quant"] = {{"origin", {q.origin.x(), q.origin.y(), q.origin.z()}}, {"step", q.step}};
   d["obstacles"] = shapesJson(staticWorldShapes(world));
   nlohmann::json models = nlohmann::json::object();
-  d["vehicles"] = vehiclesJson(world, scenario, log, models);
+  d["vehicles"] = vehiclesJson(world, scenario, log, record, scale_tops, models);
   d["models"] = models;
   nlohmann::json moving = nlohmann::json::array();
   for (const MovingObstacleLog& m : log.moving_obstacles)
@@ -256,7 +297,7 @@ nlohmann::json viewerData(const WorldModel& world, const Scenario& scenario, con
   d["moments"] = moments;
 
   TrackPacker pack;
-  packVehicles(log, scenario, q, frames, rate, pack);
+  packVehicles(log, scenario, q, frames, rate, errors, pack);
   packMovingObstacles(log, q, frames, rate, pack);
   d["layout"] = pack.layout();
   d["tracks"] = base64Encode(pack.bytes());

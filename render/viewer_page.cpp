@@ -73,8 +73,23 @@ ThreeJs loadThreeJs() {
   else if (!readWhole(orbit, t.orbit_controls))
     t.missing =
         "three.js not found: " + orbit.string() + " is missing (Debian package libjs-three)";
-  else if (t.three.find("</script") != std::string::npos ||
-           t.orbit_controls.find("</script") != std::string::npos)
+  else {
+    // Wide lines (WebGL draws GL lines 1 px wide whatever is asked): three.js's LineSegments2.
+    for (const char* name : {"LineSegmentsGeometry.js", "LineMaterial.js", "LineSegments2.js"}) {
+      std::string text;
+      const std::filesystem::path file = dir / "examples" / "js" / "lines" / name;
+      if (!readWhole(file, text)) {
+        t.missing =
+            "three.js not found: " + file.string() + " is missing (Debian package libjs-three)";
+        return t;
+      }
+      t.wide_lines += text + "\n";
+    }
+  }
+  if (!t.missing.empty()) return t;
+  if (t.three.find("</script") != std::string::npos ||
+      t.orbit_controls.find("</script") != std::string::npos ||
+      t.wide_lines.find("</script") != std::string::npos)
     t.missing = "three.js at " + dir.string() + " contains </script> and cannot be embedded";
   return t;
 }
@@ -85,6 +100,7 @@ std::string viewerPage(const std::string& data_json, const ThreeJs& three) {
   fill(page, "/*@STYLE@*/", viewerStyle());
   fill(page, "/*@THREE@*/", three.three);
   fill(page, "/*@ORBIT_CONTROLS@*/", three.orbit_controls);
+  fill(page, "/*@WIDE_LINES@*/", three.wide_lines);
   fill(page, "/*@VIEWER_SCENE@*/", viewerSceneScript());
   fill(page, "/*@VIEWER@*/", viewerScript());
   fill(page, "/*@VIEWER_CONTROLS@*/", viewerControlsScript());
@@ -94,10 +110,10 @@ std::string viewerPage(const std::string& data_json, const ThreeJs& three) {
 
 std::string writeRunViewer(const std::filesystem::path& dir, const WorldModel& world,
                            const Scenario& scenario, const RunLog& log, const std::string& title,
-                           const std::string& status) {
+                           const std::string& status, const RunRecord* record) {
   const ThreeJs three = loadThreeJs();
   if (!three.missing.empty()) return three.missing;
-  const nlohmann::json data = viewerData(world, scenario, log, title, status);
+  const nlohmann::json data = viewerData(world, scenario, log, title, status, record);
   // Names from the scenario may hold bytes that are not UTF-8: replaced, not fatal.
   const std::string json = data.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
   writeFileAtomically(dir / "viewer.html", viewerPage(json, three));

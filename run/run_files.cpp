@@ -87,7 +87,7 @@ RenderedRun renderRunFiles(const Scenario& scenario, const RunRecord& record,
 std::string writeRunViewerFile(const std::filesystem::path& dir, const Scenario& scenario,
                                const RunRecord& record) {
   return writeRunViewer(dir, *record.world, scenario, record.log, runTitle(scenario, record),
-                        runStatusLine(record));
+                        runStatusLine(record), &record);
 }
 
 void finishRunFolder(const std::filesystem::path& dir, const Scenario& scenario,

@@ -22,6 +22,9 @@ struct RenderSettings {
   // A team's pictures draw every member's planned path and reference too (off: the flown paths
   // only; a grid plan's right angles, one per member, tangle a team's picture).
   bool team_plans = false;
+  // A team's flown paths coloured by tracking error, as a single vehicle's (off: each member in
+  // its own colour, so that each can be followed).
+  bool team_error = false;
   // The drawn paths' and references' thickness as a fraction of the visible height at the
   // camera's focus: 0.0055 is about 4 px in a 720-line frame.
   double line_width = 0.0055;
@@ -45,6 +48,8 @@ struct RenderSettings {
     v.boolean("png_frames", png_frames, "also write every frame as PNG (frames_<camera>/)");
     v.boolean("team_plans", team_plans,
               "a team's pictures also draw each member's planned path and reference");
+    v.boolean("team_error", team_error,
+              "a team's flown paths coloured by tracking error instead of one colour each");
     v.number("line_width", line_width, 0.0005, 0.05,
              "paths' and references' thickness, a fraction of the visible height at the focus "
              "(0.0055: about 4 px of 720; thicker for a paper's figure)");

@@ -11,12 +11,10 @@
 
 namespace cosim::bench {
 
-namespace {
-
 // Each vehicle of `s` flies from its start to its goal in 20 s, logged at 100 Hz, weaving a
 // little off the straight line (a smooth flown path with errors to colour); its plan is a grid
 // staircase of 0.5 m cells, as a team planner's.
-RunLog teamLog(const Scenario& s) {
+RunLog syntheticTeamLog(const Scenario& s) {
   RunLog log;
   constexpr double kSeconds = 20.0;
   constexpr int kSamples = 2000;
@@ -56,6 +54,8 @@ RunLog teamLog(const Scenario& s) {
   log.sim_time = kSeconds;
   return log;
 }
+
+namespace {
 
 struct RenderTiming {
   double frame_ms = 0.0;  // mean over the frames
@@ -106,8 +106,8 @@ Section benchTeamRender(bool quick) {
   Scenario standard = loadScenario(std::string(COSIM_SCENARIOS_DIR) + "/default.yaml");
   standard.render.width = width;
   standard.render.height = height;
-  const RunLog team_log = teamLog(team), single_log = teamLog(single);
-  const RunLog standard_log = teamLog(standard);
+  const RunLog team_log = syntheticTeamLog(team), single_log = syntheticTeamLog(single);
+  const RunLog standard_log = syntheticTeamLog(standard);
   const WorldModel team_world = WorldModel::build(team), single_world = WorldModel::build(single);
   const WorldModel standard_world = WorldModel::build(standard);
   // Alternated, best of the rounds: all see the same load on a shared machine.

@@ -35,7 +35,7 @@ std::string dataRows(const FlightComparison& c) {
 }
 
 std::string figureBody(const FlightComparison& c) {
-  const std::string real = hexColour(agentColour(0)), sim = hexColour(agentColour(1));
+  const std::string real = hexColour(vehicleColour(0)), sim = hexColour(vehicleColour(1));
   const std::string ref = hexColour(kReferenceColour);
   std::ostringstream b;
   b << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid lc rgb '#dddddd'\n"

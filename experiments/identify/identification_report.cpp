@@ -76,7 +76,7 @@ void writeFigure(const FitFigure& f, const std::filesystem::path& yaml) {
   scratch.write("fit.dat", rows.str());
   // A scatter for the maps, lines for the time series.
   const bool series = f.xlabel == "time (s)";
-  const std::string measured = hexColour(agentColour(0)), fitted = hexColour(agentColour(1));
+  const std::string measured = hexColour(vehicleColour(0)), fitted = hexColour(vehicleColour(1));
   std::ostringstream b;
   b << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid lc rgb '#dddddd'\n"
     << "set tics out nomirror\nset key top left box lc rgb '#bbbbbb' font ',10'\n"

@@ -22,7 +22,7 @@
     return new Type(bytes.buffer, l.offset, count * nF * l.components);
   }
   var ch = { pos: channel('pos', nV), ref: channel('ref', nV), est: channel('est', nV),
-    quat: channel('quat', nV), vel: channel('vel', nV), thrust: channel('thrust', nV),
+    err: channel('err', nV), quat: channel('quat', nV), vel: channel('vel', nV), thrust: channel('thrust', nV),
     moving: channel('moving', D.moving.length) };
   var o = D.quant.origin, step = D.quant.step;
   function positions(c) {  // Float32Array per vehicle, x y z per frame
@@ -35,26 +35,20 @@
     return out;
   }
   var P = positions(ch.pos), R = positions(ch.ref), E = ch.est ? positions(ch.est) : P;
-  var err = [], worst = 0.05;
-  for (var v = 0; v < nV; v++) {
-    err.push(new Float32Array(nF));
-    for (var k = 0; k < nF; k++) {
-      var dx = P[v][3 * k] - R[v][3 * k], dy = P[v][3 * k + 1] - R[v][3 * k + 1], dz = P[v][3 * k + 2] - R[v][3 * k + 2];
-      err[v][k] = Math.sqrt(dx * dx + dy * dy + dz * dz);
-      worst = Math.max(worst, err[v][k]);
-    }
-  }
   var frameTimes = [];
-  for (k = 0; k < nF; k++) frameTimes.push(Math.min(k / rate, D.duration));
-  var stops = ['#1a9850', '#a6d96a', '#fee08b', '#f46d43', '#a50026'].map(function (c) { return new THREE.Color(c); });
-  function errorColour(e) {
-    var x = Math.min(Math.max(e / worst, 0), 1) * (stops.length - 1), j = Math.min(Math.floor(x), stops.length - 2);
+  for (var k = 0; k < nF; k++) frameTimes.push(Math.min(k / rate, D.duration));
+  // The colours and the error scale are the run's visual language (render/overlay_palette.h),
+  // the same as its video's and figures'.
+  var style = D.style, colour = function (hex) { return new THREE.Color(hex); };
+  var stops = style.error_stops.map(colour);
+  function errorOf(v, k) { return ch.err[v * nF + k] / 1000; }  // m
+  function errorColour(v, k) {
+    var x = Math.min(Math.max(errorOf(v, k) / D.vehicles[v].error_scale, 0), 1) * (stops.length - 1);
+    var j = Math.min(Math.floor(x), stops.length - 2);
     return stops[j].clone().lerp(stops[j + 1], x - j);
   }
-  // Vehicle colours: none of the error scale's greens, yellows or reds.
-  var palette = ['#1f77b4', '#9467bd', '#17becf', '#e377c2', '#8c564b', '#393b79', '#7f7f7f', '#ce6dbd']
-    .map(function (c) { return new THREE.Color(c); });
-  var vColour = D.vehicles.map(function (_, i) { return palette[i % palette.length]; });
+  var vColour = D.vehicles.map(function (_, i) { return colour(style.vehicles[i]); });
+  var team = nV > 1;
 
   // ---- the scene ----
   var scene = new THREE.Scene();
@@ -73,24 +67,49 @@
   layer('floor', 'floor and grid', S.floor(D.bounds), true);
   layer('obstacles', 'obstacles', S.obstacles(D.obstacles), true);
   var planned = D.vehicles.map(function (x) { return new Float32Array(x.planned); });
-  var pathColour = nV === 1 ? [new THREE.Color('#2f6bd8')] : vColour;
-  layer('planned', 'planned path', new THREE.LineSegments(S.polylines(planned, pathColour),
-    new THREE.LineBasicMaterial({ vertexColors: THREE.VertexColors })), nV === 1 || D.team_plans);
-  var refLine = new THREE.LineSegments(S.polylines(R, R.map(function () { return new THREE.Color(0x555a66); })),
-    new THREE.LineDashedMaterial({ color: 0x555a66, dashSize: 0.25, gapSize: 0.18 }));
-  refLine.computeLineDistances();
-  layer('reference', 'reference', refLine, nV === 1 || D.team_plans);
-  var flown = S.flownPaths(P, err, frameTimes, errorColour);
-  layer('flown', 'flown path (error colour)', flown, true);
+  var pathColour = team ? vColour : [colour(style.planned)];
+  var wide = [];  // the wide lines, whose width in pixels needs the canvas size
+  function wideLayer(name, label, line, on) { wide.push(line); layer(name, label, line, on); return line; }
+  // The planned path below the flown one: a 5 px band for one vehicle (the flown path, 3 px,
+  // shows inside it), 3 px per member of a team.
+  wideLayer('planned', 'planned path', S.polylines(planned, pathColour, team ? 3 : 5), !team || D.team_plans);
+  wideLayer('reference', 'reference (dashed)', S.polylines(R, R.map(function () { return colour(style.reference); }), 2, true),
+    !team || D.team_plans);
+  // The flown paths: a team's in each member's colour (error on demand), one vehicle's by error.
+  var own = team ? vColour : [colour(style.flown)];
+  var flown = wideLayer('flown', team ? 'flown paths (one colour each)' : 'flown path (plain)',
+    S.flownPaths(P, nF, function (v) { return own[v]; }, 3), team && !D.team_error);
+  var flownError = wideLayer('error', team ? 'flown paths coloured by error' : 'flown path coloured by error',
+    S.flownPaths(P, nF, errorColour, 3), !team || D.team_error);
+  flownError.renderOrder = 1;
+  // The picked vehicle: its flown path drawn wider over the others, and a ring under its dot.
+  var highlight = null, ring = S.dots(1, nV > 30 ? 20 : 24, [new THREE.Color(0x111111)]);
+  ring.renderOrder = 1;
+  ring.visible = false;
+  scene.add(ring);
+  function highlightVehicle(v) {
+    if (highlight) { scene.remove(highlight); highlight.geometry.dispose(); highlight = null; }
+    ring.visible = v >= 0;
+    if (v < 0) return;
+    highlight = S.flownPaths([P[v]], nF, function () { return vColour[v] || own[0]; }, 7);
+    highlight.renderOrder = 2;
+    highlight.material.resolution.copy(wide[0].material.resolution);
+    scene.add(highlight);
+  }
   var vehicleMeshes = S.vehicleMeshes(D);
   layer('vehicles', 'vehicles', vehicleMeshes, true);
-  var markers = S.dots(nV, nV > 30 ? 7 : 10, vColour);
+  var markers = S.dots(nV, nV > 30 ? 7 : 10, team ? vColour : [colour(style.flown)]);
   layer('markers', 'vehicle dots', markers, true);
-  var goals = S.dots(nV, 6, D.vehicles.map(function () { return new THREE.Color(0x222222); }));
+  // Goals as open squares, starts as small dots: where one member's start is another's goal,
+  // the dot shows inside the square.
+  var goals = S.dots(nV, nV > 30 ? 9 : 14, team ? vColour : [colour(style.goal)], 'square');
   D.vehicles.forEach(function (x, i) { goals.geometry.attributes.position.setXYZ(i, x.goal[0], x.goal[1], x.goal[2]); });
-  layer('goals', 'goals', goals, nV <= 50);
-  var estimate = ch.est ? S.dots(nV, 6, D.vehicles.map(function () { return new THREE.Color(0xff8c00); })) : null;
-  if (estimate) layer('estimate', 'estimate (orange)', estimate, false);
+  layer('goals', 'goals (squares)', goals, nV <= 50);
+  var starts = S.dots(nV, nV > 30 ? 5 : 8, team ? vColour : [colour(style.start)]);
+  D.vehicles.forEach(function (x, i) { starts.geometry.attributes.position.setXYZ(i, P[i][0], P[i][1], P[i][2]); });
+  layer('starts', 'starts (dots)', starts, nV <= 50);
+  var estimate = ch.est ? S.dots(nV, 6, D.vehicles.map(function () { return colour(style.estimate); })) : null;
+  if (estimate) layer('estimate', 'estimate (sky blue)', estimate, false);
   var moving = D.moving.map(function (m) {
     return new THREE.Mesh(S.shapesGeometry(m.shapes), new THREE.MeshLambertMaterial({ vertexColors: THREE.VertexColors }));
   });
@@ -134,7 +153,16 @@
       var b = (j * nF + k) * 2;
       m.position.set(o[0] + ch.moving[b] * step, o[1] + ch.moving[b + 1] * step, 0);
     });
-    flown.material.uniforms.now.value = t;
+    // A path reaches the frame at or before t (the vehicle's dot sits at its end).
+    var shown = Math.min(Math.floor(t * rate + 1e-6), nF - 1);
+    flown.showUpTo(shown);
+    flownError.showUpTo(shown);
+    if (highlight) highlight.showUpTo(shown);
+    if (T.selected >= 0) {
+      sample(P, T.selected, t, tmpP);
+      ring.geometry.attributes.position.setXYZ(0, tmpP.x, tmpP.y, tmpP.z + Math.max(D.vehicles[T.selected].radius * T.scale, 0.05));
+      ring.geometry.attributes.position.needsUpdate = true;
+    }
   }
 
   // ---- cameras ----
@@ -175,6 +203,7 @@
   function resize() {
     var w = window.innerWidth, h = window.innerHeight;
     renderer.setSize(w, h);
+    wide.concat(highlight ? [highlight] : []).forEach(function (l) { l.material.resolution.set(w, h); });
     camera.aspect = w / h;
     camera.updateProjectionMatrix();
   }
@@ -188,7 +217,7 @@
     var k = frameOf(T.t), x = D.vehicles[v], p = sample(P, v, T.t, new THREE.Vector3());
     var vel = ch.vel, b = (v * nF + k) * 3, speed = Math.hypot(vel[b], vel[b + 1], vel[b + 2]) / 100;
     var rows = [['time', fmt(T.t, 2) + ' s'], ['position', fmt(p.x, 2) + ', ' + fmt(p.y, 2) + ', ' + fmt(p.z, 2) + ' m'],
-      ['speed', fmt(speed, 2) + ' m/s'], ['error to reference', fmt(err[v][k]) + ' m']];
+      ['speed', fmt(speed, 2) + ' m/s'], ['tracking error', fmt(errorOf(v, k)) + ' m']];
     if (ch.est) {
       var e = sample(E, v, T.t, new THREE.Vector3());
       rows.push(['estimate', fmt(e.x, 2) + ', ' + fmt(e.y, 2) + ', ' + fmt(e.z, 2) + ' m'], ['estimate - truth', fmt(e.distanceTo(p)) + ' m']);
@@ -198,9 +227,12 @@
       for (var r = 0; r < 4; r++) th.push(fmt(ch.thrust[(v * nF + k) * 4 + r] / 65535 * x.max_thrust, 2));
       rows.push(['rotor thrusts', th.join(' ') + ' N'], ['rotor limit', fmt(x.max_thrust, 2) + ' N']);
     }
-    rows.push(['reached goal', x.reached_goal ? 'yes' : 'no']);
+    // As of the time shown: a vehicle that arrives later has not reached its goal yet.
+    var arrived = x.arrival_time >= 0 && T.t >= x.arrival_time - 1e-9;
+    rows.push(['reached goal', arrived ? 'yes, at ' + fmt(x.arrival_time, 2) + ' s'
+      : x.arrival_time >= 0 ? 'not yet (at ' + fmt(x.arrival_time, 2) + ' s)' : 'no']);
     box.innerHTML = '<b></b><table>' + rows.map(function (r) { return '<tr><td></td><td class="v"></td></tr>'; }).join('') + '</table>';
-    box.querySelector('b').textContent = x.name + ' (' + x.model + ')';
+    box.querySelector('b').textContent = x.name + ' (' + x.model + (x.controller ? ', ' + x.controller + ' controller' : '') + ')';
     box.querySelectorAll('tr').forEach(function (tr, i) { tr.cells[0].textContent = rows[i][0]; tr.cells[1].textContent = rows[i][1]; });
     box.hidden = false;
   }
@@ -214,6 +246,7 @@
     }
     T.selected = best;
     if (best >= 0) { T.follow = best; $('follow-vehicle').value = best; }
+    highlightVehicle(best);
     info();
   });
 
@@ -224,5 +257,6 @@
   }
 
   window.CosimReplay = { screenOf: screenOf, D: D, T: T, layers: layers, setCamera: setCamera, place: place, follow: follow, info: info,
-    frameOf: frameOf, renderer: renderer, scene: scene, camera: camera, controls: controls, resize: resize, worst: worst };
+    frameOf: frameOf, renderer: renderer, scene: scene, camera: camera, controls: controls, resize: resize,
+    highlightVehicle: highlightVehicle, style: style };
 })();

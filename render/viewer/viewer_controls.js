@@ -8,7 +8,23 @@
 
   $('run-title').textContent = D.title;
   $('run-status').textContent = D.status;
-  $('error-max').textContent = R.worst.toFixed(3) + ' m';
+  // The error legend: the run's scale (one per kind of reference, as in the video), shown while
+  // a flown path is coloured by error.
+  var tops = [];
+  D.vehicles.forEach(function (v) { if (tops.indexOf(v.error_scale) < 0) tops.push(v.error_scale); });
+  $('error-max').textContent = tops.map(function (x) { return +x.toPrecision(3) + ' m'; }).join(' / ');
+  $('colour-bar').style.background = 'linear-gradient(to right, ' + R.style.error_stops.join(', ') + ')';
+  function legend() {
+    var byError = R.layers.error.objects[0].visible;
+    $('legend').hidden = !byError;
+    $('team-legend').hidden = byError || D.vehicles.length < 2;
+  }
+  var swatches = $('team-swatches');
+  R.style.vehicles.slice(0, 32).forEach(function (c) {
+    var s = document.createElement('span');
+    s.style.background = c;
+    swatches.appendChild(s);
+  });
 
   function clock() {
     $('clock').textContent = T.t.toFixed(2) + ' / ' + D.duration.toFixed(2) + ' s';
@@ -34,7 +50,7 @@
     mark.addEventListener('click', function () {
       setPlaying(false);
       seek(m.t);
-      if (m.vehicle >= 0) { T.selected = T.follow = m.vehicle; $('follow-vehicle').value = m.vehicle; R.info(); }
+      if (m.vehicle >= 0) { T.selected = T.follow = m.vehicle; $('follow-vehicle').value = m.vehicle; R.highlightVehicle(m.vehicle); R.info(); }
     });
     $('marks').appendChild(mark);
   });
@@ -65,6 +81,7 @@
   });
   pick.addEventListener('change', function () {
     T.follow = T.selected = parseInt(pick.value, 10);
+    R.highlightVehicle(T.selected);
     R.info();
     R.setCamera('follow');
   });
@@ -81,7 +98,7 @@
     var l = R.layers[name], label = document.createElement('label'), box = document.createElement('input');
     box.type = 'checkbox';
     box.checked = l.on;
-    box.addEventListener('change', function () { l.objects.forEach(function (x) { x.visible = box.checked; }); });
+    box.addEventListener('change', function () { l.objects.forEach(function (x) { x.visible = box.checked; }); legend(); });
     label.appendChild(box);
     label.appendChild(document.createTextNode(' ' + l.label));
     $('layers').appendChild(label);
@@ -96,7 +113,7 @@
       try { return decodeURIComponent(m[1]); } catch (e) { return null; }
     };
     var named = D.vehicles.map(function (v) { return v.name; }).indexOf(arg('vehicle'));
-    if (named >= 0) { T.follow = T.selected = named; pick.value = named; }
+    if (named >= 0) { T.follow = T.selected = named; pick.value = named; R.highlightVehicle(named); }
     var t = parseFloat(arg('t'));
     if (isFinite(t)) { setPlaying(false); seek(t); }
     var cam = arg('camera');
@@ -128,6 +145,7 @@
     window.requestAnimationFrame(draw);
   }
 
+  legend();
   R.resize();
   R.setCamera('orbit');
   if (!fromAddress()) seek(0);

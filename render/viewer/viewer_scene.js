@@ -1,6 +1,6 @@
 // The replay's 3D objects, built from the run's data (render/viewer_data.h): the floor and its
 // grid, the static shapes merged into one mesh, one instanced mesh per vehicle model, the paths
-// as merged line sets. Classic script: defines window.CosimScene for viewer.js.
+// as merged sets of wide lines. Classic script: defines window.CosimScene for viewer.js.
 (function () {
   'use strict';
 
@@ -120,8 +120,24 @@
     return meshes;
   }
 
-  // Line segments through each list of points (Float32Array x, y, z, ...), merged into one set.
-  function polylines(lists, colours) {
+  // Lines `px` pixels wide whatever the distance (WebGL draws its own lines 1 px wide): three.js's
+  // LineSegments2, one instance per segment. pos: x y z x y z per segment; col: r g b r g b.
+  function wideSegments(pos, col, px, dashed) {
+    var g = new THREE.LineSegmentsGeometry();
+    g.setPositions(pos.length ? pos : [0, 0, 0, 0, 0, 0]);
+    g.setColors(col.length ? col : [0, 0, 0, 0, 0, 0]);
+    var material = new THREE.LineMaterial({ linewidth: px, vertexColors: THREE.VertexColors, dashed: !!dashed,
+      dashSize: 0.25, gapSize: 0.18 });
+    if (dashed) material.defines.USE_DASH = '';
+    var line = new THREE.LineSegments2(g, material);
+    if (dashed) line.computeLineDistances();
+    line.frustumCulled = false;
+    if (!pos.length) g.maxInstancedCount = 0;
+    return line;
+  }
+
+  // Wide segments through each list of points (Float32Array x, y, z, ...), merged into one set.
+  function polylines(lists, colours, px, dashed) {
     var pos = [], col = [];
     lists.forEach(function (pts, i) {
       var c = colours[i];
@@ -130,43 +146,29 @@
         col.push(c.r, c.g, c.b, c.r, c.g, c.b);
       }
     });
-    var g = new THREE.BufferGeometry();
-    g.setAttribute('position', new THREE.Float32BufferAttribute(pos, 3));
-    g.setAttribute('color', new THREE.Float32BufferAttribute(col, 3));
-    return g;
+    return wideSegments(pos, col, px, dashed);
   }
 
-  // The flown paths as one set of segments coloured by error; the shader hides every segment
-  // flown after the current time (uniform `now`), so the path grows behind each vehicle.
-  function flownPaths(positions, errors, frameTimes, errorColour) {
-    var pos = [], col = [], time = [];
-    positions.forEach(function (pts, v) {
-      for (var k = 0; k + 1 < frameTimes.length; k++) {
-        for (var e = 0; e < 2; e++) {
-          var j = k + e, c = errorColour(errors[v][j]);
-          pos.push(pts[3 * j], pts[3 * j + 1], pts[3 * j + 2]);
-          col.push(c.r, c.g, c.b);
-          time.push(frameTimes[k + 1]);
-        }
+  // The flown paths as one set of wide segments, frame by frame (all vehicles' segments of
+  // frame 1, then of frame 2, ...), so that drawing the first k * vehicles of them shows each
+  // path up to frame k: the path grows behind each vehicle. colour(v, k): the colour of vehicle
+  // v at frame k. showUpTo(k) sets how far.
+  function flownPaths(positions, frames, colour, px) {
+    var pos = [], col = [], nV = positions.length;
+    for (var k = 0; k + 1 < frames; k++)
+      for (var v = 0; v < nV; v++) {
+        var pts = positions[v], a = colour(v, k), b = colour(v, k + 1);
+        pos.push(pts[3 * k], pts[3 * k + 1], pts[3 * k + 2], pts[3 * k + 3], pts[3 * k + 4], pts[3 * k + 5]);
+        col.push(a.r, a.g, a.b, b.r, b.g, b.b);
       }
-    });
-    var g = new THREE.BufferGeometry();
-    g.setAttribute('position', new THREE.Float32BufferAttribute(pos, 3));
-    g.setAttribute('tint', new THREE.Float32BufferAttribute(col, 3));
-    g.setAttribute('stamp', new THREE.Float32BufferAttribute(time, 1));
-    var material = new THREE.ShaderMaterial({
-      uniforms: { now: { value: 0 } },
-      vertexShader: 'attribute vec3 tint; attribute float stamp; varying vec3 vTint; varying float vStamp;' +
-        'void main() { vTint = tint; vStamp = stamp;' +
-        ' gl_Position = projectionMatrix * modelViewMatrix * vec4(position, 1.0); }',
-      fragmentShader: 'uniform float now; varying vec3 vTint; varying float vStamp;' +
-        'void main() { if (vStamp > now + 1e-4) discard; gl_FragColor = vec4(vTint, 1.0); }'
-    });
-    return new THREE.LineSegments(g, material);
+    var line = wideSegments(pos, col, px, false);
+    line.showUpTo = function (k) { line.geometry.maxInstancedCount = pos.length ? Math.max(0, k) * nV : 0; };
+    return line;
   }
 
-  // A round dot of `px` pixels whatever the distance, one per point, for vehicles too small to see.
-  function dots(count, px, colours) {
+  // A round dot (or, shape 'square', a hollow square) of `px` pixels whatever the distance, one
+  // per point: vehicles too small to see, starts, goals.
+  function dots(count, px, colours, shape) {
     var g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.Float32BufferAttribute(new Float32Array(3 * count), 3));
     var col = [];
@@ -175,13 +177,19 @@
     var canvas = document.createElement('canvas');
     canvas.width = canvas.height = 64;
     var ctx = canvas.getContext('2d');
-    ctx.beginPath();
-    ctx.arc(32, 32, 26, 0, 2 * Math.PI);
-    ctx.fillStyle = '#ffffff';
-    ctx.fill();
-    ctx.lineWidth = 8;
-    ctx.strokeStyle = 'rgba(20, 20, 30, 0.9)';
-    ctx.stroke();
+    if (shape === 'square') {  // the figures' goal: an open square, a start shows inside it
+      ctx.lineWidth = 12;
+      ctx.strokeStyle = '#ffffff';
+      ctx.strokeRect(10, 10, 44, 44);
+    } else {
+      ctx.beginPath();
+      ctx.arc(32, 32, 26, 0, 2 * Math.PI);
+      ctx.fillStyle = '#ffffff';
+      ctx.fill();
+      ctx.lineWidth = 8;
+      ctx.strokeStyle = 'rgba(20, 20, 30, 0.9)';
+      ctx.stroke();
+    }
     var material = new THREE.PointsMaterial({ size: px, sizeAttenuation: false,
       vertexColors: THREE.VertexColors, map: new THREE.CanvasTexture(canvas),
       transparent: true, alphaTest: 0.3, depthTest: false });
@@ -193,6 +201,7 @@
 
   window.CosimScene = {
     floor: floor, obstacles: obstacles, shapesGeometry: shapesGeometry,
-    vehicleMeshes: vehicleMeshes, polylines: polylines, flownPaths: flownPaths, dots: dots
+    vehicleMeshes: vehicleMeshes, wideSegments: wideSegments, polylines: polylines,
+    flownPaths: flownPaths, dots: dots
   };
 })();

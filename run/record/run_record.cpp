@@ -19,11 +19,20 @@ std::string pathSourceName(const Scenario& scenario, const std::string& planner_
   return "given reference " + flier->reference_file.filename().string();
 }
 
+std::string vehicleControllers(const RunRecord& record) {
+  const RunSetup& s = record.setup;
+  const std::string& robots = s.robot_sections.controller.name;
+  const std::string& quadrotors = s.quadrotor_sections.controller.name;
+  if (s.robots.empty()) return quadrotors + " controller";
+  if (s.quadrotors.empty() || robots == quadrotors) return robots + " controller";
+  return "robots: " + robots + " controller, quadrotors: " + quadrotors + " controller";
+}
+
 std::string runTitle(const Scenario& scenario, const RunRecord& record) {
   const MotionSections& primary = record.setup.primarySections();
   const std::string planner = pathSourceName(scenario, primary.planner.name);
   return "cosim run: " + std::filesystem::path(scenario.file).stem().string() + " (" + planner +
-         ", " + primary.controller.name + " controller)";
+         ", " + vehicleControllers(record) + ")";
 }
 
 std::string runStatusLine(const RunRecord& record) {

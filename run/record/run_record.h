@@ -69,8 +69,13 @@ struct RunRecord {
 // references" (several) or "given waypoints and references" (some of each).
 std::string pathSourceName(const Scenario& scenario, const std::string& planner_name);
 
-// "cosim run: <scenario> (<planner>, <controller> controller)": index.html's and viewer.html's
-// title, from the scenario's file name and the top-level sections as resolved.
+// Which controller drives the vehicles, as resolved: "<name> controller" when one drives them
+// all, else "robots: <name> controller, quadrotors: <name> controller" (quadrotors over ground
+// robots fly their own, the `aerial` sections').
+std::string vehicleControllers(const RunRecord& record);
+
+// "cosim run: <scenario> (<planner>, <controllers>)": index.html's, viewer.html's and the video's
+// title, from the scenario's file name, the top-level planner and vehicleControllers.
 std::string runTitle(const Scenario& scenario, const RunRecord& record);
 
 // "Every vehicle reached its goal without a collision." or "The run failed its task: <why>".

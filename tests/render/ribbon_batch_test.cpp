@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "render/run_renderer.h"
+#include "render/vehicle_palette.h"
 #include "render_test_scene.h"
 #include "run/run_evaluation.h"
 #include "sim/world_model.h"
@@ -43,14 +44,15 @@ TEST(RibbonBatch, RibbonIsTwoRadiiWideAcrossTheSightLineAndLengthenedAtBothEnds)
   EXPECT_NEAR(b.lo.y(), -0.1, 1e-6);
   EXPECT_NEAR(b.hi.y(), 0.1, 1e-6);
   EXPECT_NEAR(b.hi.z() - b.lo.z(), 0.0, 1e-6);
-  // Middle brighter than the edges, as a lit tube: blue 0.6 -> 1 (clamped) and 0.84.
+  // The middle shows the colour itself (the one the figures and viewer.html use), the edges are
+  // darker, as a lit tube: blue 0.6 in the middle and 0.6 x 0.78 at the edges.
   float most = 0.0f, least = 1.0f;
   for (std::size_t i = 2; i < rgb.size(); i += 3) {
     most = std::max(most, rgb[i]);
     least = std::min(least, rgb[i]);
   }
-  EXPECT_FLOAT_EQ(most, 1.0f);
-  EXPECT_NEAR(least, 0.84f, 1e-6);
+  EXPECT_FLOAT_EQ(most, 0.6f);
+  EXPECT_NEAR(least, 0.468f, 1e-6);
 }
 
 TEST(RibbonBatch, SeenEndOnTheRibbonStillCoversTheLineWidth) {
@@ -101,7 +103,8 @@ TEST(RibbonBatch, TeamTrailsAreDrawnInTheFrameWithTheirShadowsOnTheFloor) {
   RunRenderer renderer(s, renderer_record, 640, 360);
   std::vector<std::uint8_t> rgb;
   renderer.render(4.0, "top", rgb, /*annotate=*/false);
-  EXPECT_EQ(renderer.lastFrameTimings().overlay_geoms, 6);  // goals, markers, arrows
+  // Goals, starts, markers, arrows: two of each.
+  EXPECT_EQ(renderer.lastFrameTimings().overlay_geoms, 8);
   EXPECT_GT(renderer.lastFrameTimings().ribbon_segments, 1);
   const auto pixel = [&](const Eigen::Vector3d& p) {
     Eigen::Vector2d px;
@@ -109,11 +112,13 @@ TEST(RibbonBatch, TeamTrailsAreDrawnInTheFrameWithTheirShadowsOnTheFloor) {
     const std::size_t i = 3 * (static_cast<std::size_t>(px.y()) * 640 + px.x());
     return Eigen::Vector3i(rgb[i], rgb[i + 1], rgb[i + 2]);
   };
-  // No error: the trail is viridis' dark purple (blue above green, red above green).
-  for (double y : {4.0, 8.0}) {
-    const Eigen::Vector3i c = pixel({10, y, 2});
-    EXPECT_GT(c.z(), c.y() + 40) << "trail at y=" << y;
-    EXPECT_GT(c.x(), c.y() + 20) << "trail at y=" << y;
+  // A team's trails are drawn in each member's own colour (render/vehicle_palette.h), unlit:
+  // the pixel in a trail's middle is that colour.
+  for (std::size_t v = 0; v < 2; ++v) {
+    const Eigen::Vector3i c = pixel({10, 4.0 * static_cast<double>(v + 1), 2});
+    const Eigen::Vector3f want = 255.0f * vehicleColour(v);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(c[k], want[k], 30.0) << "trail of vehicle " << v << ", channel " << k;
   }
   // The sun's shadow of the trail 2 m up lands (0.6, 0.8) m off and darkens the floor there.
   const Eigen::Vector3i shade = pixel({10 - 0.6, 4 - 0.8, 0});

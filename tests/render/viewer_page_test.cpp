@@ -66,15 +66,15 @@ int differingNear(const std::vector<std::uint8_t>& a, const std::vector<std::uin
   return n;
 }
 
-// The centre of the pixels of the first vehicle's dot (viewer.js draws it #1f77b4, on top of
-// everything) in a 640 x 360 RGB frame; (-1, -1) if there are fewer than 4.
+// The centre of the pixels of the first vehicle's dot (viewer.js draws it in the flown path colour,
+// #2159a6, on top of everything) in a 640 x 360 RGB frame; (-1, -1) if there are fewer than 4.
 std::pair<int, int> dotCentre(const std::vector<std::uint8_t>& rgb) {
   long sx = 0, sy = 0, n = 0;
   for (int j = 0; j < 360; ++j)
     for (int i = 0; i < 640; ++i) {
       const std::size_t k = 3 * (static_cast<std::size_t>(j) * 640 + i);
-      if (std::abs(rgb[k] - 0x1f) < 16 && std::abs(rgb[k + 1] - 0x77) < 16 &&
-          std::abs(rgb[k + 2] - 0xb4) < 16) {
+      if (std::abs(rgb[k] - 0x21) < 16 && std::abs(rgb[k + 1] - 0x59) < 16 &&
+          std::abs(rgb[k + 2] - 0xa6) < 16) {
         sx += i;
         sy += j;
         ++n;
@@ -146,7 +146,7 @@ TEST(ViewerPage, WithoutThreeJsNothingIsWrittenAndTheReasonIsGiven) {
 // HTML parser in its double-escaped state and the page's scripts never ran. Every '<', '>', '&'
 // and line separator of the data is a JSON escape; the data still parses to the same names.
 TEST(ViewerPage, TheDataGivesTheHtmlParserNothingToFindAndParsesToTheSameNames) {
-  const ThreeJs three{"/*three*/", "/*orbit*/", ""};
+  const ThreeJs three{"/*three*/", "/*orbit*/", "", ""};
   const nlohmann::json data = {
       {"names", {"<!--<script>", "q\"x'y]]>", "a&b</script>", "\xe2\x80\xa8|\xe2\x80\xa9"}}};
   const std::string page = viewerPage(data.dump(), three);
