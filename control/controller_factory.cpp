@@ -5,6 +5,7 @@
 
 #include "control/controller_registry.h"
 #include "core/input_error.h"
+#include "core/owner_list.h"
 
 namespace cosim {
 
@@ -16,11 +17,7 @@ std::map<std::string, std::string> controllersByGain() {
   for (const ControllerEntry& e : ControllerRegistry::instance().entries())
     for (const GainKey& g : gainKeys(e.gains)) names[g.key].push_back(e.name);
   std::map<std::string, std::string> text;
-  for (const auto& [gain, controllers] : names) {
-    std::string list;
-    for (const auto& c : controllers) list += (list.empty() ? "" : ", ") + c;
-    text[gain] = (controllers.size() == 1 ? "controller " : "controllers ") + list;
-  }
+  for (const auto& [gain, controllers] : names) text[gain] = ownerList("controller", controllers);
   return text;
 }
 }  // namespace

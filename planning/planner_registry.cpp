@@ -5,6 +5,7 @@
 
 #include "core/input_error.h"
 #include "core/name_suggestion.h"
+#include "core/owner_list.h"
 #include "planning/grid/grid_planners.h"
 #include "planning/grid/grid_world_planner.h"
 #include "planning/mapf/mapf_planner_registry.h"
@@ -127,11 +128,7 @@ const std::map<std::string, std::string>& plannersByParameter() {
       for (const auto& [k, v] : probe.effective()) names[k].push_back(e.name);
     }
     std::map<std::string, std::string> text;
-    for (const auto& [k, planners] : names) {
-      std::string list;
-      for (const auto& p : planners) list += (list.empty() ? "" : ", ") + p;
-      text[k] = (planners.size() == 1 ? "planner " : "planners ") + list;
-    }
+    for (const auto& [k, planners] : names) text[k] = ownerList("planner", planners);
     return text;
   }();
   return takers;

@@ -90,6 +90,26 @@ void twoVehicles(Scenario& s, RunLog& log) {
   }
 }
 
+// The same run at time t from the top camera, as viewer.html shows it (a headless-Chromium
+// screenshot) and as the video's frame.
+struct TwoPictures {
+  std::vector<std::uint8_t> viewer, video;
+};
+TwoPictures viewerAndVideoAt(const Scenario& s, const RunLog& log, const std::filesystem::path& dir,
+                             int t) {
+  const WorldModel world = WorldModel::build(s);
+  const RunRecord record = recordOfLog(s, log, world);
+  TwoPictures p;
+  EXPECT_EQ(writeRunViewer(dir, world, s, log, "visual language", "ok", &record), "");
+  p.viewer = viewerScreenshot(dir / "viewer.html", "#t=" + std::to_string(t) + "&camera=top");
+  EXPECT_EQ(p.viewer.size(), static_cast<std::size_t>(kWidth) * kHeight * 3)
+      << "Chromium did not run";
+  RunRenderer renderer(s, record, kWidth, kHeight);
+  renderer.render(t, CameraKind::Top, p.video, /*annotate=*/false);
+  EXPECT_EQ(p.video.size(), p.viewer.size());
+  return p;
+}
+
 }  // namespace
 
 TEST(VisualLanguage, TheVideoAndTheViewerDrawEachVehiclesPathInTheSameColour) {
@@ -99,16 +119,10 @@ TEST(VisualLanguage, TheVideoAndTheViewerDrawEachVehiclesPathInTheSameColour) {
   Scenario s = renderTestScenario(kWidth, kHeight);
   RunLog log = straightFlightLog(6.0);
   twoVehicles(s, log);
-  const WorldModel world = WorldModel::build(s);
-  const RunRecord record = recordOfLog(s, log, world);
-  ASSERT_EQ(writeRunViewer(dir, world, s, log, "visual language", "ok", &record), "");
-  const std::vector<std::uint8_t> viewer = viewerScreenshot(dir / "viewer.html", "#t=6&camera=top");
-  ASSERT_EQ(viewer.size(), static_cast<std::size_t>(kWidth) * kHeight * 3)
-      << "Chromium did not run";
-  RunRenderer renderer(s, record, kWidth, kHeight);
-  std::vector<std::uint8_t> video;
-  renderer.render(6.0, CameraKind::Top, video, /*annotate=*/false);
-  ASSERT_EQ(video.size(), viewer.size());
+  const TwoPictures p = viewerAndVideoAt(s, log, dir, 6);
+  if (HasFailure()) return;
+  const std::vector<std::uint8_t>& viewer = p.viewer;
+  const std::vector<std::uint8_t>& video = p.video;
   // Each vehicle's flown path (a team's: in its own colour) is a few hundred pixels of exactly
   // that colour in both pictures, and the two colours mark two paths 8 m apart, not one.
   const Found video1 = pixelsOf(video, vehicleColour(0), 5.0);
@@ -130,15 +144,10 @@ TEST(VisualLanguage, TheVideoAndTheViewerDrawOneVehiclesPlanInTheSameOrange) {
   const auto dir = makeFreshDir("visual_language_one");
   const Scenario s = renderTestScenario(kWidth, kHeight);
   const RunLog log = straightFlightLog(6.0);
-  const WorldModel world = WorldModel::build(s);
-  const RunRecord record = recordOfLog(s, log, world);
-  ASSERT_EQ(writeRunViewer(dir, world, s, log, "visual language", "ok", &record), "");
-  const std::vector<std::uint8_t> viewer = viewerScreenshot(dir / "viewer.html", "#t=3&camera=top");
-  ASSERT_EQ(viewer.size(), static_cast<std::size_t>(kWidth) * kHeight * 3)
-      << "Chromium did not run";
-  RunRenderer renderer(s, record, kWidth, kHeight);
-  std::vector<std::uint8_t> video;
-  renderer.render(3.0, CameraKind::Top, video, /*annotate=*/false);
+  const TwoPictures p = viewerAndVideoAt(s, log, dir, 3);
+  if (HasFailure()) return;
+  const std::vector<std::uint8_t>& viewer = p.viewer;
+  const std::vector<std::uint8_t>& video = p.video;
   // The planned path's band, wider than the flown line inside it, shows its orange in both.
   EXPECT_GT(pixelsOf(video, kPlannedPathColour, 5.0).count, 60);
   EXPECT_GT(pixelsOf(viewer, kPlannedPathColour, 5.0).count, 60);
