@@ -16,9 +16,13 @@ const char* kQuickNote =
 
 std::string reportMarkdown(const Options& options, const Report& report) {
   std::string md = report.markdown;
-  if (report.run_time_s >= 0)
-    md += (md.empty() || md.back() == '\n' ? "" : "\n") + std::string("\nRun time: ") +
-          fixed(report.run_time_s, 0) + " s (wall clock, the whole reproduction).\n";
+  if (report.run_time_s >= 0) {
+    // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) on "..." + string&&.
+    if (!md.empty() && md.back() != '\n') md += '\n';
+    md += "\nRun time: ";
+    md += fixed(report.run_time_s, 0);
+    md += " s (wall clock, the whole reproduction).\n";
+  }
   if (!options.quick) return md;
   // Under the title line if there is one, else at the top.
   const std::size_t title_end = md.rfind('#', 0) == 0 ? md.find('\n') : std::string::npos;
@@ -33,8 +37,10 @@ std::string reportJson(const std::string& name, const Options& options, const Re
       .add("seed", static_cast<double>(options.seed));
   if (report.run_time_s >= 0) doc.add("run_time_s", report.run_time_s);
   std::string agreement = "[";
-  for (const std::string& line : agreementLines(report.markdown))
-    agreement += (agreement.size() > 1 ? "," : "") + JsonObject::quote(line);
+  for (const std::string& line : agreementLines(report.markdown)) {
+    if (agreement.size() > 1) agreement += ',';
+    agreement += JsonObject::quote(line);
+  }
   doc.raw("agreement", agreement + "]").addArray("rows", report.rows);
   return doc.str() + "\n";
 }

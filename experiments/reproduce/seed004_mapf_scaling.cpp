@@ -165,14 +165,16 @@ void writeScalingCell(const std::string& map, int n, const std::vector<ScalingPl
       "| " + map + " | " + std::to_string(n) + " | " + std::to_string(cell.summary[0].runs) + " |";
   for (std::size_t k = 0; k < planners.size(); ++k) {
     const MapfTrialSummary& t = cell.summary[k];
-    md += " " + formatFixed(t.successPercent(), 0) + " | " +
+    md += ' ';  // appended apart: GCC 12 warns (-Wrestrict, a false positive) on " " + string&&
+    md += formatFixed(t.successPercent(), 0) + " | " +
           formatFixed(t.solved ? t.meanSumOfCosts() : NAN, 1) + " | " +
           formatFixed(t.meanTimeMs(), 1) + " |";
     JsonObject row;
     row.add("map", map).add("agents", n).add("planner", planners[k].planner);
     rows.push_back(addMapfOutcome(row, t).add("mean_time_ms", t.meanTimeMs()));
   }
-  md += " " + formatFixed(cell.both_cbs > 0 ? cell.both_whca / cell.both_cbs : NAN, 3) + " |\n";
+  md += ' ';
+  md += formatFixed(cell.both_cbs > 0 ? cell.both_whca / cell.both_cbs : NAN, 3) + " |\n";
 }
 
 }  // namespace
