@@ -18,9 +18,6 @@ namespace cosim {
 
 namespace {
 
-const char* kObstacleFill = "#9aa3b0";
-const char* kObstacleEdge = "#5b6473";
-
 // A scratch folder beside the outputs; the finished files are renamed out of it, so every
 // figure appears complete or not at all.
 class WorkDir {

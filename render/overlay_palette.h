@@ -29,6 +29,10 @@ inline const Eigen::Vector3f kGoalColour{0.9f, 0.1f, 0.1f};
 // the grey world).
 inline const Eigen::Vector3f kHeadingColour{0.85f, 0.1f, 0.75f};
 
+// Obstacles in the figures and plan pictures (gnuplot): a blue-grey fill with a darker edge.
+inline constexpr const char* kObstacleFill = "#9aa3b0";
+inline constexpr const char* kObstacleEdge = "#5b6473";
+
 // The flown trail's colour for a tracking error as a fraction of the colour scale (0..1,
 // clamped): the viridis map (van der Walt & Smith, matplotlib 2015), perceptually uniform and
 // readable in grey print.

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "render/gnuplot.h"
+#include "render/overlay_palette.h"
 
 namespace cosim {
 
@@ -103,9 +104,14 @@ void writePlanFigure(const World& world, const std::vector<Eigen::Vector3d>& pat
   scratch.write("ends.dat", ends);
 
   const char* axis_name[] = {"x [m]", "y [m]"};
-  const std::string path_style = "with linespoints lw 2.5 pt 7 ps 0.5 lc rgb '#e07000'";
-  const std::string obstacle_style =
-      "with filledcurves closed fc rgb '#8c939c' fs solid 0.55 border lc rgb '#4a4f55'";
+  // The run's visual language (render/overlay_palette.h), as in a run's figures.
+  const std::string path_style =
+      "with linespoints lw 2.5 pt 7 ps 0.5 lc rgb '" + hexColour(kPlannedPathColour) + "'";
+  const std::string obstacle_style = "with filledcurves closed fc rgb '" +
+                                     std::string(kObstacleFill) +
+                                     "' fs solid 0.55 border lc rgb '" + kObstacleEdge + "'";
+  const std::string start_colour = " lc rgb '" + hexColour(kStartColour) + "'";
+  const std::string goal_colour = " lc rgb '" + hexColour(kGoalColour) + "'";
   std::ostringstream body;
   body << "set encoding utf8\nset border lw 1 lc rgb '#404040'\nset grid lc rgb '#e4e4e4'\n"
        << "set tics out nomirror\nset key top left opaque box\n"
@@ -115,9 +121,9 @@ void writePlanFigure(const World& world, const std::vector<Eigen::Vector3d>& pat
        << "set yrange [" << gnuplotNumber(lo.y()) << ":" << gnuplotNumber(hi.y()) << "]\n"
        << "plot 'top.dat' using 1:2 " << obstacle_style << " title 'obstacles', "
        << "'path.dat' using 1:2 " << path_style << " title 'planned path', "
-       << "'ends.dat' every ::0::0 using 1:2 with points pt 7 ps 1.6 lc rgb '#1a9850' title "
-          "'start', 'ends.dat' every ::1::1 using 1:2 with points pt 9 ps 1.8 lc rgb '#d73027' "
-          "title 'goal'\n"
+       << "'ends.dat' every ::0::0 using 1:2 with points pt 7 ps 1.6" << start_colour
+       << " title 'start', 'ends.dat' every ::1::1 using 1:2 with points pt 9 ps 1.8" << goal_colour
+       << " title 'goal'\n"
        << "set title "
        << gnuplotString("from the side (obstacles within " + gnuplotNumber(kPlanSideViewReach) +
                         " m of the path)")
@@ -126,9 +132,9 @@ void writePlanFigure(const World& world, const std::vector<Eigen::Vector3d>& pat
        << "set yrange [" << gnuplotNumber(lo.z()) << ":" << gnuplotNumber(hi.z()) << "]\n"
        << "plot 'side.dat' using 1:2 " << obstacle_style << " title 'obstacles', "
        << "'path.dat' using " << along + 1 << ":3 " << path_style << " title 'planned path', "
-       << "'ends.dat' every ::0::0 using " << along + 1
-       << ":3 with points pt 7 ps 1.6 lc rgb '#1a9850' notitle, 'ends.dat' every ::1::1 using "
-       << along + 1 << ":3 with points pt 9 ps 1.8 lc rgb '#d73027' notitle\n"
+       << "'ends.dat' every ::0::0 using " << along + 1 << ":3 with points pt 7 ps 1.6"
+       << start_colour << " notitle, 'ends.dat' every ::1::1 using " << along + 1
+       << ":3 with points pt 9 ps 1.8" << goal_colour << " notitle\n"
        << "unset multiplot\n";
   runGnuplot(plotBoth("plan", 1400, 640, body.str()), scratch.dir());
   scratch.publish("plan");
